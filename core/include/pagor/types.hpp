@@ -1,0 +1,58 @@
+#pragma once
+/// \file types.hpp
+/// Plain data types shared by the stages: point clouds, landmarks, correspondences.
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace pagor {
+
+/// A point cloud with optional per-point reflectance and semantic labels.
+/// `intensities` and `labels` are either empty or as long as `points`.
+/// A label keeps the SemanticKITTI layout: lower 16 bits class id, upper 16 bits instance id.
+struct PointCloud {
+  std::vector<Eigen::Vector3f> points;  ///< coordinates [m]
+  std::vector<float> intensities;       ///< reflectance, unitless (empty if absent)
+  std::vector<std::uint32_t> labels;    ///< raw labels (empty if absent)
+
+  std::size_t size() const { return points.size(); }
+  bool empty() const { return points.empty(); }
+  bool has_labels() const { return !labels.empty(); }
+  bool has_intensities() const { return !intensities.empty(); }
+};
+
+/// Semantic class id of a raw label (lower 16 bits).
+inline std::uint32_t semantic_id(std::uint32_t raw_label) { return raw_label & 0xFFFFu; }
+
+/// How a landmark was made.
+enum class LandmarkKind : std::uint8_t {
+  cluster,   ///< centroid of a Euclidean cluster of one class
+  keypoint,  ///< a downsampled point of a class matched by FPFH descriptors
+};
+
+/// A semantic landmark: a cluster centroid or a FPFH keypoint of one configured class.
+struct Landmark {
+  int class_index = -1;                               ///< index into the configured class list
+  LandmarkKind kind = LandmarkKind::cluster;          ///< how it was made
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();  ///< position [m]
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();  ///< spread of its points [m^2]
+  std::size_t point_count = 0;                        ///< points of the input cloud it covers
+  std::vector<int> point_indices;                     ///< those points' indices in the input cloud
+};
+
+/// A putative association of a source landmark with a target landmark of the same class.
+struct Correspondence {
+  int class_index = -1;  ///< configured class both landmarks belong to
+  int source = -1;       ///< index into the source landmark list
+  int target = -1;       ///< index into the target landmark list
+  Eigen::Vector3d p = Eigen::Vector3d::Zero();  ///< source landmark position [m]
+  Eigen::Vector3d q = Eigen::Vector3d::Zero();  ///< target landmark position [m]
+  double score = 0.0;  ///< how promising, in [0, 1]; used only to rank when capping
+};
+
+/// A rigid transform as a 4x4 homogeneous matrix.
+using Transform = Eigen::Matrix4d;
+
+}  // namespace pagor
