@@ -10,6 +10,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 #include "pagor/errors.hpp"
 
@@ -62,8 +63,62 @@ const pcl::PCLPointField* find_field(const pcl::PCLPointCloud2& blob, const char
   return nullptr;
 }
 
+// PCL's readers trust their input (a text file that is not a PCD crashes loadPCDFile), so the
+// header is checked here first: the fields it declares, their sizes, the point count, and that the
+// file holds as many bytes as a binary body needs.
+void check_pcd_header(const std::string& path, const std::vector<char>& bytes) {
+  std::istringstream in(std::string(bytes.begin(), bytes.end()));
+  std::string line;
+  std::size_t fields = 0, sizes = 0, types = 0, point_bytes = 0, points = 0;
+  bool have_points = false, have_data = false;
+  std::string data;
+  while (!have_data && std::getline(in, line)) {
+    std::istringstream ls(line);
+    std::string key;
+    if (!(ls >> key) || key[0] == '#') continue;
+    std::vector<std::string> words;
+    for (std::string w; ls >> w;) words.push_back(w);
+    if (key == "FIELDS") fields = words.size();
+    else if (key == "TYPE") types = words.size();
+    else if (key == "SIZE") {
+      sizes = words.size();
+      for (const auto& w : words) point_bytes += static_cast<std::size_t>(std::atoi(w.c_str()));
+    } else if (key == "POINTS" && words.size() == 1) {
+      points = static_cast<std::size_t>(std::strtoull(words[0].c_str(), nullptr, 10));
+      have_points = true;
+    } else if (key == "DATA" && words.size() == 1) {
+      data = words[0];
+      have_data = true;
+    } else if (key != "VERSION" && key != "COUNT" && key != "WIDTH" && key != "HEIGHT" &&
+               key != "VIEWPOINT") {
+      throw InputError(path + ": not a PCD file (unexpected header line '" + line + "')");
+    }
+  }
+  if (!have_data || !have_points || fields == 0)
+    throw InputError(path + ": not a PCD file (header lacks FIELDS, POINTS or DATA)");
+  if (sizes != fields || types != fields)
+    throw InputError(path + ": PCD header declares " + std::to_string(fields) + " fields but " +
+                     std::to_string(sizes) + " sizes and " + std::to_string(types) + " types");
+  if (data != "ascii" && data != "binary" && data != "binary_compressed")
+    throw InputError(path + ": unknown PCD DATA kind '" + data + "'");
+  const std::streamoff body = in.tellg();
+  if (data == "binary" && body >= 0 &&
+      bytes.size() - static_cast<std::size_t>(body) < points * point_bytes)
+    throw InputError(path + ": truncated PCD body (" + std::to_string(points) + " points declared)");
+}
+
+void check_ply_header(const std::string& path, const std::vector<char>& bytes) {
+  const std::string head(bytes.begin(), bytes.begin() + static_cast<std::ptrdiff_t>(
+                                                            std::min<std::size_t>(bytes.size(), 65536)));
+  if (head.rfind("ply", 0) != 0 || head.find("end_header") == std::string::npos ||
+      head.find("element vertex") == std::string::npos)
+    throw InputError(path + ": not a PLY file with a vertex element");
+}
+
 PointCloud read_pcl_file(const std::string& path, const std::string& ext) {
-  read_file_bytes(path, "point cloud");  // existence and readability, with our own message
+  const std::vector<char> bytes = read_file_bytes(path, "point cloud");
+  if (ext == ".pcd") check_pcd_header(path, bytes);
+  else check_ply_header(path, bytes);
   pcl::PCLPointCloud2 blob;
   int status = -1;
   try {

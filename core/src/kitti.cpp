@@ -1,5 +1,6 @@
 #include "pagor/kitti.hpp"
 
+#include <Eigen/LU>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>

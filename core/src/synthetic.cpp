@@ -53,6 +53,31 @@ void add_box(Sampled& s, const Eigen::Vector2d& c, double yaw, const Eigen::Vect
     for (double v = -h.y(); v <= h.y(); v += spacing) emit(u, v, size.z());
 }
 
+// A building: a box with facade details (pilasters, bays and a lower wing at random places), so
+// that, as on real facades, local geometry tells one part of a wall from another.
+void add_building(Sampled& s, const Eigen::Vector2d& c, double yaw, const Eigen::Vector3d& size,
+                  double spacing, std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  add_box(s, c, yaw, size, spacing, kBuilding, -1);
+  const Eigen::Matrix2d R = Eigen::Rotation2Dd(yaw).toRotationMatrix();
+  const int details = 6 + static_cast<int>(unit(rng) * 6);
+  for (int k = 0; k < details; ++k) {
+    const int face = static_cast<int>(unit(rng) * 4) % 4;  // +x, -x, +y, -y
+    const bool along_x = face >= 2;
+    const double half_len = along_x ? size.x() / 2 : size.y() / 2;
+    const double offset = (unit(rng) * 2 - 1) * (half_len - 1.5);
+    const double depth = 0.4 + 1.2 * unit(rng);
+    const double width = 0.8 + 2.5 * unit(rng);
+    const double height = size.z() * (0.3 + 0.7 * unit(rng));
+    const double sign = face % 2 == 0 ? 1.0 : -1.0;
+    Eigen::Vector2d local = along_x ? Eigen::Vector2d(offset, sign * (size.y() / 2 + depth / 2))
+                                    : Eigen::Vector2d(sign * (size.x() / 2 + depth / 2), offset);
+    const Eigen::Vector3d dsize = along_x ? Eigen::Vector3d(width, depth, height)
+                                          : Eigen::Vector3d(depth, width, height);
+    add_box(s, c + R * local, yaw, dsize, spacing, kBuilding, -1);
+  }
+}
+
 Transform planar_pose(double x, double y, double yaw) {
   Transform T = Transform::Identity();
   T.block<3, 3>(0, 0) = Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
@@ -118,7 +143,7 @@ SyntheticScene make_synthetic_scene(const SyntheticParams& params) {
     const Eigen::Vector2d c = free_spot(0.0, 30.0);
     building_centres.push_back(c);
     const Eigen::Vector3d size(10 + 10 * unit(rng), 8 + 6 * unit(rng), 6 + 8 * unit(rng));
-    add_box(s, c, unit(rng) * kPi, size, 2 * params.spacing, kBuilding, -1);
+    add_building(s, c, unit(rng) * kPi, size, 2 * params.spacing, rng);
   }
   auto add_objects = [&](int count, const char* name, std::uint32_t label) {
     for (int k = 0; k < count; ++k) {

@@ -20,7 +20,7 @@ struct SyntheticParams {
   int trunks = 18;              ///< tree trunks (cylinders r 0.2 m, 3 m high)
   int poles = 14;               ///< poles (cylinders r 0.1 m, 6 m high)
   int buildings = 8;            ///< buildings (boxes with walls 6 to 14 m high)
-  double min_separation = 4.0;  ///< between object centres [m]
+  double min_separation = 7.0;  ///< between object centres [m] (cars are 4.4 m long)
   double range = 45.0;          ///< sensor range; objects are kept or cut whole by their centre [m]
   double noise = 0.02;          ///< Gaussian noise on every coordinate [m]
   double spacing = 0.15;        ///< sampling of object surfaces [m]

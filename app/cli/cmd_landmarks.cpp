@@ -1,0 +1,92 @@
+// pagor landmarks: per-class landmark extraction on one cloud.
+
+#include <chrono>
+#include <cstdio>
+#include <nlohmann/json.hpp>
+
+#include "command.hpp"
+#include "pagor/errors.hpp"
+#include "pagor/landmarks.hpp"
+
+namespace pagor::cli {
+namespace {
+
+nlohmann::json landmarks_json(const LandmarkSet& set, const std::string& name, bool with_indices) {
+  using nlohmann::json;
+  json classes = json::array();
+  for (const auto& c : set.classes)
+    classes.push_back({{"name", c.name}, {"method", to_string(c.method)}, {"points", c.points},
+                       {"voxels", c.voxels}, {"landmarks", c.landmarks}, {"time_ms", c.time_ms}});
+  json items = json::array();
+  for (const auto& lm : set.landmarks) {
+    json cov = json::array();
+    for (int r = 0; r < 3; ++r)
+      cov.push_back({lm.covariance(r, 0), lm.covariance(r, 1), lm.covariance(r, 2)});
+    json item = {{"class", set.classes[static_cast<std::size_t>(lm.class_index)].name},
+                 {"kind", lm.kind == LandmarkKind::cluster ? "cluster" : "keypoint"},
+                 {"centroid", {lm.centroid.x(), lm.centroid.y(), lm.centroid.z()}},
+                 {"covariance", cov},
+                 {"point_count", lm.point_count}};
+    if (with_indices) item["point_indices"] = lm.point_indices;
+    items.push_back(item);
+  }
+  return {{"cloud", name}, {"units", "m"}, {"classes", classes}, {"landmarks", items},
+          {"warnings", set.warnings}, {"time_ms", set.time_ms}};
+}
+
+}  // namespace
+
+std::vector<Option> landmarks_options() {
+  std::vector<Option> o = single_cloud_options();
+  o.push_back({"config", 1, "FILE", "configuration JSON (default: built-in outdoor defaults)"});
+  o.push_back({"json", 1, "OUT", "write the landmarks as JSON"});
+  o.push_back({"with-indices", 0, "", "include each landmark's point indices in the JSON"});
+  return o;
+}
+
+int run_landmarks(const Args& args) {
+  const Config config = config_from_args(args);
+  std::string name;
+  const auto t0 = std::chrono::steady_clock::now();
+  const LoadedCloud loaded = load_single_cloud(args, name);
+  const double load_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  for (const auto& w : loaded.warnings) warn(w);
+  if (!loaded.cloud.has_labels())
+    throw InputError(name + ": no semantic labels (give --source-labels, or a cloud with a label field)");
+
+  std::printf("cloud: %s\n", name.c_str());
+  std::printf("loaded %zu points in %.1f ms (%zu dropped with NaN/Inf coordinates)\n",
+              loaded.cloud.size(), load_ms, loaded.dropped_nonfinite);
+  const LandmarkSet set = extract_landmarks(loaded.cloud, config.label_scheme, config.landmarks);
+  for (const auto& w : set.warnings) warn(name + ": " + w);
+
+  std::printf("\n%-14s %-8s %9s %9s %10s %10s\n", "class", "method", "points", "voxels", "landmarks",
+              "time [ms]");
+  for (const auto& c : set.classes)
+    std::printf("%-14s %-8s %9zu %9zu %10zu %10.1f\n", c.name.c_str(), to_string(c.method), c.points,
+                c.voxels, c.landmarks, c.time_ms);
+  std::printf("%-14s %-8s %9s %9s %10zu %10.1f\n", "total", "", "", "", set.landmarks.size(),
+              set.time_ms);
+
+  if (args.has("json")) {
+    write_text_file(args.get("json"), landmarks_json(set, name, args.has("with-indices")).dump(2) + "\n");
+    std::printf("wrote %s\n", args.get("json").c_str());
+  }
+  return 0;
+}
+
+std::vector<Option> config_options() {
+  return {{"print-default", 0, "", "print the full default configuration as JSON"},
+          {"check", 1, "FILE", "validate a configuration file and print it with defaults filled in"}};
+}
+
+int run_config(const Args& args) {
+  if (args.has("print-default") == args.has("check"))
+    throw UsageError("give one of --print-default or --check FILE");
+  const Config config = args.has("check") ? load_config(args.get("check")) : default_config();
+  std::printf("%s\n", config_to_json(config).c_str());
+  return 0;
+}
+
+}  // namespace pagor::cli

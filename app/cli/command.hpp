@@ -1,0 +1,54 @@
+#pragma once
+/// \file command.hpp
+/// The subcommands of `pagor` and the helpers they share.
+
+#include <string>
+#include <vector>
+
+#include "args.hpp"
+#include "pagor/config.hpp"
+#include "pagor/dataset.hpp"
+
+namespace pagor::cli {
+
+/// A subcommand: its name, a one-line summary, its options and its body.
+struct Command {
+  const char* name;
+  const char* summary;
+  std::vector<Option> (*options)();
+  int (*run)(const Args& args);
+};
+
+/// All subcommands, in the order `pagor --help` lists them.
+const std::vector<Command>& commands();
+
+// Subcommand bodies and option lists.
+std::vector<Option> landmarks_options();
+int run_landmarks(const Args& args);
+std::vector<Option> config_options();
+int run_config(const Args& args);
+std::vector<Option> demo_options();
+int run_demo(const Args& args);
+
+// ---- shared helpers ------------------------------------------------------------------------
+
+/// `--config FILE` if given, else the defaults.
+Config config_from_args(const Args& args);
+
+/// Options selecting one cloud: `--source/--source-labels`, `--kitti-root/--sequence/--frame`,
+/// or `--synthetic`.
+std::vector<Option> single_cloud_options();
+
+/// Loads the cloud the single-cloud options select; `name` receives a description.
+LoadedCloud load_single_cloud(const Args& args, std::string& name);
+
+/// Prints a warning line on stderr.
+void warn(const std::string& message);
+
+/// Writes text to a file, throwing InputError naming it on failure.
+void write_text_file(const std::string& path, const std::string& text);
+
+/// Default location of the shared KITTI data relative to the working directory, if present.
+std::string find_shared_kitti();
+
+}  // namespace pagor::cli

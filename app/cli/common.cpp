@@ -1,0 +1,70 @@
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+#include "command.hpp"
+#include "pagor/errors.hpp"
+#include "pagor/kitti.hpp"
+#include "pagor/synthetic.hpp"
+
+namespace pagor::cli {
+
+Config config_from_args(const Args& args) {
+  return args.has("config") ? load_config(args.get("config")) : default_config();
+}
+
+std::vector<Option> single_cloud_options() {
+  return {
+      {"source", 1, "FILE", "cloud to read (.bin, .pcd, .ply)"},
+      {"source-labels", 1, "FILE", "SemanticKITTI .label file for --source"},
+      {"kitti-root", 1, "DIR", "KITTI root holding sequences/ (instead of --source)"},
+      {"sequence", 1, "SEQ", "KITTI sequence (default 00)"},
+      {"frame", 1, "N", "KITTI frame number"},
+      {"synthetic", 1, "SEED", "use the generated scene's source scan (instead of --source)"},
+  };
+}
+
+LoadedCloud load_single_cloud(const Args& args, std::string& name) {
+  const int chosen = args.has("source") + args.has("kitti-root") + args.has("synthetic");
+  if (chosen != 1)
+    throw UsageError("choose exactly one input: --source FILE, --kitti-root DIR --frame N, "
+                     "or --synthetic SEED");
+  if (args.has("source")) {
+    name = args.get("source");
+    return load_cloud(name, args.get("source-labels"));
+  }
+  if (args.has("source-labels")) throw UsageError("--source-labels goes with --source");
+  if (args.has("kitti-root")) {
+    if (!args.has("frame")) throw UsageError("--kitti-root needs --frame N");
+    const KittiSequence seq(args.get("kitti-root"), args.get("sequence", "00"));
+    const int frame = args.get_int("frame", 0);
+    name = seq.scan_path(frame);
+    return seq.load_frame(frame);
+  }
+  SyntheticParams p;
+  p.seed = static_cast<std::uint64_t>(parse_int(args.get("synthetic"), "--synthetic"));
+  name = "synthetic scene (seed " + std::to_string(p.seed) + "), source scan";
+  LoadedCloud out;
+  out.cloud = make_synthetic_scene(p).source;
+  return out;
+}
+
+void warn(const std::string& message) { std::cerr << "pagor: warning: " << message << "\n"; }
+
+void write_text_file(const std::string& path, const std::string& text) {
+  std::ofstream out(path, std::ios::trunc);
+  if (!out) throw InputError(path + ": cannot open for writing");
+  out << text;
+  if (!out) throw InputError(path + ": write failed");
+}
+
+std::string find_shared_kitti() {
+  for (const char* candidate : {"../shared/data/kitti", "../../shared/data/kitti", "shared/data/kitti"}) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(std::filesystem::path(candidate) / "sequences", ec))
+      return candidate;
+  }
+  return {};
+}
+
+}  // namespace pagor::cli

@@ -1,0 +1,71 @@
+// pagor: the command-line front end of Pagor Studio.
+
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "command.hpp"
+#include "pagor/errors.hpp"
+
+namespace pagor::cli {
+
+const std::vector<Command>& commands() {
+  static const std::vector<Command> kCommands = {
+      {"demo", "run the main job on the shared KITTI data, or on the synthetic scene", demo_options,
+       run_demo},
+      {"landmarks", "extract semantic landmarks from one cloud", landmarks_options, run_landmarks},
+      {"config", "print or check a configuration", config_options, run_config},
+  };
+  return kCommands;
+}
+
+namespace {
+
+void print_usage() {
+  std::cout << "usage: pagor <command> [options]     (pagor <command> --help for its options)\n\n"
+               "commands:\n";
+  for (const auto& c : commands()) {
+    std::string name = c.name;
+    name.resize(12, ' ');
+    std::cout << "  " << name << c.summary << "\n";
+  }
+}
+
+int dispatch(int argc, char** argv) {
+  if (argc < 2 || std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h") {
+    print_usage();
+    return argc < 2 ? 2 : 0;
+  }
+  const std::string name = argv[1];
+  for (const auto& c : commands()) {
+    if (name != c.name) continue;
+    std::vector<std::string> words(argv + 2, argv + argc);
+    std::vector<Option> options = c.options();
+    for (const auto& w : words)
+      if (w == "--help" || w == "-h") {
+        std::cout << "usage: pagor " << c.name << " [options]\n" << c.summary << "\n\noptions:\n"
+                  << format_options(options);
+        return 0;
+      }
+    return c.run(Args(words, options));
+  }
+  throw UsageError("unknown command '" + name + "' (see pagor --help)");
+}
+
+}  // namespace
+}  // namespace pagor::cli
+
+int main(int argc, char** argv) {
+  try {
+    return pagor::cli::dispatch(argc, argv);
+  } catch (const pagor::cli::UsageError& e) {
+    std::cerr << "pagor: usage error: " << e.what() << "\n";
+    return 2;
+  } catch (const pagor::Error& e) {
+    std::cerr << "pagor: error: " << e.what() << "\n";
+    return 1;
+  } catch (const std::exception& e) {
+    std::cerr << "pagor: internal error: " << e.what() << "\n";
+    return 3;
+  }
+}

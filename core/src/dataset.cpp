@@ -1,0 +1,56 @@
+#include "pagor/dataset.hpp"
+
+#include "pagor/errors.hpp"
+#include "pagor/kitti.hpp"
+#include "pagor/synthetic.hpp"
+
+namespace pagor {
+
+LoadedPair load_pair(const PairSource& src) {
+  LoadedPair out;
+  switch (src.kind) {
+    case PairSource::Kind::files:
+      if (src.source.empty() || src.target.empty())
+        throw InputError("a file pair needs both a source and a target cloud");
+      out.source = load_cloud(src.source, src.source_labels);
+      out.target = load_cloud(src.target, src.target_labels);
+      out.source_name = src.source;
+      out.target_name = src.target;
+      break;
+    case PairSource::Kind::kitti: {
+      const KittiSequence seq(src.kitti_root, src.sequence);
+      out.source = seq.load_frame(src.source_frame);
+      out.target = seq.load_frame(src.target_frame);
+      out.source_name = seq.scan_path(src.source_frame);
+      out.target_name = seq.scan_path(src.target_frame);
+      out.T_target_source_gt = seq.ground_truth(src.source_frame, src.target_frame);
+      break;
+    }
+    case PairSource::Kind::synthetic: {
+      SyntheticParams p;
+      p.seed = src.synthetic_seed;
+      SyntheticScene scene = make_synthetic_scene(p);
+      out.source.cloud = std::move(scene.source);
+      out.target.cloud = std::move(scene.target);
+      out.source_name = "synthetic scene (seed " + std::to_string(p.seed) + "), source";
+      out.target_name = "synthetic scene (seed " + std::to_string(p.seed) + "), target";
+      out.T_target_source_gt = scene.T_target_source;
+      break;
+    }
+  }
+  return out;
+}
+
+std::string describe(const PairSource& src) {
+  switch (src.kind) {
+    case PairSource::Kind::files: return src.source + " -> " + src.target;
+    case PairSource::Kind::kitti:
+      return "KITTI " + src.sequence + ": " + std::to_string(src.source_frame) + " -> " +
+             std::to_string(src.target_frame);
+    case PairSource::Kind::synthetic:
+      return "synthetic scene (seed " + std::to_string(src.synthetic_seed) + ")";
+  }
+  return {};
+}
+
+}  // namespace pagor

@@ -1,0 +1,82 @@
+#include <catch2/catch.hpp>
+
+#include "pagor/config.hpp"
+#include "pagor/errors.hpp"
+#include "test_util.hpp"
+
+using namespace pagor;
+
+TEST_CASE("the default config has the paper's outdoor classes and survives a JSON round trip") {
+  const Config c = default_config();
+  REQUIRE(c.landmarks.classes.size() == 4);
+  CHECK(c.landmarks.classes[0].name == "car");
+  CHECK(c.landmarks.classes[3].name == "building");
+  CHECK(c.landmarks.classes[3].method == LandmarkMethod::fpfh);
+  CHECK(c.graph.trim == TrimKind::ratio);
+  CHECK(c.graph.thresholds.size() == 4);
+  const std::string text = config_to_json(c);
+  const Config back = parse_config(text);
+  CHECK(config_to_json(back) == text);
+}
+
+TEST_CASE("absent keys keep their defaults") {
+  const Config c = parse_config(R"({"verification": {"mu": 2.5}})");
+  CHECK(c.verification.mu == 2.5);
+  CHECK(c.verification.voxel_size == default_config().verification.voxel_size);
+  CHECK(c.landmarks.classes.size() == 4);
+}
+
+TEST_CASE("unknown keys, wrong types and bad values name the key path") {
+  CHECK_THROWS_WITH(parse_config(R"({"graph": {"thresholdz": [1]}})", "my.json"),
+                    Catch::Contains("my.json") && Catch::Contains("graph.thresholdz") &&
+                        Catch::Contains("unknown key"));
+  CHECK_THROWS_WITH(parse_config(R"({"bogus": 1})"), Catch::Contains("bogus"));
+  CHECK_THROWS_WITH(parse_config(R"({"graph": {"thresholds": [0.1, "x"]}})"),
+                    Catch::Contains("graph.thresholds[1]") && Catch::Contains("expected a number"));
+  CHECK_THROWS_WITH(parse_config(R"({"graph": {"thresholds": [0.2, 0.1]}})"),
+                    Catch::Contains("graph.thresholds[1]") && Catch::Contains("increase"));
+  CHECK_THROWS_WITH(parse_config(R"({"graph": {"trim": "diff"}})"),
+                    Catch::Contains("graph.trim") && Catch::Contains("\"difference\""));
+  CHECK_THROWS_WITH(parse_config(R"({"clique": {"max_inner_iterations": 1.5}})"),
+                    Catch::Contains("clique.max_inner_iterations") && Catch::Contains("integer"));
+  CHECK_THROWS_WITH(parse_config(R"({"landmarks": {"classes": [{"name": "car", "voxel_size": "big"}]}})"),
+                    Catch::Contains("landmarks.classes[0].voxel_size"));
+  CHECK_THROWS_WITH(parse_config(R"({"landmarks": {"classes": [{"name": "lamp"}]}})"),
+                    Catch::Contains("landmarks.classes[0].name") && Catch::Contains("lamp"));
+  CHECK_THROWS_WITH(parse_config(R"({"verification": {"mu": -1}})"), Catch::Contains("verification.mu"));
+  CHECK_THROWS_WITH(parse_config("{not json"), Catch::Contains("not valid JSON"));
+  CHECK_THROWS_AS(parse_config("[1, 2]"), ConfigError);
+}
+
+TEST_CASE("label schemes: built-in by name, or custom") {
+  const Config raw = parse_config(R"({"label_scheme": "semantickitti"})");
+  CHECK(raw.label_scheme.ids_of("car") == std::vector<std::uint32_t>{10});
+  CHECK(raw.label_scheme.ids_of("building") == std::vector<std::uint32_t>{50});
+  CHECK(raw.label_scheme.ids_of("pole") == std::vector<std::uint32_t>{80});
+  const Config train = default_config();
+  CHECK(train.label_scheme.ids_of("car") == std::vector<std::uint32_t>{0});
+  CHECK(train.label_scheme.ids_of("pole") == std::vector<std::uint32_t>{17});
+  CHECK(train.label_scheme.ids_of("trunk") == std::vector<std::uint32_t>{15});
+
+  const Config custom = parse_config(R"({
+    "label_scheme": {"name": "lab", "classes": {"column": [2, 3], "wall": [1]}},
+    "landmarks": {"classes": [{"name": "column", "voxel_size": 0.05}]}})");
+  CHECK(custom.label_scheme.ids_of("column") == std::vector<std::uint32_t>{2, 3});
+  CHECK(parse_config(config_to_json(custom)).label_scheme.ids_of("wall") ==
+        std::vector<std::uint32_t>{1});
+  CHECK_THROWS_WITH(parse_config(R"({"label_scheme": "nuscenes"})"),
+                    Catch::Contains("label_scheme") && Catch::Contains("semantickitti-train"));
+}
+
+TEST_CASE("a config file is read, and a missing one is reported") {
+  test::TempDir dir;
+  CHECK_THROWS_WITH(load_config(dir.file("none.json")), Catch::Contains("none.json"));
+}
+
+TEST_CASE("section_json tells sections apart") {
+  Config a = default_config();
+  Config b = a;
+  b.verification.mu = 3.0;
+  CHECK(section_json(a, "verification") != section_json(b, "verification"));
+  CHECK(section_json(a, "graph") == section_json(b, "graph"));
+}

@@ -1,0 +1,33 @@
+#pragma once
+// Helpers shared by the tests.
+
+#include <filesystem>
+#include <random>
+#include <string>
+
+namespace pagor::test {
+
+/// A fresh directory under the system temp dir, removed when it goes out of scope.
+class TempDir {
+ public:
+  TempDir() {
+    std::random_device rd;
+    path_ = std::filesystem::temp_directory_path() / ("pagor_test_" + std::to_string(rd()));
+    std::filesystem::create_directories(path_);
+  }
+  ~TempDir() {
+    std::error_code ec;
+    std::filesystem::remove_all(path_, ec);
+  }
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+  std::string file(const std::string& name) const { return (path_ / name).string(); }
+
+ private:
+  std::filesystem::path path_;
+};
+
+/// The shared KITTI data used by the tests on real scans.
+inline std::string kitti_root() { return PAGOR_KITTI_DIR; }
+
+}  // namespace pagor::test
