@@ -27,6 +27,8 @@ std::vector<Option> landmarks_options();
 int run_landmarks(const Args& args);
 std::vector<Option> config_options();
 int run_config(const Args& args);
+std::vector<Option> register_options();
+int run_register(const Args& args);
 std::vector<Option> demo_options();
 int run_demo(const Args& args);
 
@@ -41,6 +43,11 @@ std::vector<Option> single_cloud_options();
 
 /// Loads the cloud the single-cloud options select; `name` receives a description.
 LoadedCloud load_single_cloud(const Args& args, std::string& name);
+
+/// Options selecting a registration pair (files, KITTI pair, or synthetic scene).
+std::vector<Option> pair_options();
+/// The pair those options select. Throws UsageError.
+PairSource pair_source_from_args(const Args& args);
 
 /// Prints a warning line on stderr.
 void warn(const std::string& message);

@@ -13,6 +13,7 @@ const std::vector<Command>& commands() {
   static const std::vector<Command> kCommands = {
       {"demo", "run the main job on the shared KITTI data, or on the synthetic scene", demo_options,
        run_demo},
+      {"register", "register a source cloud to a target cloud", register_options, run_register},
       {"landmarks", "extract semantic landmarks from one cloud", landmarks_options, run_landmarks},
       {"config", "print or check a configuration", config_options, run_config},
   };

@@ -97,6 +97,7 @@ void fields_of_graph(V& v, P& p) {
 template <class V, class P>
 void fields_of_clique(V& v, P& p) {
   v("solver", p.solver);
+  v("prune", p.prune);
   v("tol_u", p.tol_u);
   v("tol_F", p.tol_F);
   v("max_inner_iterations", p.max_inner_iterations);
@@ -104,6 +105,7 @@ void fields_of_clique(V& v, P& p) {
   v("beta", p.beta);
   v("max_line_search", p.max_line_search);
   v("eps", p.eps);
+  v("support_tol", p.support_tol);
   v("seed", p.seed);
   v("exact_max_nodes", p.exact_max_nodes);
 }
@@ -425,6 +427,8 @@ void validate(const Config& c, const std::string& origin) {
   check(ctx, c.clique.max_outer_iterations >= 1, "clique.max_outer_iterations", "must be >= 1");
   check(ctx, c.clique.max_line_search >= 1, "clique.max_line_search", "must be >= 1");
   check(ctx, c.clique.eps > 0, "clique.eps", "must be > 0");
+  check(ctx, c.clique.support_tol >= 0 && c.clique.support_tol < 1, "clique.support_tol",
+        "must be in [0, 1)");
   check(ctx, c.clique.exact_max_nodes >= 1, "clique.exact_max_nodes", "must be >= 1");
   check(ctx, c.gnc.noise_bound > 0, "gnc.noise_bound", "must be > 0 [m]");
   check(ctx, c.gnc.mu_factor > 1, "gnc.mu_factor", "must be > 1");

@@ -70,6 +70,10 @@ enum class CliqueSolver {
 /// The densest-clique solver (CLIPPER relaxation).
 struct CliqueParams {
   CliqueSolver solver = CliqueSolver::cascaded;  ///< solver
+  /// Relaxation on the k-core that can hold a clique at least as large as a greedy one (with
+  /// k = greedy size - 1), and never return less than the greedy clique. Off: the plain relaxation
+  /// on every vertex.
+  bool prune = true;
   double tol_u = 1e-8;            ///< inner loop stops when |u_new - u| < tol_u
   double tol_F = 1e-9;            ///< inner loop stops when the objective changes less
   int max_inner_iterations = 200;  ///< gradient steps for one penalty d
@@ -77,6 +81,7 @@ struct CliqueParams {
   double beta = 0.25;             ///< backtracking step reduction, in (0, 1)
   int max_line_search = 99;       ///< backtracking steps per gradient step
   double eps = 1e-9;              ///< numerical zero
+  double support_tol = 1e-6;      ///< entries below this fraction of the largest count as zero
   std::uint64_t seed = 42;        ///< seed of the initial vector
   long exact_max_nodes = 20000000;  ///< exact: branch-and-bound node budget
 };

@@ -1,0 +1,171 @@
+// pagor register: one registration, with a per-level summary and a JSON result.
+
+#include <Eigen/Geometry>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+#include "command.hpp"
+#include "pagor/errors.hpp"
+#include "pagor/pipeline.hpp"
+#include "pagor/report.hpp"
+
+namespace pagor::cli {
+namespace {
+
+constexpr double kRadToDeg = 180.0 / 3.14159265358979323846;
+
+std::string pose_text(const Transform& T) {
+  const Eigen::Vector3d ypr = T.block<3, 3>(0, 0).eulerAngles(2, 1, 0);
+  // eulerAngles returns yaw in [0, pi]; show the equivalent with small roll and pitch.
+  Eigen::Vector3d a = ypr;
+  if (std::abs(a[1]) > M_PI / 2 || std::abs(a[2]) > M_PI / 2) {
+    a = Eigen::Vector3d(a[0] - M_PI, M_PI - a[1], a[2] - M_PI);
+    for (int i = 0; i < 3; ++i) a[i] = std::remainder(a[i], 2 * M_PI);
+  }
+  char buf[160];
+  std::snprintf(buf, sizeof(buf), "t = (%.2f, %.2f, %.2f) m, yaw %.2f, pitch %.2f, roll %.2f deg",
+                T(0, 3), T(1, 3), T(2, 3), a[0] * kRadToDeg, a[1] * kRadToDeg, a[2] * kRadToDeg);
+  return buf;
+}
+
+}  // namespace
+
+std::vector<Option> pair_options() {
+  return {
+      {"source", 1, "FILE", "source cloud (.bin, .pcd, .ply)"},
+      {"target", 1, "FILE", "target cloud"},
+      {"source-labels", 1, "FILE", "SemanticKITTI .label file for --source"},
+      {"target-labels", 1, "FILE", "SemanticKITTI .label file for --target"},
+      {"kitti-root", 1, "DIR", "KITTI root holding sequences/ (instead of --source/--target)"},
+      {"sequence", 1, "SEQ", "KITTI sequence (default 00)"},
+      {"pair", 2, "S T", "KITTI source and target frame numbers"},
+      {"synthetic", 1, "SEED", "the generated scene with that seed"},
+  };
+}
+
+PairSource pair_source_from_args(const Args& args) {
+  const int chosen = args.has("source") + args.has("kitti-root") + args.has("synthetic");
+  if (chosen != 1)
+    throw UsageError("choose one input: --source S --target T, --kitti-root DIR --pair S T, "
+                     "or --synthetic SEED");
+  PairSource src;
+  if (args.has("source")) {
+    if (!args.has("target")) throw UsageError("--source needs --target");
+    src.kind = PairSource::Kind::files;
+    src.source = args.get("source");
+    src.target = args.get("target");
+    src.source_labels = args.get("source-labels");
+    src.target_labels = args.get("target-labels");
+  } else if (args.has("kitti-root")) {
+    if (!args.has("pair")) throw UsageError("--kitti-root needs --pair S T");
+    src.kind = PairSource::Kind::kitti;
+    src.kitti_root = args.get("kitti-root");
+    src.sequence = args.get("sequence", "00");
+    src.source_frame = parse_int(args.all("pair")[0], "--pair (source frame)");
+    src.target_frame = parse_int(args.all("pair")[1], "--pair (target frame)");
+  } else {
+    src.kind = PairSource::Kind::synthetic;
+    src.synthetic_seed = static_cast<std::uint64_t>(parse_int(args.get("synthetic"), "--synthetic"));
+  }
+  return src;
+}
+
+void print_registration(const Pipeline& p) {
+  const auto& sl = p.source_landmarks();
+  const auto& tl = p.target_landmarks();
+  std::printf("landmarks:");
+  for (std::size_t c = 0; c < sl.classes.size(); ++c)
+    std::printf(" %s %zu/%zu", sl.classes[c].name.c_str(), sl.classes[c].landmarks,
+                tl.classes[c].landmarks);
+  std::printf("  (source/target)\n");
+  const auto& corr = p.correspondences();
+  std::printf("correspondences: %zu%s\n", corr.items.size(),
+              corr.capped ? (" (capped from " + std::to_string(corr.candidates) + ")").c_str() : "");
+
+  const bool gt = p.ground_truth().has_value();
+  std::printf("\n  %-5s %-8s %8s %9s %7s %8s %13s", "level", "epsilon", "vertices", "edges", "clique",
+              "inliers", "score D [m]");
+  if (gt) std::printf(" %10s %11s %4s", "t err [m]", "r err [deg]", "ok");
+  std::printf("\n");
+  const auto& g = p.graph();
+  for (std::size_t l = 0; l < p.cliques().size(); ++l) {
+    const bool sel = static_cast<int>(l) == p.selected_level();
+    const double D = p.verification().scores[l];
+    std::printf("%s %-5zu %-8.3f %8zu %9zu %7zu %8zu ", sel ? "*" : " ", l, g.thresholds[l],
+                g.active_vertices(static_cast<int>(l)), g.edges_at_level[l],
+                p.cliques()[l].vertices.size(), p.poses()[l].inliers.size());
+    if (std::isfinite(D)) std::printf("%13.1f", D);
+    else std::printf("%13s", "invalid");
+    if (gt && l < p.level_errors().size() && p.level_errors()[l]) {
+      const auto& e = *p.level_errors()[l];
+      std::printf(" %10.2f %11.2f %4s", e.translation, e.rotation_deg, e.success ? "yes" : "no");
+    }
+    std::printf("\n");
+  }
+  std::printf("  (* selected: lowest D; D = sum of min(distance, %.2f m) over %zu source points)\n",
+              p.config().verification.mu, p.verifier() ? p.verifier()->source_points().size() : 0u);
+
+  if (const auto T = p.selected_transform()) {
+    std::printf("\nselected level %d: %s\n", p.selected_level(), pose_text(*T).c_str());
+  } else {
+    std::printf("\nno valid candidate on any level\n");
+  }
+  if (gt) {
+    if (const auto e = p.selected_error())
+      std::printf("ground truth: translation error %.2f m, rotation error %.2f deg -> %s "
+                  "(criterion %.1f m / %.1f deg); upper bound: %s\n",
+                  e->translation, e->rotation_deg, e->success ? "SUCCESS" : "FAILURE",
+                  p.config().evaluation.max_translation_error, p.config().evaluation.max_rotation_error,
+                  p.upper_bound_success() ? "yes" : "no");
+    else
+      std::printf("ground truth: FAILURE (no pose); upper bound: %s\n",
+                  p.upper_bound_success() ? "yes" : "no");
+  }
+  double total = 0;
+  std::printf("times [ms]:");
+  const Stage shown[] = {Stage::landmarks, Stage::correspondences, Stage::graph, Stage::clique,
+                         Stage::pose, Stage::verification_prep, Stage::verification};
+  for (Stage s : shown) {
+    std::printf(" %s %.1f", stage_name(s), p.time_ms(s));
+    total += p.time_ms(s);
+  }
+  std::printf(" | total %.1f\n", total);
+}
+
+std::vector<Option> register_options() {
+  std::vector<Option> o = pair_options();
+  o.push_back({"config", 1, "FILE", "configuration JSON (default: built-in outdoor defaults)"});
+  o.push_back({"json", 1, "OUT", "write the result as JSON (schema pagor.register/1)"});
+  o.push_back({"threads", 1, "N", "threads for graph construction and verification (default 1)"});
+  return o;
+}
+
+int run_register(const Args& args) {
+  const Config config = config_from_args(args);
+  const PairSource src = pair_source_from_args(args);
+  std::printf("pair: %s\n", describe(src).c_str());
+  const auto t0 = std::chrono::steady_clock::now();
+  LoadedPair pair = load_pair(src);
+  for (const auto& w : pair.source.warnings) warn(w);
+  for (const auto& w : pair.target.warnings) warn(w);
+  if (!pair.source.cloud.has_labels()) throw InputError(pair.source_name + ": no semantic labels");
+  if (!pair.target.cloud.has_labels()) throw InputError(pair.target_name + ": no semantic labels");
+  std::printf("loaded %zu + %zu points in %.1f ms\n", pair.source.cloud.size(), pair.target.cloud.size(),
+              std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+
+  Pipeline pipeline(config, args.get_int("threads", 1));
+  pipeline.set_input(std::move(pair.source.cloud), std::move(pair.target.cloud));
+  pipeline.set_ground_truth(pair.T_target_source_gt);
+  pipeline.run();
+  for (const auto& w : pipeline.warnings()) warn(w);
+  print_registration(pipeline);
+  if (args.has("json")) {
+    write_text_file(args.get("json"),
+                    registration_report_json(pipeline, pair.source_name, pair.target_name) + "\n");
+    std::printf("wrote %s\n", args.get("json").c_str());
+  }
+  return 0;
+}
+
+}  // namespace pagor::cli

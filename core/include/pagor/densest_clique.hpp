@@ -1,0 +1,48 @@
+#pragma once
+/// \file densest_clique.hpp
+/// Densest clique of each pyramid level: the CLIPPER relaxation
+///   maximise u^T M_d u  subject to  u >= 0, |u| <= 1,   M_d = M - d (1 1^T - C),
+/// by projected gradient ascent with backtracking, raising the penalty d until the support of u is
+/// a clique, then keeping the round(u^T C u) largest entries. Cascaded (Alg. 1 of the paper): the
+/// sparsest level is solved first and each next level starts from the previous solution.
+/// Also an exact maximum clique by branch and bound, for small graphs and as a test reference.
+
+#include <vector>
+
+#include "pagor/config.hpp"
+#include "pagor/pyramid_graph.hpp"
+
+namespace pagor {
+
+/// The clique found on one level.
+struct CliqueResult {
+  int level = 0;
+  std::vector<int> vertices;  ///< clique members (correspondence indices), increasing
+  std::vector<double> u;      ///< final relaxation vector (empty for the exact solver)
+  int gradient_steps = 0;     ///< accepted and rejected gradient steps, over all penalties
+  int penalty_updates = 0;    ///< outer iterations (increases of d)
+  bool optimal = false;       ///< exact solver: whether the search finished within its budget
+  double time_ms = 0.0;       ///< wall time [ms]
+};
+
+/// CLIPPER relaxation on level `level` from `u0` (any non-negative vector of the graph's size; it
+/// is normalised; an all-zero or empty one means the seeded random start). With `params.prune`,
+/// `known_clique` (if it is a clique on this level) tightens the lower bound used for pruning.
+CliqueResult solve_clipper(const PyramidGraph& graph, int level, const std::vector<double>& u0,
+                           const CliqueParams& params, const std::vector<int>& known_clique = {});
+
+/// The seeded random start of the relaxation (uniform in (0, 1], normalised).
+std::vector<double> random_start(int size, std::uint64_t seed);
+
+/// Exact maximum clique on level `level` (branch and bound with a greedy-colouring bound).
+/// Stops after `params.exact_max_nodes` search nodes with the best clique so far and
+/// `optimal = false`.
+CliqueResult exact_max_clique(const PyramidGraph& graph, int level, const CliqueParams& params);
+
+/// One clique per level, in level order, with the solver `params.solver` selects.
+std::vector<CliqueResult> solve_pyramid(const PyramidGraph& graph, const CliqueParams& params);
+
+/// Whether every pair of `vertices` is adjacent at `level`.
+bool is_clique(const PyramidGraph& graph, int level, const std::vector<int>& vertices);
+
+}  // namespace pagor

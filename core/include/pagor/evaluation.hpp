@@ -1,0 +1,21 @@
+#pragma once
+/// \file evaluation.hpp
+/// Errors of an estimated pose against ground truth, and the success criterion.
+
+#include "pagor/config.hpp"
+#include "pagor/types.hpp"
+
+namespace pagor {
+
+/// Errors of one pose.
+struct PoseError {
+  double translation = 0.0;   ///< |t_est - t_gt| [m]
+  double rotation_deg = 0.0;  ///< angle of R_gt^T R_est [deg]
+  bool success = false;       ///< both within the criterion
+};
+
+/// Compares an estimate with the truth under `criterion` (default 2 m / 5 deg).
+PoseError pose_error(const Transform& estimate, const Transform& truth,
+                     const EvaluationParams& criterion = {});
+
+}  // namespace pagor

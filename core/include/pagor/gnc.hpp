@@ -1,0 +1,40 @@
+#pragma once
+/// \file gnc.hpp
+/// Pose from correspondences by graduated non-convexity (GNC) with a truncated least-squares (TLS)
+/// cost: min_T sum_i min(|T p_i - q_i|^2, c^2), solved as a sequence of weighted least-squares
+/// problems whose weights go from the convex surrogate (mu -> 0) to the TLS cost (mu -> inf).
+
+#include <string>
+#include <vector>
+
+#include "pagor/config.hpp"
+#include "pagor/types.hpp"
+
+namespace pagor {
+
+/// A candidate pose.
+struct PoseEstimate {
+  bool valid = false;                              ///< false: too few or degenerate correspondences
+  Transform T_target_source = Transform::Identity();  ///< maps source points into the target frame
+  std::vector<int> inliers;   ///< indices (into the input lists) with residual <= noise bound
+  int iterations = 0;         ///< GNC iterations run
+  std::string failure;        ///< why it is invalid
+  double time_ms = 0.0;       ///< wall time [ms]
+};
+
+/// Weighted least-squares rigid transform (Horn/Umeyama without scale) mapping `src` onto `dst`.
+/// In SE(2) only x, y and yaw are estimated (z translation 0). Returns false when the weighted
+/// points are degenerate (fewer than 3 non-collinear, or 2 distinct in SE(2)).
+bool weighted_rigid_transform(const std::vector<Eigen::Vector3d>& src,
+                              const std::vector<Eigen::Vector3d>& dst,
+                              const std::vector<double>& weights, PoseModel model, Transform& T);
+
+/// GNC-TLS. `src` and `dst` have the same length. In SE(2), residuals are measured in the x-y
+/// plane. Fewer than 3 correspondences (2 in SE(2)), or a collinear set, gives an invalid estimate.
+PoseEstimate estimate_pose_gnc(const std::vector<Eigen::Vector3d>& src,
+                               const std::vector<Eigen::Vector3d>& dst, const GncParams& params = {});
+
+/// Rotation angle of a rotation matrix [deg].
+double rotation_angle_deg(const Eigen::Matrix3d& R);
+
+}  // namespace pagor

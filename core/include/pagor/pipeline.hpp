@@ -1,0 +1,127 @@
+#pragma once
+/// \file pipeline.hpp
+/// The whole method with caching: the pipeline owns the inputs and every stage's output, and a
+/// change recomputes only what it invalidates (a new mu re-scores; a new threshold rebuilds the
+/// graph and what follows; a new clustering parameter re-runs everything). Each stage reports its
+/// wall time and how often it ran. One thread at a time may use a Pipeline; `run` can report
+/// progress and be cancelled from another thread through an atomic flag.
+
+#include <array>
+#include <atomic>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "pagor/config.hpp"
+#include "pagor/correspondences.hpp"
+#include "pagor/densest_clique.hpp"
+#include "pagor/evaluation.hpp"
+#include "pagor/gnc.hpp"
+#include "pagor/landmarks.hpp"
+#include "pagor/pyramid_graph.hpp"
+#include "pagor/types.hpp"
+#include "pagor/verification.hpp"
+
+namespace pagor {
+
+/// The stages, in the order they run.
+enum class Stage : int {
+  landmarks,          ///< landmarks of both clouds
+  correspondences,    ///< putative correspondences
+  graph,              ///< pyramid of consistency graphs
+  clique,             ///< densest clique per level
+  pose,               ///< GNC-TLS pose per level
+  verification_prep,  ///< downsampled metric clouds and target kd-tree
+  verification,       ///< score D per candidate, selection
+  evaluation,         ///< errors against ground truth
+};
+constexpr int kStageCount = 8;
+
+/// Lower-case name of a stage, as in timings.
+const char* stage_name(Stage stage);
+
+/// Progress callback: the stage about to run and the overall fraction done, in [0, 1].
+using ProgressFn = std::function<void(Stage stage, double fraction)>;
+
+class Pipeline {
+ public:
+  /// `threads` is used by the stages that parallelise (graph construction, verification).
+  explicit Pipeline(Config config = default_config(), int threads = 1);
+
+  /// Sets both clouds; every stage becomes stale.
+  void set_input(PointCloud source, PointCloud target);
+  /// Sets or clears the ground truth; only the evaluation becomes stale.
+  void set_ground_truth(std::optional<Transform> T_target_source);
+  /// Validates and applies a configuration; the stages it affects become stale.
+  /// Throws ConfigError (the current configuration is kept).
+  void set_config(const Config& config);
+  void set_threads(int threads) { threads_ = threads < 1 ? 1 : threads; }
+
+  const Config& config() const { return config_; }
+  bool has_input() const { return has_input_; }
+  /// Whether a stage's output is out of date.
+  bool stale(Stage stage) const { return stale_[static_cast<std::size_t>(stage)]; }
+  /// Whether every stage is up to date.
+  bool up_to_date() const;
+
+  /// Runs the stale stages in order. Throws InputError without input, Cancelled when `cancel`
+  /// becomes true (stages finished so far keep their results).
+  void run(const ProgressFn& progress = {}, const std::atomic<bool>* cancel = nullptr);
+
+  // ---- results (valid once the stage has run) ----
+  const PointCloud& source() const { return source_; }
+  const PointCloud& target() const { return target_; }
+  const LandmarkSet& source_landmarks() const { return source_landmarks_; }
+  const LandmarkSet& target_landmarks() const { return target_landmarks_; }
+  const CorrespondenceSet& correspondences() const { return correspondences_; }
+  const PyramidGraph& graph() const { return graph_; }
+  const std::vector<CliqueResult>& cliques() const { return cliques_; }
+  const std::vector<PoseEstimate>& poses() const { return poses_; }
+  const Verifier* verifier() const { return verifier_ ? &*verifier_ : nullptr; }
+  const VerificationResult& verification() const { return verification_; }
+  const std::optional<Transform>& ground_truth() const { return ground_truth_; }
+  /// Errors per level (empty without ground truth; nullopt for an invalid candidate).
+  const std::vector<std::optional<PoseError>>& level_errors() const { return level_errors_; }
+
+  /// Selected level, or -1 when no candidate is valid.
+  int selected_level() const { return verification_.selected; }
+  /// The selected pose, if any.
+  std::optional<Transform> selected_transform() const;
+  /// Errors of the selected pose (needs ground truth and a valid selection).
+  std::optional<PoseError> selected_error() const;
+  /// Whether any candidate succeeds (the paper's "upper bound"; needs ground truth).
+  bool upper_bound_success() const;
+
+  /// How many times a stage has run since construction.
+  int runs(Stage stage) const { return runs_[static_cast<std::size_t>(stage)]; }
+  /// Wall time of a stage's last run [ms].
+  double time_ms(Stage stage) const { return times_[static_cast<std::size_t>(stage)]; }
+  /// Warnings collected by the last run of each stage.
+  std::vector<std::string> warnings() const;
+
+ private:
+  void mark_stale(Stage stage);
+  void run_stage(Stage stage);
+
+  Config config_;
+  int threads_ = 1;
+  bool has_input_ = false;
+  PointCloud source_, target_;
+  std::optional<Transform> ground_truth_;
+
+  LandmarkSet source_landmarks_, target_landmarks_;
+  CorrespondenceSet correspondences_;
+  PyramidGraph graph_;
+  std::vector<CliqueResult> cliques_;
+  std::vector<PoseEstimate> poses_;
+  std::optional<Verifier> verifier_;
+  VerificationResult verification_;
+  std::vector<std::optional<PoseError>> level_errors_;
+
+  std::array<bool, kStageCount> stale_{};
+  std::array<int, kStageCount> runs_{};
+  std::array<double, kStageCount> times_{};
+};
+
+}  // namespace pagor

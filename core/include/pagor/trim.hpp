@@ -1,0 +1,22 @@
+#pragma once
+/// \file trim.hpp
+/// Translation-and-rotation-invariant measurements (TRIM) between two correspondences
+/// (p_i, q_i) and (p_j, q_j): they compare the source length a = |p_i - p_j| with the target
+/// length b = |q_i - q_j|, which a rigid transform preserves.
+
+#include <algorithm>
+#include <cmath>
+
+#include "pagor/config.hpp"
+
+namespace pagor {
+
+/// TRIM of two lengths a, b [m]: `difference` |a - b| [m]; `ratio` max(a/b, b/a) - 1 [unitless].
+/// A ratio with a zero length is +infinity.
+inline double trim_value(TrimKind kind, double a, double b) {
+  if (kind == TrimKind::difference) return std::abs(a - b);
+  const double lo = std::min(a, b), hi = std::max(a, b);
+  return lo > 0 ? hi / lo - 1.0 : HUGE_VAL;
+}
+
+}  // namespace pagor

@@ -1,0 +1,57 @@
+#pragma once
+/// \file verification.hpp
+/// "Distrust and verify": every candidate pose is scored on the dense metric clouds by
+///   D = sum_p min(|T p - q_nn|, mu)   (truncated, default),
+/// or the ablation variants `trimmed` (sum of d over d < mu) and `nearest` (sum of d). The source
+/// and target are voxel-downsampled first; the target's nearest neighbours come from a kd-tree.
+/// The lowest D wins.
+
+#include <memory>
+#include <vector>
+
+#include "pagor/config.hpp"
+#include "pagor/gnc.hpp"
+#include "pagor/types.hpp"
+
+namespace pagor {
+
+/// The downsampled clouds and the target kd-tree; built once, scores any number of poses.
+class Verifier {
+ public:
+  /// Downsamples both clouds on a `voxel_size` grid [m] (0 keeps every point) and builds the tree.
+  Verifier(const PointCloud& source, const PointCloud& target, double voxel_size);
+  ~Verifier();
+  Verifier(Verifier&&) noexcept;
+  Verifier& operator=(Verifier&&) noexcept;
+
+  /// Score D of a pose, in metres summed over the downsampled source points; `threads` > 1 splits
+  /// the points over threads (same result).
+  double score(const Transform& T_target_source, double mu, ScoreKind kind, int threads = 1) const;
+
+  /// Distance from each downsampled source point, moved by T, to its nearest target point [m].
+  std::vector<float> distances(const Transform& T_target_source) const;
+
+  const std::vector<Eigen::Vector3f>& source_points() const;
+  const std::vector<Eigen::Vector3f>& target_points() const;
+  double build_time_ms() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+/// Scores of all candidates and the winner.
+struct VerificationResult {
+  std::vector<double> scores;  ///< D per candidate [m]; +infinity for an invalid candidate
+  int selected = -1;           ///< index of the lowest D; -1 when no candidate is valid
+  bool tie = false;            ///< whether another candidate had the same D (broken by inliers)
+  double time_ms = 0.0;        ///< wall time of the scoring [ms]
+};
+
+/// Scores every valid candidate and selects the lowest D. Ties (equal D to 1e-9 relative) go to
+/// the candidate with more inliers, then to the lower index.
+VerificationResult verify_candidates(const Verifier& verifier,
+                                     const std::vector<PoseEstimate>& candidates,
+                                     const VerificationParams& params, int threads = 1);
+
+}  // namespace pagor

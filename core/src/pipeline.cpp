@@ -1,0 +1,173 @@
+#include "pagor/pipeline.hpp"
+
+#include <chrono>
+
+#include "pagor/errors.hpp"
+
+namespace pagor {
+namespace {
+
+// Direct dependents of each stage.
+const std::vector<Stage>& dependents(Stage s) {
+  static const std::array<std::vector<Stage>, kStageCount> table = {{
+      {Stage::correspondences},  // landmarks
+      {Stage::graph},            // correspondences
+      {Stage::clique},           // graph
+      {Stage::pose},             // clique
+      {Stage::verification},     // pose
+      {Stage::verification},     // verification_prep
+      {Stage::evaluation},       // verification
+      {},                        // evaluation
+  }};
+  return table[static_cast<std::size_t>(s)];
+}
+
+}  // namespace
+
+const char* stage_name(Stage stage) {
+  static const char* const names[kStageCount] = {"landmarks", "correspondences", "graph", "clique",
+                                                 "gnc", "verification_prep", "verification", "evaluation"};
+  return names[static_cast<int>(stage)];
+}
+
+Pipeline::Pipeline(Config config, int threads) : threads_(threads < 1 ? 1 : threads) {
+  validate(config);
+  config_ = std::move(config);
+  stale_.fill(true);
+}
+
+void Pipeline::mark_stale(Stage s) {
+  stale_[static_cast<std::size_t>(s)] = true;
+  for (Stage d : dependents(s)) mark_stale(d);
+}
+
+bool Pipeline::up_to_date() const {
+  for (bool s : stale_)
+    if (s) return false;
+  return true;
+}
+
+void Pipeline::set_input(PointCloud source, PointCloud target) {
+  source_ = std::move(source);
+  target_ = std::move(target);
+  has_input_ = true;
+  mark_stale(Stage::landmarks);
+  mark_stale(Stage::verification_prep);
+}
+
+void Pipeline::set_ground_truth(std::optional<Transform> T) {
+  ground_truth_ = std::move(T);
+  mark_stale(Stage::evaluation);
+}
+
+void Pipeline::set_config(const Config& config) {
+  validate(config);
+  const auto changed = [&](const char* section) {
+    return section_json(config, section) != section_json(config_, section);
+  };
+  if (changed("label_scheme") || changed("landmarks")) mark_stale(Stage::landmarks);
+  if (changed("correspondences")) mark_stale(Stage::correspondences);
+  if (changed("graph")) mark_stale(Stage::graph);
+  if (changed("clique")) mark_stale(Stage::clique);
+  if (changed("gnc")) mark_stale(Stage::pose);
+  if (config.verification.voxel_size != config_.verification.voxel_size)
+    mark_stale(Stage::verification_prep);
+  if (changed("verification")) mark_stale(Stage::verification);
+  if (changed("evaluation")) mark_stale(Stage::evaluation);
+  config_ = config;
+}
+
+void Pipeline::run(const ProgressFn& progress, const std::atomic<bool>* cancel) {
+  if (!has_input_) throw InputError("the pipeline has no input clouds");
+  for (int i = 0; i < kStageCount; ++i) {
+    if (!stale_[static_cast<std::size_t>(i)]) continue;
+    if (cancel && cancel->load()) throw Cancelled();
+    const Stage s = static_cast<Stage>(i);
+    if (progress) progress(s, static_cast<double>(i) / kStageCount);
+    const auto t0 = std::chrono::steady_clock::now();
+    run_stage(s);
+    times_[static_cast<std::size_t>(i)] =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    ++runs_[static_cast<std::size_t>(i)];
+    stale_[static_cast<std::size_t>(i)] = false;
+  }
+  if (progress) progress(Stage::evaluation, 1.0);
+}
+
+void Pipeline::run_stage(Stage stage) {
+  switch (stage) {
+    case Stage::landmarks:
+      source_landmarks_ = extract_landmarks(source_, config_.label_scheme, config_.landmarks);
+      target_landmarks_ = extract_landmarks(target_, config_.label_scheme, config_.landmarks);
+      break;
+    case Stage::correspondences:
+      correspondences_ = match_landmarks(source_landmarks_, target_landmarks_, config_.correspondences);
+      break;
+    case Stage::graph:
+      graph_ = build_pyramid_graph(correspondences_.items, config_.graph, threads_);
+      break;
+    case Stage::clique:
+      cliques_ = solve_pyramid(graph_, config_.clique);
+      break;
+    case Stage::pose: {
+      poses_.clear();
+      for (const CliqueResult& c : cliques_) {
+        std::vector<Eigen::Vector3d> p, q;
+        for (int v : c.vertices) {
+          p.push_back(correspondences_.items[static_cast<std::size_t>(v)].p);
+          q.push_back(correspondences_.items[static_cast<std::size_t>(v)].q);
+        }
+        PoseEstimate e = estimate_pose_gnc(p, q, config_.gnc);
+        for (int& i : e.inliers) i = c.vertices[static_cast<std::size_t>(i)];  // -> correspondence ids
+        poses_.push_back(std::move(e));
+      }
+      break;
+    }
+    case Stage::verification_prep:
+      verifier_.emplace(source_, target_, config_.verification.voxel_size);
+      break;
+    case Stage::verification:
+      verification_ = verify_candidates(*verifier_, poses_, config_.verification, threads_);
+      break;
+    case Stage::evaluation:
+      level_errors_.clear();
+      if (ground_truth_)
+        for (const PoseEstimate& e : poses_)
+          level_errors_.push_back(e.valid ? std::optional<PoseError>(pose_error(
+                                                e.T_target_source, *ground_truth_, config_.evaluation))
+                                          : std::nullopt);
+      break;
+  }
+}
+
+std::optional<Transform> Pipeline::selected_transform() const {
+  if (verification_.selected < 0 || static_cast<std::size_t>(verification_.selected) >= poses_.size())
+    return std::nullopt;
+  return poses_[static_cast<std::size_t>(verification_.selected)].T_target_source;
+}
+
+std::optional<PoseError> Pipeline::selected_error() const {
+  const auto T = selected_transform();
+  if (!T || !ground_truth_) return std::nullopt;
+  return pose_error(*T, *ground_truth_, config_.evaluation);
+}
+
+bool Pipeline::upper_bound_success() const {
+  for (const auto& e : level_errors_)
+    if (e && e->success) return true;
+  return false;
+}
+
+std::vector<std::string> Pipeline::warnings() const {
+  std::vector<std::string> out;
+  for (const auto& w : source_landmarks_.warnings) out.push_back("source: " + w);
+  for (const auto& w : target_landmarks_.warnings) out.push_back("target: " + w);
+  for (const auto& w : correspondences_.warnings) out.push_back(w);
+  for (std::size_t l = 0; l < poses_.size(); ++l)
+    if (!poses_[l].valid)
+      out.push_back("level " + std::to_string(l) + ": no pose (" + poses_[l].failure + ")");
+  if (!poses_.empty() && verification_.selected < 0) out.push_back("no valid candidate on any level");
+  return out;
+}
+
+}  // namespace pagor

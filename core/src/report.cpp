@@ -1,0 +1,102 @@
+#include "pagor/report.hpp"
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+namespace pagor {
+namespace {
+
+using json = nlohmann::json;
+
+json matrix_json(const Transform& T) {
+  json rows = json::array();
+  for (int r = 0; r < 4; ++r) rows.push_back({T(r, 0), T(r, 1), T(r, 2), T(r, 3)});
+  return rows;
+}
+
+json counts_by_class(const LandmarkSet& set) {
+  json j = json::object();
+  for (const auto& c : set.classes) j[c.name] = c.landmarks;
+  return j;
+}
+
+}  // namespace
+
+std::string registration_report_json(const Pipeline& p, const std::string& source_name,
+                                     const std::string& target_name, int indent) {
+  json levels = json::array();
+  const auto& g = p.graph();
+  for (std::size_t l = 0; l < p.cliques().size(); ++l) {
+    const auto& c = p.cliques()[l];
+    const auto& pose = p.poses()[l];
+    const double D = p.verification().scores.size() > l ? p.verification().scores[l] : HUGE_VAL;
+    json level = {{"level", l},
+                  {"epsilon", g.thresholds[l]},
+                  {"vertices", g.active_vertices(static_cast<int>(l))},
+                  {"edges", g.edges_at_level[l]},
+                  {"clique_size", c.vertices.size()},
+                  {"clique", c.vertices},
+                  {"clique_time_ms", c.time_ms},
+                  {"clique_gradient_steps", c.gradient_steps},
+                  {"clique_penalty_updates", c.penalty_updates},
+                  {"pose_valid", pose.valid},
+                  {"inliers", pose.inliers.size()},
+                  {"T_target_source", pose.valid ? matrix_json(pose.T_target_source) : json()},
+                  {"score_D", std::isfinite(D) ? json(D) : json()}};
+    if (!pose.valid) level["failure"] = pose.failure;
+    if (l < p.level_errors().size() && p.level_errors()[l]) {
+      const auto& e = *p.level_errors()[l];
+      level["translation_error_m"] = e.translation;
+      level["rotation_error_deg"] = e.rotation_deg;
+      level["success"] = e.success;
+    }
+    levels.push_back(level);
+  }
+  const auto selected = p.selected_transform();
+  json gt = nullptr;
+  if (p.ground_truth()) {
+    gt = {{"T_target_source", matrix_json(*p.ground_truth())}, {"upper_bound", p.upper_bound_success()}};
+    if (const auto e = p.selected_error()) {
+      gt["translation_error_m"] = e->translation;
+      gt["rotation_error_deg"] = e->rotation_deg;
+      gt["success"] = e->success;
+    } else {
+      gt["success"] = false;
+    }
+  }
+  json per_class = json::object();
+  const auto& corr = p.correspondences();
+  for (std::size_t c = 0; c < corr.per_class.size() && c < p.source_landmarks().classes.size(); ++c)
+    per_class[p.source_landmarks().classes[c].name] = corr.per_class[c];
+  json timings = json::object();
+  double total = 0;
+  for (int s = 0; s < kStageCount; ++s) total += p.time_ms(static_cast<Stage>(s));
+  timings["landmarks"] = p.time_ms(Stage::landmarks);
+  timings["correspondences"] = p.time_ms(Stage::correspondences);
+  timings["graph"] = p.time_ms(Stage::graph);
+  timings["clique"] = p.time_ms(Stage::clique);
+  timings["gnc"] = p.time_ms(Stage::pose);
+  timings["verification"] = p.time_ms(Stage::verification_prep) + p.time_ms(Stage::verification);
+  timings["evaluation"] = p.time_ms(Stage::evaluation);
+  timings["total"] = total;
+
+  json out = {{"schema", "pagor.register/1"},
+              {"source", source_name},
+              {"target", target_name},
+              {"T_target_source", selected ? matrix_json(*selected) : json()},
+              {"selected_level", p.selected_level() >= 0 ? json(p.selected_level()) : json()},
+              {"levels", levels},
+              {"ground_truth", gt},
+              {"correspondences",
+               {{"count", corr.items.size()}, {"candidates", corr.candidates}, {"capped", corr.capped},
+                {"per_class", per_class}}},
+              {"landmarks",
+               {{"source", counts_by_class(p.source_landmarks())},
+                {"target", counts_by_class(p.target_landmarks())}}},
+              {"timings_ms", timings},
+              {"warnings", p.warnings()},
+              {"config", json::parse(config_to_json(p.config()))}};
+  return out.dump(indent);
+}
+
+}  // namespace pagor
