@@ -15,8 +15,8 @@ int run_demo(const Args& args) {
   const std::string root = args.has("kitti-root") ? args.get("kitti-root") : find_shared_kitti();
   std::vector<std::string> words;
   if (!root.empty()) {
-    std::printf("demo: KITTI data at %s, frame 0\n\n", root.c_str());
-    words = {"--kitti-root", root, "--sequence", "00", "--frame", "0"};
+    std::printf("demo: KITTI data at %s, pair 20 -> 30\n\n", root.c_str());
+    words = {"--kitti-root", root, "--sequence", "00", "--pair", "20", "30"};
   } else {
     std::printf("demo: no KITTI data found; using the generated synthetic scene (seed 7)\n\n");
     words = {"--synthetic", "7"};
@@ -25,7 +25,7 @@ int run_demo(const Args& args) {
     words.push_back("--config");
     words.push_back(args.get("config"));
   }
-  return run_landmarks(Args(words, landmarks_options()));
+  return run_register(Args(words, register_options()));
 }
 
 }  // namespace pagor::cli

@@ -29,6 +29,8 @@ std::vector<Option> config_options();
 int run_config(const Args& args);
 std::vector<Option> register_options();
 int run_register(const Args& args);
+std::vector<Option> bench_options();
+int run_bench(const Args& args);
 std::vector<Option> demo_options();
 int run_demo(const Args& args);
 

@@ -14,6 +14,7 @@ const std::vector<Command>& commands() {
       {"demo", "run the main job on the shared KITTI data, or on the synthetic scene", demo_options,
        run_demo},
       {"register", "register a source cloud to a target cloud", register_options, run_register},
+      {"bench", "run every pair of a KITTI pairs file and summarise", bench_options, run_bench},
       {"landmarks", "extract semantic landmarks from one cloud", landmarks_options, run_landmarks},
       {"config", "print or check a configuration", config_options, run_config},
   };

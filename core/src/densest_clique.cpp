@@ -310,10 +310,15 @@ CliqueResult solve_clipper(const PyramidGraph& g, int level, const std::vector<d
 
   // Start vector restricted to the kept vertices; the seeded random start if nothing is left.
   std::vector<double> u(sub.size());
+  // A warm start gets a little of the random start mixed in, so that vertices it left at zero
+  // start above zero.
+  const std::vector<double> start = random_start(g.vertices, p.seed);
   const bool warm = u0.size() == n;
-  for (std::size_t i = 0; i < sub.size(); ++i) u[i] = warm ? u0[static_cast<std::size_t>(sub.ids[i])] : 0.0;
+  for (std::size_t i = 0; i < sub.size(); ++i) {
+    const auto v = static_cast<std::size_t>(sub.ids[i]);
+    u[i] = warm ? u0[v] + p.warm_start_mix * start[v] : 0.0;
+  }
   if (!project(u)) {
-    const std::vector<double> start = random_start(g.vertices, p.seed);
     for (std::size_t i = 0; i < sub.size(); ++i) u[i] = start[static_cast<std::size_t>(sub.ids[i])];
     project(u);
   }

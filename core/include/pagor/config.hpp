@@ -83,6 +83,7 @@ struct CliqueParams {
   double eps = 1e-9;              ///< numerical zero
   double support_tol = 1e-6;      ///< entries below this fraction of the largest count as zero
   std::uint64_t seed = 42;        ///< seed of the initial vector
+  double warm_start_mix = 0.05;   ///< cascaded: weight of the random start added to a warm start
   long exact_max_nodes = 20000000;  ///< exact: branch-and-bound node budget
 };
 

@@ -1,0 +1,197 @@
+#include <catch2/catch.hpp>
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <random>
+#include <set>
+
+#include "pagor/densest_clique.hpp"
+#include "pagor/pyramid_graph.hpp"
+
+using namespace pagor;
+
+namespace {
+
+// Correspondences: `inliers` consistent with one rigid motion (noise `sigma`), the rest random.
+std::vector<Correspondence> planted(int inliers, int outliers, double sigma, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> coord(-40.0, 40.0);
+  std::normal_distribution<double> noise(0.0, sigma);
+  const Eigen::Matrix3d R = Eigen::AngleAxisd(0.7, Eigen::Vector3d(0.1, 0.2, 1).normalized()).toRotationMatrix();
+  const Eigen::Vector3d t(10, -4, 1);
+  std::vector<Correspondence> c;
+  int id = 0;
+  for (int k = 0; k < inliers + outliers; ++k) {
+    Correspondence x;
+    x.source = x.target = id++;
+    x.p = Eigen::Vector3d(coord(rng), coord(rng), coord(rng) / 8);
+    x.q = k < inliers ? Eigen::Vector3d(R * x.p + t + Eigen::Vector3d(noise(rng), noise(rng), noise(rng)))
+                      : Eigen::Vector3d(coord(rng), coord(rng), coord(rng) / 8);
+    c.push_back(x);
+  }
+  std::shuffle(c.begin(), c.end(), rng);  // inliers anywhere in the list
+  return c;
+}
+
+std::set<int> inlier_ids(const std::vector<Correspondence>& c, int inliers) {
+  std::set<int> s;
+  for (std::size_t i = 0; i < c.size(); ++i)
+    if (c[i].source < inliers) s.insert(static_cast<int>(i));
+  return s;
+}
+
+// A random graph (edge probability p) with a planted clique on the first k vertices, as one level.
+PyramidGraph random_graph(int n, double p, int k, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::bernoulli_distribution edge(p);
+  std::vector<std::vector<int>> adj(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i)
+    for (int j = i + 1; j < n; ++j)
+      if ((i < k && j < k) || edge(rng)) {
+        adj[static_cast<std::size_t>(i)].push_back(j);
+        adj[static_cast<std::size_t>(j)].push_back(i);
+      }
+  PyramidGraph g;
+  g.vertices = n;
+  g.thresholds = {1.0};
+  g.offsets.assign(1, 0);
+  std::size_t edges = 0;
+  for (auto& row : adj) {
+    std::sort(row.begin(), row.end());
+    for (int v : row) {
+      g.neighbors.push_back(v);
+      g.level.push_back(0);
+      g.trim.push_back(0.0f);
+    }
+    edges += row.size();
+    g.offsets.push_back(static_cast<std::int64_t>(g.neighbors.size()));
+  }
+  g.edges_at_level = {edges / 2};
+  return g;
+}
+
+// Maximum clique size by enumerating every subset (n <= 16).
+std::size_t brute_force_clique(const PyramidGraph& g) {
+  std::size_t best = 0;
+  for (std::uint32_t mask = 1; mask < (1u << g.vertices); ++mask) {
+    std::vector<int> s;
+    for (int v = 0; v < g.vertices; ++v)
+      if (mask & (1u << v)) s.push_back(v);
+    if (s.size() > best && is_clique(g, 0, s)) best = s.size();
+  }
+  return best;
+}
+
+}  // namespace
+
+TEST_CASE("the cascaded solver finds the planted clique with 50 to 95 % outliers") {
+  GraphParams gp;
+  gp.trim = TrimKind::difference;
+  gp.thresholds = {0.1, 0.2, 0.4, 0.8};
+  CliqueParams cp;
+  for (const auto& [inliers, outliers] : {std::pair{30, 30}, std::pair{30, 120}, std::pair{20, 380}}) {
+    for (std::uint64_t seed : {1u, 2u, 3u}) {
+      INFO(inliers << " inliers, " << outliers << " outliers, seed " << seed);
+      const auto c = planted(inliers, outliers, 0.01, seed);
+      const PyramidGraph g = build_pyramid_graph(c, gp);
+      const auto result = solve_pyramid(g, cp);
+      REQUIRE(result.size() == 4);
+      const std::set<int> truth = inlier_ids(c, inliers);
+      for (const auto& level : result) {
+        CHECK(is_clique(g, level.level, level.vertices));
+        const std::set<int> found(level.vertices.begin(), level.vertices.end());
+        std::size_t hit = 0;
+        for (int v : found) hit += truth.count(v);
+        // Noise 0.01 m per axis: every inlier pair is within even the tightest level (0.1 m)...
+        CHECK(hit == truth.size());
+        // ...and random outliers rarely join all of them.
+        CHECK(found.size() <= truth.size() + 1);
+      }
+    }
+  }
+}
+
+TEST_CASE("the exact solver agrees with brute force on tiny graphs") {
+  CliqueParams cp;
+  for (std::uint64_t seed = 0; seed < 20; ++seed) {
+    const PyramidGraph g = random_graph(14, 0.5, 0, seed);
+    const CliqueResult r = exact_max_clique(g, 0, cp);
+    CHECK(r.optimal);
+    CHECK(is_clique(g, 0, r.vertices));
+    CHECK(r.vertices.size() == brute_force_clique(g));
+  }
+}
+
+TEST_CASE("the relaxation agrees with the exact solver on small random graphs") {
+  CliqueParams cp;
+  for (std::uint64_t seed = 0; seed < 20; ++seed) {
+    for (bool prune : {true, false}) {
+      INFO("seed " << seed << (prune ? " with" : " without") << " pruning");
+      cp.prune = prune;
+      const PyramidGraph g = random_graph(60, 0.15, 9 + static_cast<int>(seed % 5), seed);
+      const CliqueResult exact = exact_max_clique(g, 0, cp);
+      REQUIRE(exact.optimal);
+      const CliqueResult relaxed = solve_clipper(g, 0, {}, cp);
+      CHECK(is_clique(g, 0, relaxed.vertices));
+      CHECK(relaxed.vertices == exact.vertices);
+    }
+  }
+}
+
+TEST_CASE("the exact solver stops at its node budget and says so") {
+  CliqueParams cp;
+  cp.exact_max_nodes = 5;
+  const PyramidGraph g = random_graph(80, 0.5, 0, 1);
+  const CliqueResult r = exact_max_clique(g, 0, cp);
+  CHECK_FALSE(r.optimal);
+  CHECK(is_clique(g, 0, r.vertices));
+}
+
+TEST_CASE("warm start gives the same cliques as cold start with fewer iterations") {
+  GraphParams gp;
+  gp.trim = TrimKind::difference;
+  gp.thresholds = {0.1, 0.2, 0.4, 0.8};
+  const bool prune = GENERATE(false, true);
+  int cascaded_steps = 0, independent_steps = 0;
+  for (std::uint64_t seed : {4u, 5u, 6u}) {
+    const auto c = planted(25, 225, 0.03, seed);
+    const PyramidGraph g = build_pyramid_graph(c, gp);
+    CliqueParams cp;
+    cp.prune = prune;
+    cp.solver = CliqueSolver::cascaded;
+    const auto warm = solve_pyramid(g, cp);
+    cp.solver = CliqueSolver::independent;
+    const auto cold = solve_pyramid(g, cp);
+    for (std::size_t l = 0; l < warm.size(); ++l) {
+      CHECK(warm[l].vertices == cold[l].vertices);
+      cascaded_steps += warm[l].gradient_steps;
+      independent_steps += cold[l].gradient_steps;
+    }
+  }
+  INFO((prune ? "pruned" : "unpruned") << " gradient steps: cascaded " << cascaded_steps << ", independent " << independent_steps);
+  CHECK(cascaded_steps < independent_steps);
+}
+
+TEST_CASE("the solver is deterministic for a seed") {
+  const auto c = planted(20, 200, 0.03, 9);
+  const PyramidGraph g = build_pyramid_graph(c, GraphParams{});
+  const auto a = solve_pyramid(g, CliqueParams{});
+  const auto b = solve_pyramid(g, CliqueParams{});
+  for (std::size_t l = 0; l < a.size(); ++l) {
+    CHECK(a[l].vertices == b[l].vertices);
+    CHECK(a[l].u == b[l].u);
+  }
+}
+
+TEST_CASE("graphs without vertices or edges") {
+  const PyramidGraph empty = build_pyramid_graph({}, GraphParams{});
+  for (const auto solver : {CliqueSolver::cascaded, CliqueSolver::independent, CliqueSolver::exact}) {
+    CliqueParams cp;
+    cp.solver = solver;
+    const auto r = solve_pyramid(empty, cp);
+    REQUIRE(r.size() == GraphParams{}.thresholds.size());
+    CHECK(r[0].vertices.empty());
+  }
+  const PyramidGraph lonely = random_graph(5, 0.0, 0, 1);
+  const CliqueResult r = solve_clipper(lonely, 0, {}, CliqueParams{});
+  CHECK(r.vertices.size() == 1);
+}

@@ -1,0 +1,152 @@
+#include <catch2/catch.hpp>
+#include <array>
+
+#include "pagor/errors.hpp"
+#include "pagor/pipeline.hpp"
+#include "pagor/report.hpp"
+#include "pagor/synthetic.hpp"
+
+using namespace pagor;
+
+namespace {
+
+std::array<int, kStageCount> runs(const Pipeline& p) {
+  std::array<int, kStageCount> r{};
+  for (int s = 0; s < kStageCount; ++s) r[static_cast<std::size_t>(s)] = p.runs(static_cast<Stage>(s));
+  return r;
+}
+
+// Which stages ran between two snapshots.
+std::vector<Stage> ran(const std::array<int, kStageCount>& before, const std::array<int, kStageCount>& after) {
+  std::vector<Stage> out;
+  for (int s = 0; s < kStageCount; ++s)
+    if (after[static_cast<std::size_t>(s)] != before[static_cast<std::size_t>(s)]) out.push_back(static_cast<Stage>(s));
+  return out;
+}
+
+Pipeline synthetic_pipeline() {
+  SyntheticScene scene = make_synthetic_scene();
+  Pipeline p;
+  p.set_input(std::move(scene.source), std::move(scene.target));
+  p.set_ground_truth(scene.T_target_source);
+  return p;
+}
+
+}  // namespace
+
+TEST_CASE("the pipeline registers the synthetic scene") {
+  Pipeline p = synthetic_pipeline();
+  p.run();
+  CHECK(p.up_to_date());
+  REQUIRE(p.selected_level() >= 0);
+  const auto err = p.selected_error();
+  REQUIRE(err);
+  CHECK(err->success);
+  CHECK(err->translation < 0.2);
+  CHECK(p.upper_bound_success());
+  CHECK(p.cliques().size() == p.config().graph.thresholds.size());
+  CHECK(p.level_errors().size() == p.cliques().size());
+}
+
+TEST_CASE("a change re-runs only the stages it invalidates") {
+  Pipeline p = synthetic_pipeline();
+  p.run();
+  auto before = runs(p);
+  for (int s = 0; s < kStageCount; ++s) CHECK(before[static_cast<std::size_t>(s)] == 1);
+
+  SECTION("mu: scoring and evaluation") {
+    Config c = p.config();
+    c.verification.mu = 0.5;
+    p.set_config(c);
+    p.run();
+    CHECK(ran(before, runs(p)) == std::vector<Stage>{Stage::verification, Stage::evaluation});
+  }
+  SECTION("a threshold: graph and everything after it but the metric clouds") {
+    Config c = p.config();
+    c.graph.thresholds[1] = 0.05;
+    p.set_config(c);
+    p.run();
+    CHECK(ran(before, runs(p)) == std::vector<Stage>{Stage::graph, Stage::clique, Stage::pose,
+                                                     Stage::verification, Stage::evaluation});
+  }
+  SECTION("a clustering parameter: everything but the metric clouds") {
+    Config c = p.config();
+    c.landmarks.classes[0].cluster_tolerance = 0.6;
+    p.set_config(c);
+    p.run();
+    CHECK(ran(before, runs(p)) ==
+          std::vector<Stage>{Stage::landmarks, Stage::correspondences, Stage::graph, Stage::clique,
+                             Stage::pose, Stage::verification, Stage::evaluation});
+  }
+  SECTION("the verification voxel: metric clouds, scoring and evaluation") {
+    Config c = p.config();
+    c.verification.voxel_size = 0.7;
+    p.set_config(c);
+    p.run();
+    CHECK(ran(before, runs(p)) ==
+          std::vector<Stage>{Stage::verification_prep, Stage::verification, Stage::evaluation});
+  }
+  SECTION("GNC parameters: pose and after") {
+    Config c = p.config();
+    c.gnc.noise_bound = 0.8;
+    p.set_config(c);
+    p.run();
+    CHECK(ran(before, runs(p)) == std::vector<Stage>{Stage::pose, Stage::verification, Stage::evaluation});
+  }
+  SECTION("ground truth: evaluation only") {
+    p.set_ground_truth(std::nullopt);
+    p.run();
+    CHECK(ran(before, runs(p)) == std::vector<Stage>{Stage::evaluation});
+    CHECK(p.level_errors().empty());
+    CHECK_FALSE(p.selected_error());
+  }
+  SECTION("an unchanged config runs nothing") {
+    p.set_config(p.config());
+    p.run();
+    CHECK(ran(before, runs(p)).empty());
+  }
+  SECTION("an invalid config is rejected and the old one kept") {
+    Config c = p.config();
+    c.verification.mu = -1;
+    CHECK_THROWS_AS(p.set_config(c), ConfigError);
+    CHECK(p.config().verification.mu > 0);
+    CHECK(p.up_to_date());
+  }
+}
+
+TEST_CASE("a cancelled run throws, keeps finished stages, and resumes") {
+  Pipeline p = synthetic_pipeline();
+  std::atomic<bool> cancel{false};
+  int calls = 0;
+  CHECK_THROWS_AS(p.run(
+                      [&](Stage s, double) {
+                        ++calls;
+                        if (s == Stage::graph) cancel = true;  // cancel while the graph is built
+                      },
+                      &cancel),
+                  Cancelled);
+  CHECK(p.runs(Stage::landmarks) == 1);
+  CHECK(p.runs(Stage::graph) == 1);
+  CHECK(p.runs(Stage::clique) == 0);
+  CHECK(p.stale(Stage::clique));
+  cancel = false;
+  p.run();
+  CHECK(p.up_to_date());
+  CHECK(p.runs(Stage::landmarks) == 1);
+  CHECK(p.runs(Stage::clique) == 1);
+  CHECK(calls >= 3);
+}
+
+TEST_CASE("running without input is an error") {
+  Pipeline p;
+  CHECK_THROWS_AS(p.run(), InputError);
+}
+
+TEST_CASE("the JSON report carries the documented top-level keys") {
+  Pipeline p = synthetic_pipeline();
+  p.run();
+  const std::string json = registration_report_json(p, "s", "t");
+  for (const char* key : {"\"T_target_source\"", "\"timings_ms\"", "\"levels\"", "\"selected_level\"",
+                          "\"ground_truth\"", "\"schema\": \"pagor.register/1\"", "\"clique\""})
+    CHECK_THAT(json, Catch::Contains(key));
+}
