@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "args.hpp"
+#include "common/args.hpp"
 #include "pagor/config.hpp"
 #include "pagor/dataset.hpp"
 

@@ -1,0 +1,67 @@
+#pragma once
+/// \file app_state.hpp
+/// The studio's state: what data is open, every parameter, the camera and what is shown. Panels
+/// draw from it and edit it; the session file is this state on disk.
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "camera.hpp"
+#include "pagor/config.hpp"
+#include "pagor/dataset.hpp"
+
+namespace pagor::studio {
+
+enum class ColorMode { by_class, by_cloud };
+enum class PoseShown { selected, ground_truth, identity };
+
+/// Which layers of the 3D view are drawn.
+struct Layers {
+  bool source = true;
+  bool target = true;
+  bool landmarks = true;
+  bool correspondences = true;      ///< the shown level's clique
+  bool all_correspondences = false;  ///< also those outside the clique, faint
+};
+
+struct ViewState {
+  Layers layers;
+  float point_size = 2.0f;     ///< dense clouds [px]
+  float landmark_size = 11.0f;  ///< landmarks [px]
+  ColorMode color = ColorMode::by_class;
+  PoseShown pose = PoseShown::selected;  ///< how the source cloud is placed
+  int level = -1;                        ///< pyramid level shown; -1 follows the selected one
+};
+
+struct AppState {
+  PairSource data;
+  bool have_data = false;
+  std::string pairs_file;                  ///< optional: steps through its pairs
+  std::vector<std::pair<int, int>> pairs;  ///< read from pairs_file
+  int pair_index = -1;
+
+  Config config = default_config();
+  ViewState view;
+  Camera camera;
+  bool camera_fitted = false;  ///< false: fit to the data when it arrives
+
+  std::string session_path = "pagor-session.json";
+  std::string screenshot_path = "pagor-studio.png";
+  std::string message;        ///< last message for the user
+  bool message_is_error = false;
+  bool want_screenshot = false;
+  int width = 1280, height = 720;  ///< window or image size [px]
+};
+
+/// Writes the state as a session file (schema pagor.session/1). Throws pagor::InputError.
+void save_session(const AppState& state, const std::string& path);
+
+/// Reads a session file into `state`. Relative data paths are taken from the session file's
+/// directory. Throws pagor::InputError or pagor::ConfigError naming the file and key.
+void load_session(const std::string& path, AppState& state);
+
+/// The level the view shows: `view.level` if valid, else the selected one (or -1).
+int shown_level(const ViewState& view, int selected, int levels);
+
+}  // namespace pagor::studio

@@ -1,0 +1,247 @@
+// pagor-studio: the interactive studio (GLFW window) and its headless twin (OSMesa), one code path.
+
+#include <GLFW/glfw3.h>
+#include <dlfcn.h>
+#include <imgui.h>
+#include <backends/imgui_impl_glfw.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <vector>
+
+#include "common/args.hpp"
+#include "pagor/errors.hpp"
+#include "pagor/kitti.hpp"
+#include "studio.hpp"
+
+namespace pagor::studio {
+namespace {
+
+// OSMesa, opened at run time so that the window build never loads it (its gl* symbols would
+// otherwise sit beside GLX's in one process).
+constexpr int kOsmesaFormat = 0x22;        // OSMESA_FORMAT
+constexpr int kOsmesaRgba = 0x1908;        // OSMESA_RGBA (GL_RGBA)
+constexpr int kOsmesaDepthBits = 0x30;     // OSMESA_DEPTH_BITS
+constexpr int kOsmesaProfile = 0x33;       // OSMESA_PROFILE
+constexpr int kOsmesaCoreProfile = 0x34;   // OSMESA_CORE_PROFILE
+constexpr int kOsmesaMajor = 0x36;         // OSMESA_CONTEXT_MAJOR_VERSION
+constexpr int kOsmesaMinor = 0x37;         // OSMESA_CONTEXT_MINOR_VERSION
+
+struct OsMesa {
+  void* lib = nullptr;
+  void* (*create)(const int*, void*) = nullptr;
+  unsigned char (*make_current)(void*, void*, unsigned int, int, int) = nullptr;
+  void (*destroy)(void*) = nullptr;
+  void* (*get_proc)(const char*) = nullptr;
+};
+OsMesa g_osmesa;
+void* osmesa_proc(const char* name) { return g_osmesa.get_proc(name); }
+void* glfw_proc(const char* name) { return reinterpret_cast<void*>(glfwGetProcAddress(name)); }
+
+std::vector<cli::Option> studio_options() {
+  return {
+      {"kitti-root", 1, "DIR", "KITTI root holding sequences/"},
+      {"sequence", 1, "SEQ", "KITTI sequence (default 00)"},
+      {"pair", 2, "S T", "KITTI source and target frames"},
+      {"pairs", 1, "FILE", "pairs file to step through"},
+      {"source", 1, "FILE", "source cloud (.bin, .pcd, .ply)"},
+      {"target", 1, "FILE", "target cloud"},
+      {"source-labels", 1, "FILE", ".label file for --source"},
+      {"target-labels", 1, "FILE", ".label file for --target"},
+      {"synthetic", 1, "SEED", "the generated scene"},
+      {"config", 1, "FILE", "configuration JSON"},
+      {"session", 1, "FILE", "session JSON (data, parameters, camera, layers, level)"},
+      {"headless", 0, "", "render offscreen through OSMesa (no display needed)"},
+      {"screenshot", 1, "PNG", "headless: write the rendered UI to this PNG"},
+      {"size", 1, "WxH", "image or window size in pixels (default 1280x720)"},
+      {"frames", 1, "N", "headless: also time N frames and print the frame time"},
+      {"timeout", 1, "S", "headless: give up waiting for the computation after S seconds (default 600)"},
+  };
+}
+
+AppState state_from_args(const cli::Args& args) {
+  AppState s;
+  if (args.has("session")) load_session(args.get("session"), s);
+  if (args.has("config")) s.config = load_config(args.get("config"));
+  const int chosen = args.has("source") + args.has("kitti-root") + args.has("synthetic");
+  if (chosen > 1) throw cli::UsageError("choose one input: --kitti-root, --source/--target or --synthetic");
+  if (args.has("kitti-root")) {
+    if (!args.has("pair")) throw cli::UsageError("--kitti-root needs --pair S T");
+    s.data.kind = PairSource::Kind::kitti;
+    s.data.kitti_root = args.get("kitti-root");
+    s.data.sequence = args.get("sequence", "00");
+    s.data.source_frame = cli::parse_int(args.all("pair")[0], "--pair");
+    s.data.target_frame = cli::parse_int(args.all("pair")[1], "--pair");
+    s.have_data = true;
+  } else if (args.has("source")) {
+    if (!args.has("target")) throw cli::UsageError("--source needs --target");
+    s.data.kind = PairSource::Kind::files;
+    s.data.source = args.get("source");
+    s.data.target = args.get("target");
+    s.data.source_labels = args.get("source-labels");
+    s.data.target_labels = args.get("target-labels");
+    s.have_data = true;
+  } else if (args.has("synthetic")) {
+    s.data.kind = PairSource::Kind::synthetic;
+    s.data.synthetic_seed = static_cast<std::uint64_t>(cli::parse_int(args.get("synthetic"), "--synthetic"));
+    s.have_data = true;
+  }
+  if (args.has("pairs")) {
+    s.pairs_file = args.get("pairs");
+    s.pairs = read_pairs_file(s.pairs_file);
+    for (std::size_t i = 0; i < s.pairs.size(); ++i)
+      if (s.pairs[i] == std::make_pair(s.data.source_frame, s.data.target_frame)) s.pair_index = static_cast<int>(i);
+  }
+  if (!s.have_data && s.data.kitti_root.empty()) {
+    s.data.kind = PairSource::Kind::kitti;
+    s.data.kitti_root = "../shared/data/kitti";
+    s.data.source_frame = 20;
+    s.data.target_frame = 30;
+  }
+  if (args.has("size")) {
+    int w = 0, h = 0;
+    if (std::sscanf(args.get("size").c_str(), "%dx%d", &w, &h) != 2 || w < 320 || h < 240 || w > 8192 || h > 8192)
+      throw cli::UsageError("--size: expected WxH between 320x240 and 8192x8192, got '" + args.get("size") + "'");
+    s.width = w;
+    s.height = h;
+  }
+  return s;
+}
+
+int run_headless(const cli::Args& args, AppState state) {
+  if (!args.has("screenshot") && !args.has("frames"))
+    throw cli::UsageError("--headless needs --screenshot OUT.png (and/or --frames N)");
+  g_osmesa.lib = dlopen("libOSMesa.so.8", RTLD_NOW | RTLD_LOCAL);
+  if (!g_osmesa.lib) throw Error(std::string("cannot load OSMesa (install libosmesa6): ") + dlerror());
+  g_osmesa.create = reinterpret_cast<decltype(g_osmesa.create)>(dlsym(g_osmesa.lib, "OSMesaCreateContextAttribs"));
+  g_osmesa.make_current = reinterpret_cast<decltype(g_osmesa.make_current)>(dlsym(g_osmesa.lib, "OSMesaMakeCurrent"));
+  g_osmesa.destroy = reinterpret_cast<decltype(g_osmesa.destroy)>(dlsym(g_osmesa.lib, "OSMesaDestroyContext"));
+  g_osmesa.get_proc = reinterpret_cast<decltype(g_osmesa.get_proc)>(dlsym(g_osmesa.lib, "OSMesaGetProcAddress"));
+  if (!g_osmesa.create || !g_osmesa.make_current || !g_osmesa.destroy || !g_osmesa.get_proc)
+    throw Error("libOSMesa.so.8 lacks the OSMesa 11.2 context API");
+  const int attribs[] = {kOsmesaFormat, kOsmesaRgba, kOsmesaDepthBits, 24, kOsmesaProfile, kOsmesaCoreProfile,
+                         kOsmesaMajor, 3, kOsmesaMinor, 3, 0};
+  void* ctx = g_osmesa.create(attribs, nullptr);
+  if (!ctx) throw Error("OSMesa could not create an OpenGL 3.3 core context");
+  const int w = state.width, h = state.height;
+  std::vector<unsigned char> buffer(static_cast<std::size_t>(w) * h * 4);
+  if (!g_osmesa.make_current(ctx, buffer.data(), GL_UNSIGNED_BYTE, w, h)) throw Error("OSMesaMakeCurrent failed");
+
+  Gl gl;
+  std::string error;
+  if (!gl.load(osmesa_proc, error)) throw Error(error);
+  ImGui::CreateContext();
+  int rc = 0;
+  {
+    Studio studio(gl, std::move(state));
+    if (!studio.init(error)) throw Error(error);
+    studio.submit_data();
+    const double timeout = args.has("timeout") ? cli::parse_int(args.get("timeout"), "--timeout") : 600;
+    // Wait for the pipeline, with a progress line on stderr.
+    const auto t0 = std::chrono::steady_clock::now();
+    while (!studio.worker().wait_idle(0.5)) {
+      const WorkerStatus st = studio.worker().status();
+      std::fprintf(stderr, "\r%-60s", (st.activity + " " + std::to_string(int(st.fraction * 100)) + " %").c_str());
+      if (std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() > timeout)
+        throw Error("the computation did not finish within " + std::to_string(int(timeout)) + " s");
+    }
+    std::fprintf(stderr, "\r%-60s\r", "");
+    if (!studio.worker().status().error.empty())
+      std::fprintf(stderr, "pagor-studio: warning: %s\n", studio.worker().status().error.c_str());
+    // A few frames: ImGui sizes auto-fitted items over the first frames.
+    for (int i = 0; i < 3; ++i) studio.frame(w, h);
+    if (args.has("screenshot")) {
+      if (!studio.screenshot(args.get("screenshot"), w, h, error)) throw Error(error);
+      std::printf("wrote %s (%dx%d, %s)\n", args.get("screenshot").c_str(), w, h, gl.describe().c_str());
+    }
+    if (args.has("frames")) {
+      const int n = std::max(1, cli::parse_int(args.get("frames"), "--frames"));
+      const int uploads = studio.scene().cloud_uploads();
+      std::vector<double> ms;
+      for (int i = 0; i < n; ++i) {
+        studio.frame(w, h);
+        ms.push_back(studio.last_frame_ms());
+      }
+      std::sort(ms.begin(), ms.end());
+      std::printf("frame time at %dx%d over %d frames: median %.1f ms, min %.1f ms, max %.1f ms; "
+                  "cloud uploads during them: %d\n",
+                  w, h, n, ms[ms.size() / 2], ms.front(), ms.back(), studio.scene().cloud_uploads() - uploads);
+    }
+  }
+  ImGui::DestroyContext();
+  g_osmesa.destroy(ctx);
+  return rc;
+}
+
+int run_window(AppState state) {
+  glfwSetErrorCallback([](int code, const char* text) { std::fprintf(stderr, "GLFW error %d: %s\n", code, text); });
+  if (!glfwInit()) throw Error("cannot initialise GLFW (no display? use --headless)");
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+  GLFWwindow* window = glfwCreateWindow(state.width, state.height, "Pagor Studio", nullptr, nullptr);
+  if (!window) {
+    glfwTerminate();
+    throw Error("cannot open a window with OpenGL 3.3 core");
+  }
+  glfwMakeContextCurrent(window);
+  glfwSwapInterval(1);
+  Gl gl;
+  std::string error;
+  if (!gl.load(glfw_proc, error)) throw Error(error);
+  ImGui::CreateContext();
+  ImGui_ImplGlfw_InitForOpenGL(window, true);  // platform only: input, time, cursor
+  {
+    Studio studio(gl, std::move(state));
+    if (!studio.init(error)) throw Error(error);
+    studio.submit_data();
+    while (!glfwWindowShouldClose(window)) {
+      glfwPollEvents();
+      int w = 0, h = 0;
+      glfwGetFramebufferSize(window, &w, &h);
+      if (w <= 0 || h <= 0) continue;
+      ImGui_ImplGlfw_NewFrame();
+      studio.frame(w, h);
+      if (studio.state().want_screenshot) {
+        studio.state().want_screenshot = false;
+        const bool ok = studio.screenshot(studio.state().screenshot_path, w, h, error);
+        studio.state().message = ok ? "wrote " + studio.state().screenshot_path : error;
+        studio.state().message_is_error = !ok;
+      }
+      glfwSwapBuffers(window);
+    }
+  }
+  ImGui_ImplGlfw_Shutdown();
+  ImGui::DestroyContext();
+  glfwDestroyWindow(window);
+  glfwTerminate();
+  return 0;
+}
+
+}  // namespace
+}  // namespace pagor::studio
+
+int main(int argc, char** argv) {
+  using namespace pagor;
+  const std::vector<std::string> words(argv + 1, argv + argc);
+  const auto options = studio::studio_options();
+  for (const auto& w : words)
+    if (w == "--help" || w == "-h") {
+      std::printf("usage: pagor-studio [data] [--session S.json] [--headless --screenshot OUT.png]\n\noptions:\n%s",
+                  cli::format_options(options).c_str());
+      return 0;
+    }
+  try {
+    const cli::Args args(words, options);
+    studio::AppState state = studio::state_from_args(args);
+    return args.has("headless") ? studio::run_headless(args, std::move(state)) : studio::run_window(std::move(state));
+  } catch (const cli::UsageError& e) {
+    std::fprintf(stderr, "pagor-studio: usage error: %s\n", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "pagor-studio: error: %s\n", e.what());
+    return 1;
+  }
+}

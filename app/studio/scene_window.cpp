@@ -1,0 +1,252 @@
+// The 3D view window: the scene image, camera input, hover tooltips and a legend.
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "pagor/trim.hpp"
+#include "panels.hpp"
+
+namespace pagor::studio {
+namespace {
+
+constexpr float kLandmarkPickPx = 8.0f, kLinePickPx = 4.0f;
+
+Eigen::Vector3f apply(const Transform& T, const Eigen::Vector3d& p) {
+  return (T.block<3, 3>(0, 0) * p + T.block<3, 1>(0, 3)).cast<float>();
+}
+
+float segment_distance(const Eigen::Vector2f& m, const Eigen::Vector2f& a, const Eigen::Vector2f& b) {
+  const Eigen::Vector2f ab = b - a;
+  const float t = ab.squaredNorm() > 0 ? std::clamp((m - a).dot(ab) / ab.squaredNorm(), 0.0f, 1.0f) : 0.0f;
+  return (a + t * ab - m).norm();
+}
+
+void landmark_tooltip(const LandmarkSet& set, int index, bool source) {
+  const Landmark& lm = set.landmarks[static_cast<std::size_t>(index)];
+  ImGui::Text("%s landmark %d: %s (%s)", source ? "source" : "target", index,
+              set.classes[static_cast<std::size_t>(lm.class_index)].name.c_str(),
+              lm.kind == LandmarkKind::cluster ? "cluster" : "FPFH keypoint");
+  ImGui::Text("centroid (%.2f, %.2f, %.2f) m, %zu points", lm.centroid.x(), lm.centroid.y(), lm.centroid.z(),
+              lm.point_count);
+  if (lm.kind == LandmarkKind::cluster)
+    ImGui::Text("spread (std. dev.) %.2f / %.2f / %.2f m", std::sqrt(lm.covariance(0, 0)),
+                std::sqrt(lm.covariance(1, 1)), std::sqrt(lm.covariance(2, 2)));
+}
+
+void correspondence_tooltip(const Snapshot& s, int index, int level) {
+  const Correspondence& c = s.correspondences[static_cast<std::size_t>(index)];
+  ImGui::Text("correspondence %d: %s", index, s.source_landmarks.classes[static_cast<std::size_t>(c.class_index)].name.c_str());
+  ImGui::Text("source landmark %d -> target landmark %d, rank score %.2f", c.source, c.target, c.score);
+  if (s.ground_truth) {
+    const double r = (s.ground_truth->block<3, 3>(0, 0) * c.p + s.ground_truth->block<3, 1>(0, 3) - c.q).norm();
+    ImGui::Text("ground truth residual %.2f m: %s", r, r <= s.config.gnc.noise_bound ? "true inlier" : "outlier");
+  }
+  if (level < 0) return;
+  const auto& clique = s.levels[static_cast<std::size_t>(level)].clique;
+  const bool member = std::binary_search(clique.begin(), clique.end(), index);
+  std::vector<double> trims;
+  for (int v : clique) {
+    if (v == index) continue;
+    const Correspondence& o = s.correspondences[static_cast<std::size_t>(v)];
+    trims.push_back(trim_value(s.config.graph.trim, (c.p - o.p).norm(), (c.q - o.q).norm()));
+  }
+  std::sort(trims.begin(), trims.end());
+  ImGui::Text("level %d (eps %.3f): %s the clique", level, s.levels[static_cast<std::size_t>(level)].epsilon,
+              member ? "in" : "not in");
+  if (!trims.empty())
+    ImGui::Text("TRIM (%s) to the %zu clique members: min %.4f, median %.4f, max %.4f",
+                to_string(s.config.graph.trim), trims.size(), trims.front(), trims[trims.size() / 2], trims.back());
+}
+
+void legend_item(ImDrawList* dl, ImVec2& at, const Rgba& c, const char* text, bool line) {
+  const ImU32 col = IM_COL32(c[0], c[1], c[2], std::max<int>(c[3], 160));
+  if (line) dl->AddLine(ImVec2(at.x, at.y + 7), ImVec2(at.x + 16, at.y + 7), col, 2.0f);
+  else dl->AddCircleFilled(ImVec2(at.x + 8, at.y + 7), 5.0f, col);
+  dl->AddText(ImVec2(at.x + 22, at.y), IM_COL32(230, 230, 230, 255), text);
+  at.y += 17;
+}
+
+void legend(const Snapshot& s, const AppState& state, ImVec2 at) {
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  dl->AddRectFilled(ImVec2(at.x - 4, at.y - 4), ImVec2(at.x + 210, at.y + 92), IM_COL32(0, 0, 0, 150), 4.0f);
+  const bool gt = s.ground_truth.has_value();
+  legend_item(dl, at, Palette::clique, gt ? "clique, true inlier" : "clique correspondence", true);
+  if (gt) legend_item(dl, at, Palette::clique_outlier, "clique, outlier (ground truth)", true);
+  legend_item(dl, at, Palette::other, "other correspondences", true);
+  if (state.view.color == ColorMode::by_cloud) {
+    legend_item(dl, at, Palette::source, "source", false);
+    legend_item(dl, at, Palette::target, "target", false);
+  } else {
+    legend_item(dl, at, {255, 255, 255, 255}, "landmarks: class colours", false);
+  }
+}
+
+}  // namespace
+
+Transform shown_source_pose(const AppState& state, const Snapshot& s) {
+  switch (state.view.pose) {
+    case PoseShown::ground_truth:
+      if (s.ground_truth) return *s.ground_truth;
+      break;
+    case PoseShown::selected: {
+      const int level = shown_level(state.view, s.selected, static_cast<int>(s.levels.size()));
+      if (level >= 0 && s.levels[static_cast<std::size_t>(level)].pose.valid)
+        return s.levels[static_cast<std::size_t>(level)].pose.T_target_source;
+      break;
+    }
+    case PoseShown::identity: break;
+  }
+  return Transform::Identity();
+}
+
+void scene_window(UiContext& ui) {
+  AppState& state = ui.state;
+  const ImVec2 size = ImGui::GetContentRegionAvail();
+  const int w = std::max(1, static_cast<int>(size.x)), h = std::max(1, static_cast<int>(size.y));
+  const Snapshot* s = ui.snapshot;
+  if (!s || !s->target) {
+    ImGui::TextDisabled("nothing to show yet");
+    return;
+  }
+  if (!state.camera_fitted) {
+    // Fit to the central part of the target cloud (LiDAR scans have far, sparse outliers).
+    std::vector<float> xs, ys, zs;
+    for (const auto& p : s->target->points) {
+      xs.push_back(p.x());
+      ys.push_back(p.y());
+      zs.push_back(p.z());
+    }
+    const auto quantile = [](std::vector<float>& v, double q) {
+      const auto k = static_cast<std::ptrdiff_t>(q * static_cast<double>(v.size() - 1));
+      std::nth_element(v.begin(), v.begin() + k, v.end());
+      return v[static_cast<std::size_t>(k)];
+    };
+    state.camera.fit(Eigen::Vector3f(quantile(xs, 0.02), quantile(ys, 0.02), quantile(zs, 0.02)),
+                     Eigen::Vector3f(quantile(xs, 0.98), quantile(ys, 0.98), quantile(zs, 0.98)));
+    state.camera_fitted = true;
+  }
+  const Transform pose = shown_source_pose(state, *s);
+  ui.scene.update(*s, state.view, pose);
+  ui.scene.render(w, h, state.camera, state.view, pose);
+
+  const ImVec2 origin = ImGui::GetCursorScreenPos();
+  ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(ui.scene.texture())),
+               ImVec2(static_cast<float>(w), static_cast<float>(h)), ImVec2(0, 1), ImVec2(1, 0));
+  const bool hovered = ImGui::IsItemHovered();
+  legend(*s, state, ImVec2(origin.x + 10, origin.y + 10));
+  if (!hovered) return;
+
+  ImGuiIO& io = ImGui::GetIO();
+  if (ImGui::IsMouseDragging(ImGuiMouseButton_Left)) state.camera.orbit(io.MouseDelta.x, io.MouseDelta.y);
+  if (ImGui::IsMouseDragging(ImGuiMouseButton_Right) || ImGui::IsMouseDragging(ImGuiMouseButton_Middle))
+    state.camera.pan(io.MouseDelta.x, io.MouseDelta.y, static_cast<float>(h));
+  if (io.MouseWheel != 0) state.camera.zoom(io.MouseWheel);
+
+  // Hover: the nearest landmark within a few pixels, else the nearest correspondence line.
+  const Eigen::Vector2f mouse(io.MousePos.x - origin.x, io.MousePos.y - origin.y);
+  const Eigen::Matrix4f vp = state.camera.projection(static_cast<float>(w) / h) * state.camera.view();
+  float best = kLandmarkPickPx;
+  int best_index = -1;
+  bool best_source = false;
+  if (state.view.layers.landmarks) {
+    for (int side = 0; side < 2; ++side) {
+      const LandmarkSet& set = side == 0 ? s->source_landmarks : s->target_landmarks;
+      for (std::size_t i = 0; i < set.landmarks.size(); ++i) {
+        if (set.landmarks[i].kind != LandmarkKind::cluster) continue;
+        const Eigen::Vector3f p = side == 0 ? apply(pose, set.landmarks[i].centroid) : set.landmarks[i].centroid.cast<float>();
+        Eigen::Vector2f px;
+        if (!project_to_screen(vp, p, static_cast<float>(w), static_cast<float>(h), px)) continue;
+        const float d = (px - mouse).norm();
+        if (d < best) {
+          best = d;
+          best_index = static_cast<int>(i);
+          best_source = side == 0;
+        }
+      }
+    }
+  }
+  if (best_index >= 0) {
+    ImGui::BeginTooltip();
+    landmark_tooltip(best_source ? s->source_landmarks : s->target_landmarks, best_index, best_source);
+    ImGui::EndTooltip();
+    return;
+  }
+  const int level = shown_level(state.view, s->selected, static_cast<int>(s->levels.size()));
+  if (!state.view.layers.correspondences || level < 0) return;
+  const auto& clique = s->levels[static_cast<std::size_t>(level)].clique;
+  best = kLinePickPx;
+  for (std::size_t i = 0; i < s->correspondences.size(); ++i) {
+    const bool member = std::binary_search(clique.begin(), clique.end(), static_cast<int>(i));
+    if (!member && !state.view.layers.all_correspondences) continue;
+    Eigen::Vector2f a, b;
+    const Correspondence& c = s->correspondences[i];
+    if (!project_to_screen(vp, apply(pose, c.p), static_cast<float>(w), static_cast<float>(h), a) ||
+        !project_to_screen(vp, c.q.cast<float>(), static_cast<float>(w), static_cast<float>(h), b))
+      continue;
+    const float d = segment_distance(mouse, a, b);
+    if (d < best) {
+      best = d;
+      best_index = static_cast<int>(i);
+    }
+  }
+  if (best_index >= 0) {
+    ImGui::BeginTooltip();
+    correspondence_tooltip(*s, best_index, level);
+    ImGui::EndTooltip();
+  }
+}
+
+void status_bar(UiContext& ui) {
+  const WorkerStatus& st = ui.status;
+  if (st.busy) {
+    ImGui::ProgressBar(static_cast<float>(st.fraction), ImVec2(160, 0));
+    ImGui::SameLine();
+    ImGui::Text("%s ...", st.activity.empty() ? "working" : st.activity.c_str());
+  } else if (ui.snapshot) {
+    const Snapshot& s = *ui.snapshot;
+    std::string ran, times;
+    double total = 0;
+    for (int i = 0; i < kStageCount; ++i) {
+      const auto k = static_cast<std::size_t>(i);
+      if (!s.stage_ran[k]) continue;
+      ran += std::string(ran.empty() ? "" : ", ") + stage_name(static_cast<Stage>(i));
+      total += s.stage_ms[k];
+    }
+    ImGui::Text("ready | last run %.0f ms: %s", total, ran.empty() ? "nothing to recompute" : ran.c_str());
+    if (ImGui::IsItemHovered()) {
+      ImGui::BeginTooltip();
+      for (int i = 0; i < kStageCount; ++i)
+        ImGui::Text("%-18s %8.1f ms%s", stage_name(static_cast<Stage>(i)), s.stage_ms[static_cast<std::size_t>(i)],
+                    s.stage_ran[static_cast<std::size_t>(i)] ? "" : " (cached)");
+      ImGui::EndTooltip();
+    }
+  } else {
+    ImGui::TextDisabled("no data open");
+  }
+  ImGui::SameLine();
+  ImGui::TextDisabled("| frame %.1f ms", ui.frame_ms);
+  if (ui.snapshot && !ui.snapshot->warnings.empty()) {
+    ImGui::SameLine();
+    ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "| %zu warnings", ui.snapshot->warnings.size());
+    if (ImGui::IsItemHovered()) {
+      ImGui::BeginTooltip();
+      for (const auto& w : ui.snapshot->warnings) ImGui::TextUnformatted(w.c_str());
+      ImGui::EndTooltip();
+    }
+  }
+  const std::string& error = !st.error.empty() ? st.error : (ui.state.message_is_error ? ui.state.message : "");
+  if (!error.empty()) {
+    ImGui::SameLine();
+    ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.35f, 1.0f), "| error: %s", error.c_str());
+  } else if (!ui.state.message.empty()) {
+    ImGui::SameLine();
+    ImGui::TextDisabled("| %s", ui.state.message.c_str());
+  }
+}
+
+}  // namespace pagor::studio
