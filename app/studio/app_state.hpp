@@ -35,7 +35,8 @@ struct ViewState {
 };
 
 struct AppState {
-  PairSource data;
+  PairSource data;  ///< as the user wrote it; relative paths are taken from `base_dir`
+  std::string base_dir;  ///< directory of the loaded session file (empty: working directory)
   bool have_data = false;
   std::string pairs_file;                  ///< optional: steps through its pairs
   std::vector<std::pair<int, int>> pairs;  ///< read from pairs_file
@@ -57,9 +58,16 @@ struct AppState {
 /// Writes the state as a session file (schema pagor.session/1). Throws pagor::InputError.
 void save_session(const AppState& state, const std::string& path);
 
-/// Reads a session file into `state`. Relative data paths are taken from the session file's
-/// directory. Throws pagor::InputError or pagor::ConfigError naming the file and key.
+/// Reads a session file into `state`. Data paths are kept as written; relative ones are taken
+/// from the session file's directory (`base_dir`). Throws pagor::InputError or
+/// pagor::ConfigError naming the file and key.
 void load_session(const std::string& path, AppState& state);
+
+/// A path the user wrote, resolved against `base_dir` when relative.
+std::string resolve_path(const AppState& state, const std::string& path);
+
+/// `data` with its relative paths resolved against `base_dir`.
+PairSource resolved_data(const AppState& state);
 
 /// The level the view shows: `view.level` if valid, else the selected one (or -1).
 int shown_level(const ViewState& view, int selected, int levels);

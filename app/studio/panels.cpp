@@ -80,7 +80,7 @@ void data_panel(UiContext& ui) {
     ImGui::InputText("pairs file", &s.pairs_file);
     if (ImGui::Button("read pairs")) {
       try {
-        s.pairs = read_pairs_file(s.pairs_file);
+        s.pairs = read_pairs_file(resolve_path(s, s.pairs_file));
         s.pair_index = -1;
         set_message(s, "read " + std::to_string(s.pairs.size()) + " pairs", false);
       } catch (const Error& e) {

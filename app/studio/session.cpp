@@ -50,6 +50,18 @@ std::string resolve(const std::string& path, const std::filesystem::path& base) 
 
 }  // namespace
 
+std::string resolve_path(const AppState& s, const std::string& path) {
+  return resolve(path, std::filesystem::path(s.base_dir));
+}
+
+PairSource resolved_data(const AppState& s) {
+  const std::filesystem::path base(s.base_dir);
+  PairSource d = s.data;
+  for (std::string* p : {&d.kitti_root, &d.source, &d.source_labels, &d.target, &d.target_labels})
+    *p = resolve(*p, base);
+  return d;
+}
+
 int shown_level(const ViewState& view, int selected, int levels) {
   if (view.level >= 0 && view.level < levels) return view.level;
   return selected < levels ? selected : -1;
@@ -102,7 +114,7 @@ void load_session(const std::string& path, AppState& s) {
     PairSource src;
     if (kind == "kitti") {
       src.kind = PairSource::Kind::kitti;
-      src.kitti_root = resolve(get<std::string>(d, "kitti_root", where, ""), base);
+      src.kitti_root = get<std::string>(d, "kitti_root", where, "");
       src.sequence = get<std::string>(d, "sequence", where, "00");
       const auto pair = get<std::vector<int>>(d, "pair", where, {});
       if (pair.size() != 2) throw InputError(where + ".pair: expected [source, target] frame numbers");
@@ -110,10 +122,10 @@ void load_session(const std::string& path, AppState& s) {
       src.target_frame = pair[1];
     } else if (kind == "files") {
       src.kind = PairSource::Kind::files;
-      src.source = resolve(get<std::string>(d, "source", where, ""), base);
-      src.source_labels = resolve(get<std::string>(d, "source_labels", where, ""), base);
-      src.target = resolve(get<std::string>(d, "target", where, ""), base);
-      src.target_labels = resolve(get<std::string>(d, "target_labels", where, ""), base);
+      src.source = get<std::string>(d, "source", where, "");
+      src.source_labels = get<std::string>(d, "source_labels", where, "");
+      src.target = get<std::string>(d, "target", where, "");
+      src.target_labels = get<std::string>(d, "target_labels", where, "");
     } else if (kind == "synthetic") {
       src.kind = PairSource::Kind::synthetic;
       src.synthetic_seed = get<std::uint64_t>(d, "seed", where, 7);
@@ -123,11 +135,12 @@ void load_session(const std::string& path, AppState& s) {
     next.data = src;
     next.have_data = true;
   }
-  next.pairs_file = resolve(get<std::string>(j, "pairs_file", path, ""), base);
+  next.pairs_file = get<std::string>(j, "pairs_file", path, "");
+  next.base_dir = base.string();
   next.pairs.clear();
   next.pair_index = -1;
   if (!next.pairs_file.empty()) {
-    next.pairs = read_pairs_file(next.pairs_file);
+    next.pairs = read_pairs_file(resolve(next.pairs_file, base));
     for (std::size_t i = 0; i < next.pairs.size(); ++i)
       if (next.pairs[i] == std::make_pair(next.data.source_frame, next.data.target_frame))
         next.pair_index = static_cast<int>(i);

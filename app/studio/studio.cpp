@@ -57,7 +57,7 @@ bool Studio::init(std::string& error) {
 }
 
 void Studio::submit_data() {
-  if (state_.have_data) worker_.submit(state_.data, state_.config);
+  if (state_.have_data) worker_.submit(resolved_data(state_), state_.config);
 }
 
 void Studio::submit_config() { worker_.submit(std::nullopt, state_.config); }
