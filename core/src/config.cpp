@@ -108,6 +108,7 @@ void fields_of_clique(V& v, P& p) {
   v("support_tol", p.support_tol);
   v("seed", p.seed);
   v("warm_start_mix", p.warm_start_mix);
+  v("warm_start_penalty", p.warm_start_penalty);
   v("exact_max_nodes", p.exact_max_nodes);
 }
 template <class V, class P>
@@ -429,6 +430,8 @@ void validate(const Config& c, const std::string& origin) {
   check(ctx, c.clique.max_line_search >= 1, "clique.max_line_search", "must be >= 1");
   check(ctx, c.clique.eps > 0, "clique.eps", "must be > 0");
   check(ctx, c.clique.warm_start_mix >= 0, "clique.warm_start_mix", "must be >= 0");
+  check(ctx, c.clique.warm_start_penalty >= 0 && c.clique.warm_start_penalty <= 1,
+        "clique.warm_start_penalty", "must be in [0, 1]");
   check(ctx, c.clique.support_tol >= 0 && c.clique.support_tol < 1, "clique.support_tol",
         "must be in [0, 1)");
   check(ctx, c.clique.exact_max_nodes >= 1, "clique.exact_max_nodes", "must be >= 1");

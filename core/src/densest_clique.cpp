@@ -21,6 +21,7 @@ struct LevelGraph {
   std::vector<std::size_t> offsets;  // CSR over local ids, neighbours sorted
   std::vector<int> neighbors;
   std::vector<double> weights;
+  bool binary = true;  // all weights 1: M u = C u
 
   std::size_t size() const { return ids.size(); }
   bool adjacent(int a, int b) const {
@@ -40,7 +41,7 @@ std::vector<int> degrees(const PyramidGraph& g, int level) {
 
 // A clique grown greedily (by degree) from each of the highest-degree vertices: a lower bound.
 std::vector<int> greedy_clique(const PyramidGraph& g, int level, const std::vector<int>& deg) {
-  constexpr int kStarts = 32;
+  constexpr int kStarts = 32;  // highest-degree vertices to grow from
   std::vector<int> order(static_cast<std::size_t>(g.vertices));
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
@@ -99,6 +100,7 @@ std::vector<int> core(const PyramidGraph& g, int level, std::vector<int> deg, in
 LevelGraph induce(const PyramidGraph& g, int level, const std::vector<int>& keep) {
   LevelGraph s;
   s.ids = keep;
+  s.binary = g.affinity == AffinityKind::binary;
   std::vector<int> local(static_cast<std::size_t>(g.vertices), -1);
   for (std::size_t i = 0; i < keep.size(); ++i) local[static_cast<std::size_t>(keep[i])] = static_cast<int>(i);
   s.offsets.assign(1, 0);
@@ -115,19 +117,45 @@ LevelGraph induce(const PyramidGraph& g, int level, const std::vector<int>& keep
   return s;
 }
 
-// Products the relaxation needs, in one pass over the edges:
-//   Mu = M u (affinities, unit diagonal), Cu = C u (adjacency, unit diagonal).
+// Products the relaxation needs: Mu = M u (affinities, unit diagonal), Cu = C u (adjacency, unit
+// diagonal). When u has few non-zeros (late in the solve, and after a warm start), the products
+// are scattered from the support instead of gathered over every edge (the graph is symmetric).
 void products(const LevelGraph& g, const std::vector<double>& u, std::vector<double>& Mu,
               std::vector<double>& Cu) {
-  for (std::size_t v = 0; v < g.size(); ++v) {
-    double m = u[v], c = u[v];
-    for (std::size_t e = g.offsets[v]; e < g.offsets[v + 1]; ++e) {
-      const double un = u[static_cast<std::size_t>(g.neighbors[e])];
-      c += un;
-      m += g.weights[e] * un;
+  std::size_t support = 0;
+  for (double x : u) support += x != 0.0;
+  const bool scatter = support * 4 < g.size();
+  if (scatter) {
+    std::fill(Cu.begin(), Cu.end(), 0.0);
+    if (!g.binary) std::fill(Mu.begin(), Mu.end(), 0.0);
+    for (std::size_t v = 0; v < g.size(); ++v) {
+      const double uv = u[v];
+      if (uv == 0.0) continue;
+      Cu[v] += uv;
+      if (!g.binary) Mu[v] += uv;
+      for (std::size_t e = g.offsets[v]; e < g.offsets[v + 1]; ++e) {
+        const auto w = static_cast<std::size_t>(g.neighbors[e]);
+        Cu[w] += uv;
+        if (!g.binary) Mu[w] += g.weights[e] * uv;
+      }
     }
-    Mu[v] = m;
+    if (g.binary) Mu = Cu;
+    return;
+  }
+  for (std::size_t v = 0; v < g.size(); ++v) {
+    double c = u[v];
+    for (std::size_t e = g.offsets[v]; e < g.offsets[v + 1]; ++e) c += u[static_cast<std::size_t>(g.neighbors[e])];
     Cu[v] = c;
+  }
+  if (g.binary) {
+    Mu = Cu;
+    return;
+  }
+  for (std::size_t v = 0; v < g.size(); ++v) {
+    double m = u[v];
+    for (std::size_t e = g.offsets[v]; e < g.offsets[v + 1]; ++e)
+      m += g.weights[e] * u[static_cast<std::size_t>(g.neighbors[e])];
+    Mu[v] = m;
   }
 }
 
@@ -184,11 +212,11 @@ std::vector<int> round_to_clique(const LevelGraph& g, const std::vector<double>&
 constexpr double kMaxStep = 1e6;
 
 // The relaxation proper on a level graph, from a non-negative unit vector u.
-std::vector<int> relax(const LevelGraph& g, std::vector<double>& u, const CliqueParams& p,
+std::vector<int> relax(const LevelGraph& g, std::vector<double>& u, double d, const CliqueParams& p,
                        CliqueResult& r) {
   const std::size_t n = g.size();
   std::vector<double> Mu(n), Cu(n), grad(n), cand(n), Mu_c(n), Cu_c(n);
-  double d = 0.0, alpha = 1.0;
+  double alpha = 1.0;
   products(g, u, Mu, Cu);
   double sum = std::accumulate(u.begin(), u.end(), 0.0);
   // F(u) = u^T M_d u with M_d u = M u - d (sum(u) 1 - C u).
@@ -200,7 +228,7 @@ std::vector<int> relax(const LevelGraph& g, std::vector<double>& u, const Clique
     // Inner loop: projected gradient ascent with backtracking; the step grows after a success.
     penalised(Mu, Cu, sum, grad);
     double F = dot(u, grad);
-    alpha = 1.0;  // a new d rescales the gradient
+    alpha = 1.0 / (1.0 + d);  // the gradient grows with d
     for (int inner = 0; inner < p.max_inner_iterations; ++inner) {
       bool accepted = false;
       double F_new = F;
@@ -265,6 +293,7 @@ std::vector<int> relax(const LevelGraph& g, std::vector<double>& u, const Clique
     if (offenders == 0) break;  // the support is a clique
     d += std::max(increment / offenders, p.eps);
   }
+  r.penalty = d;
   return round_to_clique(g, u, Cu);
 }
 
@@ -287,7 +316,7 @@ bool is_clique(const PyramidGraph& g, int level, const std::vector<int>& vertice
 }
 
 CliqueResult solve_clipper(const PyramidGraph& g, int level, const std::vector<double>& u0,
-                           const CliqueParams& p, const std::vector<int>& known_clique) {
+                           const CliqueParams& p, const std::vector<int>& known_clique, double d0) {
   const auto t0 = Clock::now();
   CliqueResult r;
   r.level = level;
@@ -323,7 +352,7 @@ CliqueResult solve_clipper(const PyramidGraph& g, int level, const std::vector<d
     project(u);
   }
 
-  const std::vector<int> local = sub.size() > 0 ? relax(sub, u, p, r) : std::vector<int>{};
+  const std::vector<int> local = sub.size() > 0 ? relax(sub, u, d0, p, r) : std::vector<int>{};
   for (int v : local) r.vertices.push_back(sub.ids[static_cast<std::size_t>(v)]);
   std::sort(r.vertices.begin(), r.vertices.end());
   if (greedy.size() > r.vertices.size()) r.vertices = greedy;  // never worse than the lower bound
@@ -418,7 +447,8 @@ std::vector<CliqueResult> solve_pyramid(const PyramidGraph& g, const CliqueParam
         // Alg. 1: level l starts where level l-1 ended. Its edges are a subset of level l's, so its
         // clique is also a clique here: a lower bound for pruning.
         if (l == 0) out.push_back(solve_clipper(g, l, start, p));
-        else out.push_back(solve_clipper(g, l, out.back().u, p, out.back().vertices));
+        else out.push_back(solve_clipper(g, l, out.back().u, p, out.back().vertices,
+                                         p.warm_start_penalty * out.back().penalty));
         break;
     }
   }

@@ -1,6 +1,7 @@
 #include "pagor/pipeline.hpp"
 
 #include <chrono>
+#include <thread>
 
 #include "pagor/errors.hpp"
 
@@ -97,8 +98,21 @@ void Pipeline::run(const ProgressFn& progress, const std::atomic<bool>* cancel) 
 void Pipeline::run_stage(Stage stage) {
   switch (stage) {
     case Stage::landmarks:
-      source_landmarks_ = extract_landmarks(source_, config_.label_scheme, config_.landmarks);
-      target_landmarks_ = extract_landmarks(target_, config_.label_scheme, config_.landmarks);
+      if (threads_ > 1) {  // the two clouds are independent
+        std::thread other([this] {
+          target_landmarks_ = extract_landmarks(target_, config_.label_scheme, config_.landmarks);
+        });
+        try {
+          source_landmarks_ = extract_landmarks(source_, config_.label_scheme, config_.landmarks);
+        } catch (...) {
+          other.join();
+          throw;
+        }
+        other.join();
+      } else {
+        source_landmarks_ = extract_landmarks(source_, config_.label_scheme, config_.landmarks);
+        target_landmarks_ = extract_landmarks(target_, config_.label_scheme, config_.landmarks);
+      }
       break;
     case Stage::correspondences:
       correspondences_ = match_landmarks(source_landmarks_, target_landmarks_, config_.correspondences);

@@ -1,32 +1,28 @@
 #include "pagor/verification.hpp"
 
-#include <pcl/kdtree/kdtree_flann.h>
-#include <pcl/point_types.h>
-
 #include <chrono>
 #include <cmath>
 #include <thread>
 
+#include "pagor/kdtree.hpp"
 #include "pagor/voxel_grid.hpp"
 
 namespace pagor {
 
 struct Verifier::Impl {
   std::vector<Eigen::Vector3f> source, target;
-  pcl::KdTreeFLANN<pcl::PointXYZ> tree;
+  KdTree3f tree;
   double build_ms = 0.0;
 
-  // Nearest-neighbour distance of every source point with index in [begin, end), moved by T.
-  void nearest(const Transform& T, std::size_t begin, std::size_t end, float* out) const {
+  // Distance from every source point with index in [begin, end), moved by T, to its nearest
+  // target point; +inf when none is closer than `bound` [m] (the search is pruned by it).
+  void nearest(const Transform& T, std::size_t begin, std::size_t end, float bound, float* out) const {
     const Eigen::Matrix3f R = T.block<3, 3>(0, 0).cast<float>();
     const Eigen::Vector3f t = T.block<3, 1>(0, 3).cast<float>();
-    std::vector<int> k(1);
-    std::vector<float> d2(1);
+    const float bound_sq = bound * bound;
     for (std::size_t i = begin; i < end; ++i) {
-      const Eigen::Vector3f p = R * source[i] + t;
-      out[i] = tree.nearestKSearch(pcl::PointXYZ(p.x(), p.y(), p.z()), 1, k, d2) == 1
-                   ? std::sqrt(d2[0])
-                   : HUGE_VALF;
+      const auto [index, d2] = tree.nearest(R * source[i] + t, bound_sq);
+      out[i] = index >= 0 ? std::sqrt(d2) : HUGE_VALF;
     }
   }
 };
@@ -36,13 +32,7 @@ Verifier::Verifier(const PointCloud& source, const PointCloud& target, double vo
   const auto t0 = std::chrono::steady_clock::now();
   impl_->source = voxel_downsample(source.points, voxel_size).points;
   impl_->target = voxel_downsample(target.points, voxel_size).points;
-  pcl::PointCloud<pcl::PointXYZ>::Ptr cloud(new pcl::PointCloud<pcl::PointXYZ>);
-  cloud->resize(impl_->target.size());
-  for (std::size_t i = 0; i < impl_->target.size(); ++i) {
-    const auto& p = impl_->target[i];
-    (*cloud)[i] = pcl::PointXYZ(p.x(), p.y(), p.z());
-  }
-  if (!cloud->empty()) impl_->tree.setInputCloud(cloud);
+  impl_->tree = KdTree3f(impl_->target);
   impl_->build_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
@@ -57,23 +47,25 @@ double Verifier::build_time_ms() const { return impl_->build_ms; }
 
 std::vector<float> Verifier::distances(const Transform& T) const {
   std::vector<float> d(impl_->source.size(), HUGE_VALF);
-  if (!impl_->target.empty()) impl_->nearest(T, 0, d.size(), d.data());
+  if (!impl_->target.empty()) impl_->nearest(T, 0, d.size(), HUGE_VALF, d.data());
   return d;
 }
 
 double Verifier::score(const Transform& T, double mu, ScoreKind kind, int threads) const {
   const std::size_t n = impl_->source.size();
   std::vector<float> d(n, HUGE_VALF);
+  // Truncated and trimmed scores only need neighbours closer than mu.
+  const float bound = kind == ScoreKind::nearest ? HUGE_VALF : static_cast<float>(mu);
   if (!impl_->target.empty()) {
     threads = std::max(1, std::min<int>(threads, static_cast<int>(n / 1024) + 1));
     if (threads == 1) {
-      impl_->nearest(T, 0, n, d.data());
+      impl_->nearest(T, 0, n, bound, d.data());
     } else {
       std::vector<std::thread> pool;
       for (int k = 0; k < threads; ++k)
         pool.emplace_back([&, k] {
           impl_->nearest(T, n * static_cast<std::size_t>(k) / static_cast<std::size_t>(threads),
-                         n * static_cast<std::size_t>(k + 1) / static_cast<std::size_t>(threads), d.data());
+                         n * static_cast<std::size_t>(k + 1) / static_cast<std::size_t>(threads), bound, d.data());
         });
       for (auto& t : pool) t.join();
     }
@@ -83,7 +75,7 @@ double Verifier::score(const Transform& T, double mu, ScoreKind kind, int thread
     switch (kind) {
       case ScoreKind::truncated: D += std::min<double>(x, mu); break;
       case ScoreKind::trimmed: D += x < mu ? x : 0.0; break;
-      case ScoreKind::nearest: D += std::isfinite(x) ? x : mu; break;
+      case ScoreKind::nearest: D += x; break;
     }
   }
   return D;

@@ -84,6 +84,9 @@ struct CliqueParams {
   double support_tol = 1e-6;      ///< entries below this fraction of the largest count as zero
   std::uint64_t seed = 42;        ///< seed of the initial vector
   double warm_start_mix = 0.05;   ///< cascaded: weight of the random start added to a warm start
+  /// cascaded: a warm-started level begins with this fraction of the previous level's final
+  /// penalty d (1: continue where the previous level stopped; 0: from d = 0).
+  double warm_start_penalty = 1.0;
   long exact_max_nodes = 20000000;  ///< exact: branch-and-bound node budget
 };
 

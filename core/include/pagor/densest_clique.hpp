@@ -21,15 +21,20 @@ struct CliqueResult {
   std::vector<double> u;      ///< final relaxation vector (empty for the exact solver)
   int gradient_steps = 0;     ///< accepted and rejected gradient steps, over all penalties
   int penalty_updates = 0;    ///< outer iterations (increases of d)
+  double penalty = 0.0;       ///< final penalty d
   bool optimal = false;       ///< exact solver: whether the search finished within its budget
   double time_ms = 0.0;       ///< wall time [ms]
 };
 
 /// CLIPPER relaxation on level `level` from `u0` (any non-negative vector of the graph's size; it
 /// is normalised; an all-zero or empty one means the seeded random start). With `params.prune`,
-/// `known_clique` (if it is a clique on this level) tightens the lower bound used for pruning.
+/// the relaxation runs on the k-core that can hold a clique as large as the larger of a greedy
+/// clique and `known_clique` (if it is a clique on this level), and the answer is never smaller
+/// than that clique.
+/// `d0` is the initial penalty (a warm start may carry part of the previous level's).
 CliqueResult solve_clipper(const PyramidGraph& graph, int level, const std::vector<double>& u0,
-                           const CliqueParams& params, const std::vector<int>& known_clique = {});
+                           const CliqueParams& params, const std::vector<int>& known_clique = {},
+                           double d0 = 0.0);
 
 /// The seeded random start of the relaxation (uniform in (0, 1], normalised).
 std::vector<double> random_start(int size, std::uint64_t seed);
