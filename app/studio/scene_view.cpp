@@ -168,7 +168,7 @@ void SceneView::update(const Snapshot& s, const ViewState& view, const Transform
         if (pass == 1 && !in_clique[i]) continue;
         Rgba color = Palette::other;
         if (in_clique[i])
-          color = s.ground_truth && !true_inlier(c, *s.ground_truth, s.config.gnc.noise_bound)
+          color = s.ground_truth && !true_inlier(c, *s.ground_truth, s.config.evaluation.max_translation_error)
                       ? Palette::clique_outlier
                       : Palette::clique;
         push(lines, apply(pose, c.p), color);

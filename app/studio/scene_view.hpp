@@ -41,7 +41,9 @@ struct Palette {
   static constexpr Rgba background{22, 24, 28, 255};
 };
 
-/// Whether a correspondence agrees with the ground truth (its residual within the GNC bound).
+/// Whether a correspondence agrees with the ground truth: its residual under T_gt is within
+/// `bound` [m] (the studio uses the success criterion's translation tolerance, as KITTI's ground
+/// truth itself is only good to about a metre).
 bool true_inlier(const Correspondence& c, const Transform& T_gt, double bound);
 
 class SceneView {

@@ -44,7 +44,9 @@ void correspondence_tooltip(const Snapshot& s, int index, int level) {
   ImGui::Text("source landmark %d -> target landmark %d, rank score %.2f", c.source, c.target, c.score);
   if (s.ground_truth) {
     const double r = (s.ground_truth->block<3, 3>(0, 0) * c.p + s.ground_truth->block<3, 1>(0, 3) - c.q).norm();
-    ImGui::Text("ground truth residual %.2f m: %s", r, r <= s.config.gnc.noise_bound ? "true inlier" : "outlier");
+    ImGui::Text("ground truth residual %.2f m: %s (tolerance %.1f m)", r,
+                r <= s.config.evaluation.max_translation_error ? "true inlier" : "outlier",
+                s.config.evaluation.max_translation_error);
   }
   if (level < 0) return;
   const auto& clique = s.levels[static_cast<std::size_t>(level)].clique;
