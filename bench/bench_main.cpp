@@ -1,7 +1,8 @@
 // pagor_bench: the benchmark suite. Medians over repeated runs; comparisons are ratios measured in
 // the same run. Never asserts anything about time: the tests do the correctness.
 //
-//   build/bench/pagor_bench [--kitti-root DIR] [--reps N] [--only graph|clique|gnc|verification|e2e|studio]
+//   build/bench/pagor_bench [--kitti-root DIR] [--reps N] [--only
+//   graph|clique|gnc|verification|e2e|studio]
 
 #include <Eigen/Geometry>
 #include <cmath>
@@ -27,7 +28,8 @@ namespace {
 int g_reps = 15;
 
 void bench_graph() {
-  std::printf("\n## 1. Pyramid graph, k = 4 levels (ratio TRIM, default thresholds), all-to-all scene\n");
+  std::printf(
+      "\n## 1. Pyramid graph, k = 4 levels (ratio TRIM, default thresholds), all-to-all scene\n");
   const std::vector<int> w = {8, 10, 12, 12, 12, 14, 12};
   row({"m", "edges@k", "1 thread", "2 threads", "speed-up", "peak [MB]", "dense [MB]"}, w);
   GraphParams gp;
@@ -39,16 +41,23 @@ void bench_graph() {
     PyramidGraph g;
     const Timing one = measure([&] { g = build_pyramid_graph(c, gp, 1); }, m >= 2000 ? 5 : g_reps);
     const Timing two = measure([&] { g = build_pyramid_graph(c, gp, 2); }, m >= 2000 ? 5 : g_reps);
-    const double peak = peak_memory_mb([&] { const auto h = build_pyramid_graph(c, gp, 1); (void)h; });
-    const double dense = 4.0 * c.size() * c.size() * sizeof(double) / 1e6;  // an m x m double matrix per level
-    row({std::to_string(c.size()), std::to_string(g.edges_at_level.back()), fmt(one.median(), 3) + " ms",
-         fmt(two.median(), 3) + " ms", fmt(one.median() / two.median()) + "x", fmt(peak, 1), fmt(dense, 0)},
+    const double peak = peak_memory_mb([&] {
+      const auto h = build_pyramid_graph(c, gp, 1);
+      (void)h;
+    });
+    const double dense =
+        4.0 * c.size() * c.size() * sizeof(double) / 1e6;  // an m x m double matrix per level
+    row({std::to_string(c.size()), std::to_string(g.edges_at_level.back()),
+         fmt(one.median(), 3) + " ms", fmt(two.median(), 3) + " ms",
+         fmt(one.median() / two.median()) + "x", fmt(peak, 1), fmt(dense, 0)},
         w);
     if (m == 100) t100 = one.median();
     if (previous_m) {
-      growth += "  m " + std::to_string(previous_m) + " -> " + std::to_string(c.size()) + ": time x" +
-                fmt(one.median() / previous_t, 1) + " (m^" +
-                fmt(std::log(one.median() / previous_t) / std::log(double(c.size()) / previous_m), 2) + ")\n";
+      growth +=
+          "  m " + std::to_string(previous_m) + " -> " + std::to_string(c.size()) + ": time x" +
+          fmt(one.median() / previous_t, 1) + " (m^" +
+          fmt(std::log(one.median() / previous_t) / std::log(double(c.size()) / previous_m), 2) +
+          ")\n";
     }
     previous_t = one.median();
     previous_m = static_cast<int>(c.size());
@@ -58,9 +67,13 @@ void bench_graph() {
 }
 
 void bench_clique() {
-  std::printf("\n## 2. Densest clique, 4 levels: cascaded (warm start) vs independent (same random start)\n");
+  std::printf(
+      "\n## 2. Densest clique, 4 levels: cascaded (warm start) vs independent (same random "
+      "start)\n");
   const std::vector<int> w = {8, 12, 12, 10, 12, 12, 10, 18};
-  row({"m", "cascaded", "independent", "ratio", "steps casc.", "steps indep.", "sizes", "exact (level 0)"}, w);
+  row({"m", "cascaded", "independent", "ratio", "steps casc.", "steps indep.", "sizes",
+       "exact (level 0)"},
+      w);
   GraphParams gp;
   for (int m : {500, 1000, 2000}) {
     const auto c = all_to_all_scene(m, 0.05, 2);
@@ -85,14 +98,21 @@ void bench_clique() {
     exact.exact_max_nodes = 2000000;
     CliqueResult e;
     const Timing te = measure([&] { e = exact_max_clique(g, 0, exact); }, 1, 0);
-    const std::string exact_text = e.optimal ? fmt(te.median(), 1) + " ms, " + (e.vertices.size() == a[0].vertices.size() ? "same" : "differs")
-                                             : "budget hit";
+    const std::string exact_text =
+        e.optimal ? fmt(te.median(), 1) + " ms, " +
+                        (e.vertices.size() == a[0].vertices.size() ? "same" : "differs")
+                  : "budget hit";
     row({std::to_string(c.size()), fmt(ta.median(), 3) + " ms", fmt(tb.median(), 3) + " ms",
          fmt(tb.median() / ta.median()) + "x", std::to_string(sa), std::to_string(sb),
-         agree ? "same sets" : same_sizes ? "same sizes" : "differ", exact_text},
+         agree        ? "same sets"
+         : same_sizes ? "same sizes"
+                      : "differ",
+         exact_text},
         w);
-    std::printf("         clique sizes per level: cascaded %s, independent %s%s\n", sizes_a.c_str(), sizes_b.c_str(),
-                agree ? "" : " (equal-size cliques differ in members: ties between maximum cliques)");
+    std::printf(
+        "         clique sizes per level: cascaded %s, independent %s%s\n", sizes_a.c_str(),
+        sizes_b.c_str(),
+        agree ? "" : " (equal-size cliques differ in members: ties between maximum cliques)");
   }
   // The same without k-core pruning: the relaxation alone, as in CLIPPER.
   std::printf("without k-core pruning (relaxation on every vertex):\n");
@@ -127,9 +147,10 @@ void bench_gnc() {
     std::vector<Eigen::Vector3d> p, q;
     for (int i = 0; i < n; ++i) {
       p.emplace_back(coord(rng), coord(rng), coord(rng) / 10);
-      q.push_back(i < n * 4 / 5 ? Eigen::Vector3d(T.block<3, 3>(0, 0) * p.back() + T.block<3, 1>(0, 3) +
-                                                  Eigen::Vector3d(noise(rng), noise(rng), noise(rng)))
-                                : Eigen::Vector3d(coord(rng), coord(rng), 0));
+      q.push_back(i < n * 4 / 5
+                      ? Eigen::Vector3d(T.block<3, 3>(0, 0) * p.back() + T.block<3, 1>(0, 3) +
+                                        Eigen::Vector3d(noise(rng), noise(rng), noise(rng)))
+                      : Eigen::Vector3d(coord(rng), coord(rng), 0));
     }
     GncParams se3, se2;
     se2.model = PoseModel::se2;
@@ -139,7 +160,8 @@ void bench_gnc() {
   }
 }
 
-std::optional<std::pair<LoadedCloud, LoadedCloud>> kitti_pair(const std::string& root, int s, int t) {
+std::optional<std::pair<LoadedCloud, LoadedCloud>> kitti_pair(const std::string& root, int s,
+                                                              int t) {
   try {
     const KittiSequence seq(root, "00");
     return std::make_pair(seq.load_frame(s), seq.load_frame(t));
@@ -166,20 +188,24 @@ void bench_verification(const std::string& root) {
   row({"voxel [m]", "points", "prepare", "score x4 (1t)", "score x4 (2t)", "speed-up"}, w);
   for (double voxel : {0.25, 0.5, 1.0}) {
     std::optional<Verifier> v;
-    const Timing prep = measure([&] { v.emplace(pair->first.cloud, pair->second.cloud, voxel); }, 5);
+    const Timing prep =
+        measure([&] { v.emplace(pair->first.cloud, pair->second.cloud, voxel); }, 5);
     VerificationParams vp;
     const Timing one = measure([&] { verify_candidates(*v, candidates, vp, 1); }, g_reps);
     const Timing two = measure([&] { verify_candidates(*v, candidates, vp, 2); }, g_reps);
     row({fmt(voxel), std::to_string(v->source_points().size()), fmt(prep.median(), 2) + " ms",
-         fmt(one.median(), 2) + " ms", fmt(two.median(), 2) + " ms", fmt(one.median() / two.median()) + "x"},
+         fmt(one.median(), 2) + " ms", fmt(two.median(), 2) + " ms",
+         fmt(one.median() / two.median()) + "x"},
         w);
   }
 }
 
 void bench_end_to_end(const std::string& root) {
-  std::printf("\n## 5. End to end per KITTI pair (clouds in memory -> selected pose), by stage [ms]\n");
-  const Stage stages[] = {Stage::landmarks, Stage::correspondences, Stage::graph, Stage::clique,
-                          Stage::pose, Stage::verification_prep, Stage::verification};
+  std::printf(
+      "\n## 5. End to end per KITTI pair (clouds in memory -> selected pose), by stage [ms]\n");
+  const Stage stages[] = {
+      Stage::landmarks, Stage::correspondences,   Stage::graph,       Stage::clique,
+      Stage::pose,      Stage::verification_prep, Stage::verification};
   std::vector<int> w = {10, 8};
   std::vector<std::string> head = {"pair", "threads"};
   for (Stage s : stages) {
@@ -200,10 +226,12 @@ void bench_end_to_end(const std::string& root) {
             Pipeline p(default_config(), threads);
             p.set_input(pair->first.cloud, pair->second.cloud);
             p.run();
-            for (std::size_t i = 0; i < std::size(stages); ++i) per[i].push_back(p.time_ms(stages[i]));
+            for (std::size_t i = 0; i < std::size(stages); ++i)
+              per[i].push_back(p.time_ms(stages[i]));
           },
           std::max(3, g_reps / 2));
-      std::vector<std::string> cells = {std::to_string(s) + "->" + std::to_string(t), std::to_string(threads)};
+      std::vector<std::string> cells = {std::to_string(s) + "->" + std::to_string(t),
+                                        std::to_string(threads)};
       for (auto& v : per) cells.push_back(fmt(Timing{v}.median(), 1));
       cells.push_back(fmt(total.median(), 1));
       row(cells, w);
@@ -214,7 +242,8 @@ void bench_end_to_end(const std::string& root) {
 }
 
 void bench_studio(const std::string& root) {
-  std::printf("\n## 6. Studio re-run latency on KITTI 20 -> 30 (pipeline with caching, 1 thread)\n");
+  std::printf(
+      "\n## 6. Studio re-run latency on KITTI 20 -> 30 (pipeline with caching, 1 thread)\n");
   const auto pair = kitti_pair(root, 20, 30);
   if (!pair) return;
   Pipeline p(default_config(), 1);
@@ -237,7 +266,8 @@ void bench_studio(const std::string& root) {
   };
   rerun("mu", [&](Config& c) { c.verification.mu = (++k % 2) ? 1.2 : 1.0; });
   rerun("one threshold", [&](Config& c) { c.graph.thresholds[1] = (++k % 2) ? 0.05 : 0.04; });
-  rerun("clustering (car tolerance)", [&](Config& c) { c.landmarks.classes[0].cluster_tolerance = (++k % 2) ? 0.55 : 0.5; });
+  rerun("clustering (car tolerance)",
+        [&](Config& c) { c.landmarks.classes[0].cluster_tolerance = (++k % 2) ? 0.55 : 0.5; });
 }
 
 }  // namespace
@@ -246,9 +276,12 @@ int main(int argc, char** argv) {
   std::string root = PAGOR_DEFAULT_KITTI_DIR, only;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i];
-    if (a == "--kitti-root") root = argv[i + 1];
-    else if (a == "--reps") g_reps = std::max(1, std::atoi(argv[i + 1]));
-    else if (a == "--only") only = argv[i + 1];
+    if (a == "--kitti-root")
+      root = argv[i + 1];
+    else if (a == "--reps")
+      g_reps = std::max(1, std::atoi(argv[i + 1]));
+    else if (a == "--only")
+      only = argv[i + 1];
     else {
       std::fprintf(stderr, "usage: pagor_bench [--kitti-root DIR] [--reps N] [--only SECTION]\n");
       return 2;

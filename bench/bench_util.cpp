@@ -15,10 +15,14 @@ namespace pagor::bench {
 double Timing::median() const {
   std::vector<double> v = runs;
   std::sort(v.begin(), v.end());
-  return v.empty() ? 0.0 : (v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]));
+  return v.empty()
+             ? 0.0
+             : (v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]));
 }
 
-double Timing::min() const { return runs.empty() ? 0.0 : *std::min_element(runs.begin(), runs.end()); }
+double Timing::min() const {
+  return runs.empty() ? 0.0 : *std::min_element(runs.begin(), runs.end());
+}
 
 Timing measure(const std::function<void()>& f, int reps, int warmup) {
   for (int i = 0; i < warmup; ++i) f();
@@ -26,7 +30,8 @@ Timing measure(const std::function<void()>& f, int reps, int warmup) {
   for (int i = 0; i < reps; ++i) {
     const auto t0 = std::chrono::steady_clock::now();
     f();
-    t.runs.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+    t.runs.push_back(
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
   }
   return t;
 }
@@ -73,7 +78,8 @@ std::vector<Correspondence> all_to_all_scene(int m, double noise, std::uint64_t 
   T.block<3, 3>(0, 0) = Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitZ()).toRotationMatrix();
   T.block<3, 1>(0, 3) = Eigen::Vector3d(12.0, -3.0, 0.2);
   // n landmarks per class per scan give n^2 correspondences per class.
-  const int n = std::max(2, static_cast<int>(std::lround(std::sqrt(static_cast<double>(m) / classes))));
+  const int n =
+      std::max(2, static_cast<int>(std::lround(std::sqrt(static_cast<double>(m) / classes))));
   std::vector<Correspondence> out;
   int source_id = 0, target_id = 0;
   for (int c = 0; c < classes; ++c) {
@@ -81,7 +87,8 @@ std::vector<Correspondence> all_to_all_scene(int m, double noise, std::uint64_t 
     for (int i = 0; i < n; ++i) src.emplace_back(coord(rng), coord(rng), height(rng));
     for (int i = 0; i < n; ++i) {
       if (i < n / 2) {  // seen by both
-        const Eigen::Vector3d q = T.block<3, 3>(0, 0) * src[static_cast<std::size_t>(i)] + T.block<3, 1>(0, 3);
+        const Eigen::Vector3d q =
+            T.block<3, 3>(0, 0) * src[static_cast<std::size_t>(i)] + T.block<3, 1>(0, 3);
         tgt.push_back(q + Eigen::Vector3d(jitter(rng), jitter(rng), jitter(rng)));
       } else {
         tgt.emplace_back(coord(rng), coord(rng), height(rng));
@@ -109,7 +116,8 @@ void row(const std::vector<std::string>& cells, const std::vector<int>& widths) 
   for (std::size_t i = 0; i < cells.size(); ++i) {
     std::string c = cells[i];
     const int w = i < widths.size() ? widths[i] : 12;
-    if (static_cast<int>(c.size()) < w) c = (i == 0 ? c + std::string(w - c.size(), ' ') : std::string(w - c.size(), ' ') + c);
+    if (static_cast<int>(c.size()) < w)
+      c = (i == 0 ? c + std::string(w - c.size(), ' ') : std::string(w - c.size(), ' ') + c);
     line += c + "  ";
   }
   std::printf("%s\n", line.c_str());

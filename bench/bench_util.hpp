@@ -28,7 +28,8 @@ double peak_memory_mb(const std::function<void()>& f);
 /// Correspondences as the method makes them: `classes` classes of landmarks, all-to-all within a
 /// class, about `m` in total. Half of the landmarks are seen by both scans (moved by a known
 /// transform, with `noise` [m]); the rest are seen by one scan only. Fixed seed.
-std::vector<Correspondence> all_to_all_scene(int m, double noise, std::uint64_t seed, int classes = 3);
+std::vector<Correspondence> all_to_all_scene(int m, double noise, std::uint64_t seed,
+                                             int classes = 3);
 
 /// Prints a row of a fixed-width table.
 void row(const std::vector<std::string>& cells, const std::vector<int>& widths);

@@ -39,11 +39,13 @@ TEST_CASE("unknown keys, wrong types and bad values name the key path") {
                     Catch::Contains("graph.trim") && Catch::Contains("\"difference\""));
   CHECK_THROWS_WITH(parse_config(R"({"clique": {"max_inner_iterations": 1.5}})"),
                     Catch::Contains("clique.max_inner_iterations") && Catch::Contains("integer"));
-  CHECK_THROWS_WITH(parse_config(R"({"landmarks": {"classes": [{"name": "car", "voxel_size": "big"}]}})"),
-                    Catch::Contains("landmarks.classes[0].voxel_size"));
+  CHECK_THROWS_WITH(
+      parse_config(R"({"landmarks": {"classes": [{"name": "car", "voxel_size": "big"}]}})"),
+      Catch::Contains("landmarks.classes[0].voxel_size"));
   CHECK_THROWS_WITH(parse_config(R"({"landmarks": {"classes": [{"name": "lamp"}]}})"),
                     Catch::Contains("landmarks.classes[0].name") && Catch::Contains("lamp"));
-  CHECK_THROWS_WITH(parse_config(R"({"verification": {"mu": -1}})"), Catch::Contains("verification.mu"));
+  CHECK_THROWS_WITH(parse_config(R"({"verification": {"mu": -1}})"),
+                    Catch::Contains("verification.mu"));
   CHECK_THROWS_WITH(parse_config("{not json"), Catch::Contains("not valid JSON"));
   CHECK_THROWS_AS(parse_config("[1, 2]"), ConfigError);
 }

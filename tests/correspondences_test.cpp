@@ -1,5 +1,5 @@
-#include <catch2/catch.hpp>
 #include <Eigen/Geometry>
+#include <catch2/catch.hpp>
 
 #include "pagor/config.hpp"
 #include "pagor/correspondences.hpp"

@@ -1,6 +1,6 @@
-#include <catch2/catch.hpp>
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <random>
 #include <set>
 
@@ -16,7 +16,8 @@ std::vector<Correspondence> planted(int inliers, int outliers, double sigma, std
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> coord(-40.0, 40.0);
   std::normal_distribution<double> noise(0.0, sigma);
-  const Eigen::Matrix3d R = Eigen::AngleAxisd(0.7, Eigen::Vector3d(0.1, 0.2, 1).normalized()).toRotationMatrix();
+  const Eigen::Matrix3d R =
+      Eigen::AngleAxisd(0.7, Eigen::Vector3d(0.1, 0.2, 1).normalized()).toRotationMatrix();
   const Eigen::Vector3d t(10, -4, 1);
   std::vector<Correspondence> c;
   int id = 0;
@@ -24,8 +25,9 @@ std::vector<Correspondence> planted(int inliers, int outliers, double sigma, std
     Correspondence x;
     x.source = x.target = id++;
     x.p = Eigen::Vector3d(coord(rng), coord(rng), coord(rng) / 8);
-    x.q = k < inliers ? Eigen::Vector3d(R * x.p + t + Eigen::Vector3d(noise(rng), noise(rng), noise(rng)))
-                      : Eigen::Vector3d(coord(rng), coord(rng), coord(rng) / 8);
+    x.q = k < inliers
+              ? Eigen::Vector3d(R * x.p + t + Eigen::Vector3d(noise(rng), noise(rng), noise(rng)))
+              : Eigen::Vector3d(coord(rng), coord(rng), coord(rng) / 8);
     c.push_back(x);
   }
   std::shuffle(c.begin(), c.end(), rng);  // inliers anywhere in the list
@@ -88,7 +90,8 @@ TEST_CASE("the cascaded solver finds the planted clique with 50 to 95 % outliers
   gp.trim = TrimKind::difference;
   gp.thresholds = {0.1, 0.2, 0.4, 0.8};
   CliqueParams cp;
-  for (const auto& [inliers, outliers] : {std::pair{30, 30}, std::pair{30, 120}, std::pair{20, 380}}) {
+  for (const auto& [inliers, outliers] :
+       {std::pair{30, 30}, std::pair{30, 120}, std::pair{20, 380}}) {
     for (std::uint64_t seed : {1u, 2u, 3u}) {
       INFO(inliers << " inliers, " << outliers << " outliers, seed " << seed);
       const auto c = planted(inliers, outliers, 0.01, seed);
@@ -167,7 +170,8 @@ TEST_CASE("warm start gives the same cliques as cold start with fewer iterations
       independent_steps += cold[l].gradient_steps;
     }
   }
-  INFO((prune ? "pruned" : "unpruned") << " gradient steps: cascaded " << cascaded_steps << ", independent " << independent_steps);
+  INFO((prune ? "pruned" : "unpruned")
+       << " gradient steps: cascaded " << cascaded_steps << ", independent " << independent_steps);
   CHECK(cascaded_steps < independent_steps);
 }
 
@@ -184,7 +188,8 @@ TEST_CASE("the solver is deterministic for a seed") {
 
 TEST_CASE("graphs without vertices or edges") {
   const PyramidGraph empty = build_pyramid_graph({}, GraphParams{});
-  for (const auto solver : {CliqueSolver::cascaded, CliqueSolver::independent, CliqueSolver::exact}) {
+  for (const auto solver :
+       {CliqueSolver::cascaded, CliqueSolver::independent, CliqueSolver::exact}) {
     CliqueParams cp;
     cp.solver = solver;
     const auto r = solve_pyramid(empty, cp);

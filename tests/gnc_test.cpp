@@ -1,5 +1,5 @@
-#include <catch2/catch.hpp>
 #include <Eigen/Geometry>
+#include <catch2/catch.hpp>
 #include <random>
 
 #include "pagor/evaluation.hpp"
@@ -24,10 +24,12 @@ Problem make_problem(int n, double outlier_ratio, PoseModel model, std::uint64_t
   std::normal_distribution<double> noise(0.0, 0.01);
   Problem pr;
   if (model == PoseModel::se3)
-    pr.T.block<3, 3>(0, 0) = Eigen::AngleAxisd(0.9, Eigen::Vector3d(0.3, -0.2, 1).normalized()).toRotationMatrix();
+    pr.T.block<3, 3>(0, 0) =
+        Eigen::AngleAxisd(0.9, Eigen::Vector3d(0.3, -0.2, 1).normalized()).toRotationMatrix();
   else
     pr.T.block<3, 3>(0, 0) = Eigen::AngleAxisd(-1.2, Eigen::Vector3d::UnitZ()).toRotationMatrix();
-  pr.T.block<3, 1>(0, 3) = model == PoseModel::se3 ? Eigen::Vector3d(4, -7, 1.5) : Eigen::Vector3d(4, -7, 0);
+  pr.T.block<3, 1>(0, 3) =
+      model == PoseModel::se3 ? Eigen::Vector3d(4, -7, 1.5) : Eigen::Vector3d(4, -7, 0);
   pr.inliers = static_cast<int>(n * (1 - outlier_ratio));
   for (int i = 0; i < n; ++i) {
     const Eigen::Vector3d p(coord(rng), coord(rng), coord(rng) / 4);
@@ -103,7 +105,8 @@ TEST_CASE("pose errors against ground truth") {
   Transform truth = Transform::Identity();
   truth.block<3, 1>(0, 3) = Eigen::Vector3d(10, 0, 0);
   Transform est = truth;
-  est.block<3, 3>(0, 0) = Eigen::AngleAxisd(3.0 * 3.14159265358979 / 180, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  est.block<3, 3>(0, 0) =
+      Eigen::AngleAxisd(3.0 * 3.14159265358979 / 180, Eigen::Vector3d::UnitZ()).toRotationMatrix();
   est.block<3, 1>(0, 3) = Eigen::Vector3d(11.5, 0, 0);
   const PoseError e = pose_error(est, truth);
   CHECK(e.translation == Approx(1.5));

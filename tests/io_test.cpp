@@ -126,7 +126,8 @@ TEST_CASE("bad input gives an InputError naming the file") {
   }
   SECTION("unknown extension") {
     write_bytes(dir.file("cloud.xyz"), "1 2 3\n");
-    CHECK_THROWS_WITH(load_cloud(dir.file("cloud.xyz")), Catch::Contains("unknown point-cloud extension"));
+    CHECK_THROWS_WITH(load_cloud(dir.file("cloud.xyz")),
+                      Catch::Contains("unknown point-cloud extension"));
   }
   SECTION("garbage PCD and PLY") {
     write_bytes(dir.file("bad.pcd"), "this is not a point cloud\n");
@@ -141,7 +142,8 @@ TEST_CASE("bad input gives an InputError naming the file") {
     // Keep the header and half of the 50 x 20 byte body.
     const std::size_t body = bytes.find("DATA binary\n") + 12;
     write_bytes(dir.file("cut.pcd"), bytes.substr(0, body + 500));
-    CHECK_THROWS_WITH(load_cloud(dir.file("cut.pcd")), Catch::Contains("cut.pcd") && Catch::Contains("truncated"));
+    CHECK_THROWS_WITH(load_cloud(dir.file("cut.pcd")),
+                      Catch::Contains("cut.pcd") && Catch::Contains("truncated"));
   }
   SECTION("a directory instead of a file") {
     CHECK_THROWS_WITH(read_kitti_bin(dir.file("")), Catch::Contains("directory"));

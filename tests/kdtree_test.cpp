@@ -7,7 +7,8 @@ using namespace pagor;
 
 namespace {
 
-std::pair<int, float> brute_force(const std::vector<Eigen::Vector3f>& pts, const Eigen::Vector3f& q, float bound) {
+std::pair<int, float> brute_force(const std::vector<Eigen::Vector3f>& pts, const Eigen::Vector3f& q,
+                                  float bound) {
   int best = -1;
   float d2 = bound;
   for (std::size_t i = 0; i < pts.size(); ++i) {
@@ -27,8 +28,9 @@ TEST_CASE("the kd-tree agrees with a linear scan, with and without a bound") {
   for (int n : {1, 7, 100, 5000}) {
     std::uniform_real_distribution<float> u(-20.f, 20.f);
     std::vector<Eigen::Vector3f> pts;
-    for (int i = 0; i < n; ++i) pts.emplace_back(u(rng), u(rng), u(rng) * 0.1f);  // flat, like scans
-    pts.push_back(pts.front());  // a duplicate
+    for (int i = 0; i < n; ++i)
+      pts.emplace_back(u(rng), u(rng), u(rng) * 0.1f);  // flat, like scans
+    pts.push_back(pts.front());                         // a duplicate
     const KdTree3f tree(pts, 6);
     REQUIRE(tree.size() == pts.size());
     for (int k = 0; k < 500; ++k) {

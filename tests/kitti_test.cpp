@@ -1,5 +1,5 @@
-#include <catch2/catch.hpp>
 #include <Eigen/Geometry>
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <fstream>
 
@@ -23,9 +23,12 @@ double rotation_deg(const Transform& T) {
 TEST_CASE("ground truth of the shared pairs matches the README figures") {
   const KittiSequence seq(test::kitti_root(), "00");
   CHECK(seq.pose_count() == 4541);
-  struct Expected { int s, t; double trans, rot; };
-  for (const Expected e : {Expected{0, 20, 17.30, 2.7}, Expected{20, 30, 9.30, 0.6},
-                           Expected{0, 30, 26.60, 2.5}}) {
+  struct Expected {
+    int s, t;
+    double trans, rot;
+  };
+  for (const Expected e :
+       {Expected{0, 20, 17.30, 2.7}, Expected{20, 30, 9.30, 0.6}, Expected{0, 30, 26.60, 2.5}}) {
     INFO("pair " << e.s << " -> " << e.t);
     const Transform T = seq.ground_truth(e.s, e.t);
     CHECK(T.block<3, 1>(0, 3).norm() == Approx(e.trans).margin(0.01));

@@ -48,7 +48,8 @@ TEST_CASE("clusters of a synthetic scene are its objects, at their known centroi
   // Buildings become FPFH keypoints with a descriptor each.
   CHECK(set.classes[3].landmarks > 50);
   for (std::size_t i = 0; i < set.landmarks.size(); ++i)
-    CHECK(set.descriptors[i].size() == (set.landmarks[i].kind == LandmarkKind::keypoint ? 33u : 0u));
+    CHECK(set.descriptors[i].size() ==
+          (set.landmarks[i].kind == LandmarkKind::keypoint ? 33u : 0u));
 }
 
 TEST_CASE("a cluster's covariance describes its shape") {
@@ -73,7 +74,8 @@ TEST_CASE("a class with no points warns, a cloud without labels throws") {
   CHECK(set.classes[0].landmarks == 1);
   CHECK(set.classes[1].landmarks == 0);
   bool warned = false;
-  for (const auto& w : set.warnings) warned = warned || w.find("'trunk': no points") != std::string::npos;
+  for (const auto& w : set.warnings)
+    warned = warned || w.find("'trunk': no points") != std::string::npos;
   CHECK(warned);
 
   cloud.labels.clear();

@@ -1,5 +1,5 @@
-#include <catch2/catch.hpp>
 #include <array>
+#include <catch2/catch.hpp>
 
 #include "pagor/errors.hpp"
 #include "pagor/pipeline.hpp"
@@ -12,15 +12,18 @@ namespace {
 
 std::array<int, kStageCount> runs(const Pipeline& p) {
   std::array<int, kStageCount> r{};
-  for (int s = 0; s < kStageCount; ++s) r[static_cast<std::size_t>(s)] = p.runs(static_cast<Stage>(s));
+  for (int s = 0; s < kStageCount; ++s)
+    r[static_cast<std::size_t>(s)] = p.runs(static_cast<Stage>(s));
   return r;
 }
 
 // Which stages ran between two snapshots.
-std::vector<Stage> ran(const std::array<int, kStageCount>& before, const std::array<int, kStageCount>& after) {
+std::vector<Stage> ran(const std::array<int, kStageCount>& before,
+                       const std::array<int, kStageCount>& after) {
   std::vector<Stage> out;
   for (int s = 0; s < kStageCount; ++s)
-    if (after[static_cast<std::size_t>(s)] != before[static_cast<std::size_t>(s)]) out.push_back(static_cast<Stage>(s));
+    if (after[static_cast<std::size_t>(s)] != before[static_cast<std::size_t>(s)])
+      out.push_back(static_cast<Stage>(s));
   return out;
 }
 
@@ -74,9 +77,9 @@ TEST_CASE("a change re-runs only the stages it invalidates") {
     c.landmarks.classes[0].cluster_tolerance = 0.6;
     p.set_config(c);
     p.run();
-    CHECK(ran(before, runs(p)) ==
-          std::vector<Stage>{Stage::landmarks, Stage::correspondences, Stage::graph, Stage::clique,
-                             Stage::pose, Stage::verification, Stage::evaluation});
+    CHECK(ran(before, runs(p)) == std::vector<Stage>{Stage::landmarks, Stage::correspondences,
+                                                     Stage::graph, Stage::clique, Stage::pose,
+                                                     Stage::verification, Stage::evaluation});
   }
   SECTION("the verification voxel: metric clouds, scoring and evaluation") {
     Config c = p.config();
@@ -91,7 +94,8 @@ TEST_CASE("a change re-runs only the stages it invalidates") {
     c.gnc.noise_bound = 0.8;
     p.set_config(c);
     p.run();
-    CHECK(ran(before, runs(p)) == std::vector<Stage>{Stage::pose, Stage::verification, Stage::evaluation});
+    CHECK(ran(before, runs(p)) ==
+          std::vector<Stage>{Stage::pose, Stage::verification, Stage::evaluation});
   }
   SECTION("ground truth: evaluation only") {
     p.set_ground_truth(std::nullopt);
@@ -146,7 +150,8 @@ TEST_CASE("the JSON report carries the documented top-level keys") {
   Pipeline p = synthetic_pipeline();
   p.run();
   const std::string json = registration_report_json(p, "s", "t");
-  for (const char* key : {"\"T_target_source\"", "\"timings_ms\"", "\"levels\"", "\"selected_level\"",
-                          "\"ground_truth\"", "\"schema\": \"pagor.register/1\"", "\"clique\""})
+  for (const char* key :
+       {"\"T_target_source\"", "\"timings_ms\"", "\"levels\"", "\"selected_level\"",
+        "\"ground_truth\"", "\"schema\": \"pagor.register/1\"", "\"clique\""})
     CHECK_THAT(json, Catch::Contains(key));
 }

@@ -19,13 +19,15 @@ std::vector<Correspondence> random_correspondences(int m, std::uint64_t seed) {
     x.target = landmark(rng);
     x.p = Eigen::Vector3d(coord(rng), coord(rng), coord(rng) * 0.1);
     // Half of them consistent with a pure translation, so every level has edges.
-    x.q = (x.source % 2 == 0) ? x.p + Eigen::Vector3d(5, 1, 0) : Eigen::Vector3d(coord(rng), coord(rng), 0);
+    x.q = (x.source % 2 == 0) ? x.p + Eigen::Vector3d(5, 1, 0)
+                              : Eigen::Vector3d(coord(rng), coord(rng), 0);
   }
   return c;
 }
 
 // Lowest level of pair (i, j) by the definition, or -1.
-int reference_level(const std::vector<Correspondence>& c, std::size_t i, std::size_t j, const GraphParams& p) {
+int reference_level(const std::vector<Correspondence>& c, std::size_t i, std::size_t j,
+                    const GraphParams& p) {
   if (c[i].source == c[j].source || c[i].target == c[j].target) return -1;
   const double a = (c[i].p - c[j].p).norm(), b = (c[i].q - c[j].q).norm();
   if (a < p.min_length || b < p.min_length) return -1;
@@ -66,7 +68,8 @@ TEST_CASE("the one-pass pyramid equals the per-level definition, for both TRIM k
           if (i < j && expected) ++count[static_cast<std::size_t>(l)];
         }
       }
-    for (int l = 0; l < 3; ++l) CHECK(g.edges_at_level[static_cast<std::size_t>(l)] == count[static_cast<std::size_t>(l)]);
+    for (int l = 0; l < 3; ++l)
+      CHECK(g.edges_at_level[static_cast<std::size_t>(l)] == count[static_cast<std::size_t>(l)]);
     CHECK(g.edges_at_level[0] > 0);
     CHECK(g.edges_at_level[0] <= g.edges_at_level[1]);
     CHECK(g.edges_at_level[1] <= g.edges_at_level[2]);
@@ -97,12 +100,14 @@ TEST_CASE("gaussian affinities fall with the TRIM and vanish above the level") {
   p.sigma_ratio = 0.5;
   const PyramidGraph g = build_pyramid_graph(c, p);
   auto edge = [&](int u, int v) {
-    for (auto e = g.offsets[static_cast<std::size_t>(u)]; e < g.offsets[static_cast<std::size_t>(u) + 1]; ++e)
+    for (auto e = g.offsets[static_cast<std::size_t>(u)];
+         e < g.offsets[static_cast<std::size_t>(u) + 1]; ++e)
       if (g.neighbors[static_cast<std::size_t>(e)] == v) return static_cast<std::size_t>(e);
     FAIL("no edge " << u << "-" << v);
     return std::size_t{0};
   };
-  CHECK(g.weight(edge(0, 1), 0) == Approx(std::exp(-0.05 * 0.05 / (2 * 0.05 * 0.05))).epsilon(1e-4));
+  CHECK(g.weight(edge(0, 1), 0) ==
+        Approx(std::exp(-0.05 * 0.05 / (2 * 0.05 * 0.05))).epsilon(1e-4));
   CHECK(g.weight(edge(0, 2), 0) == 0.0);
   CHECK(g.weight(edge(0, 2), 1) == Approx(std::exp(-0.4 * 0.4 / (2 * 0.25 * 0.25))).epsilon(1e-4));
 }

@@ -35,6 +35,8 @@ TEST_CASE("KITTI 0 -> 30 (26.6 m apart) runs and is reported") {
   const Pipeline p = run_pair(0, 30);
   REQUIRE(p.level_errors().size() == p.cliques().size());
   // Not required to succeed: the selection and its errors exist or the failure is explicit.
-  if (p.selected_level() >= 0) CHECK(p.selected_error().has_value());
-  else CHECK_FALSE(p.warnings().empty());
+  if (p.selected_level() >= 0)
+    CHECK(p.selected_error().has_value());
+  else
+    CHECK_FALSE(p.warnings().empty());
 }

@@ -28,6 +28,8 @@ class TempDir {
 };
 
 /// The shared KITTI data used by the tests on real scans.
-inline std::string kitti_root() { return PAGOR_KITTI_DIR; }
+inline std::string kitti_root() {
+  return PAGOR_KITTI_DIR;
+}
 
 }  // namespace pagor::test

@@ -1,5 +1,5 @@
-#include <catch2/catch.hpp>
 #include <Eigen/Geometry>
+#include <catch2/catch.hpp>
 #include <random>
 
 #include "pagor/synthetic.hpp"
@@ -12,7 +12,8 @@ namespace {
 Transform perturbed(const Transform& T, double dx, double yaw_deg) {
   Transform P = Transform::Identity();
   P.block<3, 3>(0, 0) =
-      Eigen::AngleAxisd(yaw_deg * 3.14159265358979 / 180, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+      Eigen::AngleAxisd(yaw_deg * 3.14159265358979 / 180, Eigen::Vector3d::UnitZ())
+          .toRotationMatrix();
   P(0, 3) = dx;
   return P * T;
 }
@@ -44,7 +45,8 @@ TEST_CASE("with full overlap every score kind picks the true pose") {
   const SyntheticScene scene = make_synthetic_scene();
   PointCloud moved = scene.source;
   const Transform T = perturbed(Transform::Identity(), 4.0, 30.0);
-  for (auto& p : moved.points) p = (T.block<3, 3>(0, 0) * p.cast<double>() + T.block<3, 1>(0, 3)).cast<float>();
+  for (auto& p : moved.points)
+    p = (T.block<3, 3>(0, 0) * p.cast<double>() + T.block<3, 1>(0, 3)).cast<float>();
   const Verifier verifier(scene.source, moved, 0.5);
   const std::vector<PoseEstimate> c = {candidate(perturbed(T, 0.6, 0.0), 10), candidate(T, 10),
                                        candidate(perturbed(T, 0.0, 3.0), 10)};
@@ -82,7 +84,8 @@ TEST_CASE("scores match a brute-force reference") {
   CHECK(verifier.score(T, mu, ScoreKind::truncated, 3) == Approx(truncated).epsilon(1e-5));
 }
 
-TEST_CASE("invalid candidates are never selected; all invalid selects none; ties go to more inliers") {
+TEST_CASE(
+    "invalid candidates are never selected; all invalid selects none; ties go to more inliers") {
   const SyntheticScene scene = make_synthetic_scene();
   const Verifier verifier(scene.source, scene.target, 1.0);
   PoseEstimate invalid;

@@ -51,8 +51,9 @@ int run_bench(const Args& args) {
     if (!out) throw InputError(args.get("out") + ": cannot open for writing");
   }
 
-  const Stage stages[] = {Stage::landmarks, Stage::correspondences, Stage::graph, Stage::clique,
-                          Stage::pose, Stage::verification_prep, Stage::verification};
+  const Stage stages[] = {
+      Stage::landmarks, Stage::correspondences,   Stage::graph,       Stage::clique,
+      Stage::pose,      Stage::verification_prep, Stage::verification};
   std::vector<std::vector<double>> times(std::size(stages));
   std::vector<double> totals;
   int successes = 0, upper = 0, failed_to_load = 0;
@@ -69,7 +70,8 @@ int run_bench(const Args& args) {
       source = seq.load_frame(s);
       target = seq.load_frame(t);
     } catch (const InputError& e) {
-      warn(std::string("pair ") + std::to_string(s) + " -> " + std::to_string(t) + " skipped: " + e.what());
+      warn(std::string("pair ") + std::to_string(s) + " -> " + std::to_string(t) +
+           " skipped: " + e.what());
       ++failed_to_load;
       continue;
     }
@@ -89,8 +91,8 @@ int run_bench(const Args& args) {
     upper += pipeline.upper_bound_success();
     const std::string name = std::to_string(s) + " -> " + std::to_string(t);
     if (err)
-      std::printf("%-12s %6d %10.2f %11.2f %8s %8s %10.1f\n", name.c_str(), pipeline.selected_level(),
-                  err->translation, err->rotation_deg, ok ? "yes" : "no",
+      std::printf("%-12s %6d %10.2f %11.2f %8s %8s %10.1f\n", name.c_str(),
+                  pipeline.selected_level(), err->translation, err->rotation_deg, ok ? "yes" : "no",
                   pipeline.upper_bound_success() ? "yes" : "no", total);
     else
       std::printf("%-12s %6s %10s %11s %8s %8s %10.1f\n", name.c_str(), "-", "-", "-", "no",
@@ -111,8 +113,8 @@ int run_bench(const Args& args) {
   std::printf("\npairs run: %zu%s\n", n,
               failed_to_load ? (" (" + std::to_string(failed_to_load) + " skipped)").c_str() : "");
   std::printf("success (selected pose, %.1f m / %.1f deg): %d/%zu = %.1f %%\n",
-              config.evaluation.max_translation_error, config.evaluation.max_rotation_error, successes,
-              n, 100.0 * successes / static_cast<double>(n));
+              config.evaluation.max_translation_error, config.evaluation.max_rotation_error,
+              successes, n, 100.0 * successes / static_cast<double>(n));
   std::printf("upper bound (any level succeeds):       %d/%zu = %.1f %%\n", upper, n,
               100.0 * upper / static_cast<double>(n));
   std::printf("\n%-18s %10s %12s\n", "stage", "mean [ms]", "median [ms]");

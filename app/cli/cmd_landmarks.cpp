@@ -15,8 +15,12 @@ nlohmann::json landmarks_json(const LandmarkSet& set, const std::string& name, b
   using nlohmann::json;
   json classes = json::array();
   for (const auto& c : set.classes)
-    classes.push_back({{"name", c.name}, {"method", to_string(c.method)}, {"points", c.points},
-                       {"voxels", c.voxels}, {"landmarks", c.landmarks}, {"time_ms", c.time_ms}});
+    classes.push_back({{"name", c.name},
+                       {"method", to_string(c.method)},
+                       {"points", c.points},
+                       {"voxels", c.voxels},
+                       {"landmarks", c.landmarks},
+                       {"time_ms", c.time_ms}});
   json items = json::array();
   for (const auto& lm : set.landmarks) {
     json cov = json::array();
@@ -30,8 +34,12 @@ nlohmann::json landmarks_json(const LandmarkSet& set, const std::string& name, b
     if (with_indices) item["point_indices"] = lm.point_indices;
     items.push_back(item);
   }
-  return {{"cloud", name}, {"units", "m"}, {"classes", classes}, {"landmarks", items},
-          {"warnings", set.warnings}, {"time_ms", set.time_ms}};
+  return {{"cloud", name},
+          {"units", "m"},
+          {"classes", classes},
+          {"landmarks", items},
+          {"warnings", set.warnings},
+          {"time_ms", set.time_ms}};
 }
 
 }  // namespace
@@ -53,7 +61,8 @@ int run_landmarks(const Args& args) {
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   for (const auto& w : loaded.warnings) warn(w);
   if (!loaded.cloud.has_labels())
-    throw InputError(name + ": no semantic labels (give --source-labels, or a cloud with a label field)");
+    throw InputError(name +
+                     ": no semantic labels (give --source-labels, or a cloud with a label field)");
 
   std::printf("cloud: %s\n", name.c_str());
   std::printf("loaded %zu points in %.1f ms (%zu dropped with NaN/Inf coordinates)\n",
@@ -61,24 +70,26 @@ int run_landmarks(const Args& args) {
   const LandmarkSet set = extract_landmarks(loaded.cloud, config.label_scheme, config.landmarks);
   for (const auto& w : set.warnings) warn(name + ": " + w);
 
-  std::printf("\n%-14s %-8s %9s %9s %10s %10s\n", "class", "method", "points", "voxels", "landmarks",
-              "time [ms]");
+  std::printf("\n%-14s %-8s %9s %9s %10s %10s\n", "class", "method", "points", "voxels",
+              "landmarks", "time [ms]");
   for (const auto& c : set.classes)
-    std::printf("%-14s %-8s %9zu %9zu %10zu %10.1f\n", c.name.c_str(), to_string(c.method), c.points,
-                c.voxels, c.landmarks, c.time_ms);
+    std::printf("%-14s %-8s %9zu %9zu %10zu %10.1f\n", c.name.c_str(), to_string(c.method),
+                c.points, c.voxels, c.landmarks, c.time_ms);
   std::printf("%-14s %-8s %9s %9s %10zu %10.1f\n", "total", "", "", "", set.landmarks.size(),
               set.time_ms);
 
   if (args.has("json")) {
-    write_text_file(args.get("json"), landmarks_json(set, name, args.has("with-indices")).dump(2) + "\n");
+    write_text_file(args.get("json"),
+                    landmarks_json(set, name, args.has("with-indices")).dump(2) + "\n");
     std::printf("wrote %s\n", args.get("json").c_str());
   }
   return 0;
 }
 
 std::vector<Option> config_options() {
-  return {{"print-default", 0, "", "print the full default configuration as JSON"},
-          {"check", 1, "FILE", "validate a configuration file and print it with defaults filled in"}};
+  return {
+      {"print-default", 0, "", "print the full default configuration as JSON"},
+      {"check", 1, "FILE", "validate a configuration file and print it with defaults filled in"}};
 }
 
 int run_config(const Args& args) {

@@ -47,8 +47,9 @@ std::vector<Option> pair_options() {
 PairSource pair_source_from_args(const Args& args) {
   const int chosen = args.has("source") + args.has("kitti-root") + args.has("synthetic");
   if (chosen != 1)
-    throw UsageError("choose one input: --source S --target T, --kitti-root DIR --pair S T, "
-                     "or --synthetic SEED");
+    throw UsageError(
+        "choose one input: --source S --target T, --kitti-root DIR --pair S T, "
+        "or --synthetic SEED");
   PairSource src;
   if (args.has("source")) {
     if (!args.has("target")) throw UsageError("--source needs --target");
@@ -66,7 +67,8 @@ PairSource pair_source_from_args(const Args& args) {
     src.target_frame = parse_int(args.all("pair")[1], "--pair (target frame)");
   } else {
     src.kind = PairSource::Kind::synthetic;
-    src.synthetic_seed = static_cast<std::uint64_t>(parse_int(args.get("synthetic"), "--synthetic"));
+    src.synthetic_seed =
+        static_cast<std::uint64_t>(parse_int(args.get("synthetic"), "--synthetic"));
   }
   return src;
 }
@@ -80,12 +82,13 @@ void print_registration(const Pipeline& p) {
                 tl.classes[c].landmarks);
   std::printf("  (source/target)\n");
   const auto& corr = p.correspondences();
-  std::printf("correspondences: %zu%s\n", corr.items.size(),
-              corr.capped ? (" (capped from " + std::to_string(corr.candidates) + ")").c_str() : "");
+  std::printf(
+      "correspondences: %zu%s\n", corr.items.size(),
+      corr.capped ? (" (capped from " + std::to_string(corr.candidates) + ")").c_str() : "");
 
   const bool gt = p.ground_truth().has_value();
-  std::printf("\n  %-5s %-8s %8s %9s %7s %8s %13s", "level", "epsilon", "vertices", "edges", "clique",
-              "inliers", "score D [m]");
+  std::printf("\n  %-5s %-8s %8s %9s %7s %8s %13s", "level", "epsilon", "vertices", "edges",
+              "clique", "inliers", "score D [m]");
   if (gt) std::printf(" %10s %11s %4s", "t err [m]", "r err [deg]", "ok");
   std::printf("\n");
   const auto& g = p.graph();
@@ -95,8 +98,10 @@ void print_registration(const Pipeline& p) {
     std::printf("%s %-5zu %-8.3f %8zu %9zu %7zu %8zu ", sel ? "*" : " ", l, g.thresholds[l],
                 g.active_vertices(static_cast<int>(l)), g.edges_at_level[l],
                 p.cliques()[l].vertices.size(), p.poses()[l].inliers.size());
-    if (std::isfinite(D)) std::printf("%13.1f", D);
-    else std::printf("%13s", "invalid");
+    if (std::isfinite(D))
+      std::printf("%13.1f", D);
+    else
+      std::printf("%13s", "invalid");
     if (gt && l < p.level_errors().size() && p.level_errors()[l]) {
       const auto& e = *p.level_errors()[l];
       std::printf(" %10.2f %11.2f %4s", e.translation, e.rotation_deg, e.success ? "yes" : "no");
@@ -113,19 +118,21 @@ void print_registration(const Pipeline& p) {
   }
   if (gt) {
     if (const auto e = p.selected_error())
-      std::printf("ground truth: translation error %.2f m, rotation error %.2f deg -> %s "
-                  "(criterion %.1f m / %.1f deg); upper bound: %s\n",
-                  e->translation, e->rotation_deg, e->success ? "SUCCESS" : "FAILURE",
-                  p.config().evaluation.max_translation_error, p.config().evaluation.max_rotation_error,
-                  p.upper_bound_success() ? "yes" : "no");
+      std::printf(
+          "ground truth: translation error %.2f m, rotation error %.2f deg -> %s "
+          "(criterion %.1f m / %.1f deg); upper bound: %s\n",
+          e->translation, e->rotation_deg, e->success ? "SUCCESS" : "FAILURE",
+          p.config().evaluation.max_translation_error, p.config().evaluation.max_rotation_error,
+          p.upper_bound_success() ? "yes" : "no");
     else
       std::printf("ground truth: FAILURE (no pose); upper bound: %s\n",
                   p.upper_bound_success() ? "yes" : "no");
   }
   double total = 0;
   std::printf("times [ms]:");
-  const Stage shown[] = {Stage::landmarks, Stage::correspondences, Stage::graph, Stage::clique,
-                         Stage::pose, Stage::verification_prep, Stage::verification};
+  const Stage shown[] = {
+      Stage::landmarks, Stage::correspondences,   Stage::graph,       Stage::clique,
+      Stage::pose,      Stage::verification_prep, Stage::verification};
   for (Stage s : shown) {
     std::printf(" %s %.1f", stage_name(s), p.time_ms(s));
     total += p.time_ms(s);
@@ -151,8 +158,9 @@ int run_register(const Args& args) {
   for (const auto& w : pair.target.warnings) warn(w);
   if (!pair.source.cloud.has_labels()) throw InputError(pair.source_name + ": no semantic labels");
   if (!pair.target.cloud.has_labels()) throw InputError(pair.target_name + ": no semantic labels");
-  std::printf("loaded %zu + %zu points in %.1f ms\n", pair.source.cloud.size(), pair.target.cloud.size(),
-              std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+  std::printf(
+      "loaded %zu + %zu points in %.1f ms\n", pair.source.cloud.size(), pair.target.cloud.size(),
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
 
   Pipeline pipeline(config, args.get_int("threads", 1));
   pipeline.set_input(std::move(pair.source.cloud), std::move(pair.target.cloud));

@@ -27,8 +27,9 @@ std::vector<Option> single_cloud_options() {
 LoadedCloud load_single_cloud(const Args& args, std::string& name) {
   const int chosen = args.has("source") + args.has("kitti-root") + args.has("synthetic");
   if (chosen != 1)
-    throw UsageError("choose exactly one input: --source FILE, --kitti-root DIR --frame N, "
-                     "or --synthetic SEED");
+    throw UsageError(
+        "choose exactly one input: --source FILE, --kitti-root DIR --frame N, "
+        "or --synthetic SEED");
   if (args.has("source")) {
     name = args.get("source");
     return load_cloud(name, args.get("source-labels"));
@@ -49,7 +50,9 @@ LoadedCloud load_single_cloud(const Args& args, std::string& name) {
   return out;
 }
 
-void warn(const std::string& message) { std::cerr << "pagor: warning: " << message << "\n"; }
+void warn(const std::string& message) {
+  std::cerr << "pagor: warning: " << message << "\n";
+}
 
 void write_text_file(const std::string& path, const std::string& text) {
   std::ofstream out(path, std::ios::trunc);
@@ -59,7 +62,8 @@ void write_text_file(const std::string& path, const std::string& text) {
 }
 
 std::string find_shared_kitti() {
-  for (const char* candidate : {"../shared/data/kitti", "../../shared/data/kitti", "shared/data/kitti"}) {
+  for (const char* candidate :
+       {"../shared/data/kitti", "../../shared/data/kitti", "shared/data/kitti"}) {
     std::error_code ec;
     if (std::filesystem::is_directory(std::filesystem::path(candidate) / "sequences", ec))
       return candidate;

@@ -45,7 +45,8 @@ int dispatch(int argc, char** argv) {
     std::vector<Option> options = c.options();
     for (const auto& w : words)
       if (w == "--help" || w == "-h") {
-        std::cout << "usage: pagor " << c.name << " [options]\n" << c.summary << "\n\noptions:\n"
+        std::cout << "usage: pagor " << c.name << " [options]\n"
+                  << c.summary << "\n\noptions:\n"
                   << format_options(options);
         return 0;
       }

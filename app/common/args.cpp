@@ -52,8 +52,10 @@ std::string format_options(const std::vector<Option>& options) {
   std::string out;
   for (const auto& o : options) {
     std::string left = "  --" + o.name + (o.meta.empty() ? "" : " " + o.meta);
-    if (left.size() < 34) left.resize(34, ' ');
-    else left += "\n" + std::string(34, ' ');
+    if (left.size() < 34)
+      left.resize(34, ' ');
+    else
+      left += "\n" + std::string(34, ' ');
     out += left + o.help + "\n";
   }
   return out;

@@ -18,10 +18,10 @@ class UsageError : public std::runtime_error {
 
 /// One option of a command.
 struct Option {
-  std::string name;   ///< without the leading dashes
-  int values = 1;     ///< number of values it takes (0 for a flag)
-  std::string meta;   ///< value placeholder for the help, e.g. "FILE"
-  std::string help;   ///< one line
+  std::string name;  ///< without the leading dashes
+  int values = 1;    ///< number of values it takes (0 for a flag)
+  std::string meta;  ///< value placeholder for the help, e.g. "FILE"
+  std::string help;  ///< one line
 };
 
 /// Parsed options of one command.

@@ -21,13 +21,13 @@ struct Layers {
   bool source = true;
   bool target = true;
   bool landmarks = true;
-  bool correspondences = true;      ///< the shown level's clique
+  bool correspondences = true;       ///< the shown level's clique
   bool all_correspondences = false;  ///< also those outside the clique, faint
 };
 
 struct ViewState {
   Layers layers;
-  float point_size = 2.0f;     ///< dense clouds [px]
+  float point_size = 2.0f;      ///< dense clouds [px]
   float landmark_size = 11.0f;  ///< landmarks [px]
   ColorMode color = ColorMode::by_class;
   PoseShown pose = PoseShown::selected;  ///< how the source cloud is placed
@@ -35,7 +35,7 @@ struct ViewState {
 };
 
 struct AppState {
-  PairSource data;  ///< as the user wrote it; relative paths are taken from `base_dir`
+  PairSource data;       ///< as the user wrote it; relative paths are taken from `base_dir`
   std::string base_dir;  ///< directory of the loaded session file (empty: working directory)
   bool have_data = false;
   std::string pairs_file;                  ///< optional: steps through its pairs
@@ -49,7 +49,7 @@ struct AppState {
 
   std::string session_path = "pagor-session.json";
   std::string screenshot_path = "pagor-studio.png";
-  std::string message;        ///< last message for the user
+  std::string message;  ///< last message for the user
   bool message_is_error = false;
   bool want_screenshot = false;
   int width = 1280, height = 720;  ///< window or image size [px]

@@ -34,7 +34,8 @@ Eigen::Matrix4f Camera::view() const {
 }
 
 Eigen::Matrix4f Camera::projection(float aspect) const {
-  const float near_plane = std::max(0.05f, distance * 0.002f), far_plane = distance * 20.0f + 500.0f;
+  const float near_plane = std::max(0.05f, distance * 0.002f),
+              far_plane = distance * 20.0f + 500.0f;
   Eigen::Matrix4f P = Eigen::Matrix4f::Zero();
   if (top_down) {
     const float h = distance * std::tan(fov_deg * 0.5f * kDegToRad), w = h * aspect;
@@ -63,11 +64,14 @@ void Camera::pan(float dx, float dy, float height) {
   const Eigen::Matrix4f V = view();
   const Eigen::Vector3f right = V.block<1, 3>(0, 0).transpose();
   const Eigen::Vector3f up = V.block<1, 3>(1, 0).transpose();
-  const float metres_per_pixel = 2.0f * distance * std::tan(fov_deg * 0.5f * kDegToRad) / std::max(height, 1.0f);
+  const float metres_per_pixel =
+      2.0f * distance * std::tan(fov_deg * 0.5f * kDegToRad) / std::max(height, 1.0f);
   target += (-dx * right + dy * up) * metres_per_pixel;
 }
 
-void Camera::zoom(float steps) { distance = std::clamp(distance * std::pow(0.88f, steps), 0.5f, 5000.0f); }
+void Camera::zoom(float steps) {
+  distance = std::clamp(distance * std::pow(0.88f, steps), 0.5f, 5000.0f);
+}
 
 void Camera::fit(const Eigen::Vector3f& lo, const Eigen::Vector3f& hi) {
   target = 0.5f * (lo + hi);
@@ -75,11 +79,12 @@ void Camera::fit(const Eigen::Vector3f& lo, const Eigen::Vector3f& hi) {
   distance = radius / std::tan(fov_deg * 0.5f * kDegToRad) * (top_down ? 0.75f : 0.9f);
 }
 
-bool project_to_screen(const Eigen::Matrix4f& vp, const Eigen::Vector3f& p, float width, float height,
-                       Eigen::Vector2f& pixel) {
+bool project_to_screen(const Eigen::Matrix4f& vp, const Eigen::Vector3f& p, float width,
+                       float height, Eigen::Vector2f& pixel) {
   const Eigen::Vector4f c = vp * Eigen::Vector4f(p.x(), p.y(), p.z(), 1.0f);
   if (c.w() <= 1e-6f) return false;
-  pixel = Eigen::Vector2f((c.x() / c.w() * 0.5f + 0.5f) * width, (0.5f - c.y() / c.w() * 0.5f) * height);
+  pixel = Eigen::Vector2f((c.x() / c.w() * 0.5f + 0.5f) * width,
+                          (0.5f - c.y() / c.w() * 0.5f) * height);
   return true;
 }
 

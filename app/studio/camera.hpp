@@ -9,11 +9,11 @@ namespace pagor::studio {
 
 struct Camera {
   Eigen::Vector3f target = Eigen::Vector3f::Zero();  ///< orbit centre [m]
-  float distance = 80.0f;   ///< from the target [m]
-  float yaw_deg = -60.0f;   ///< around Z
-  float pitch_deg = 45.0f;  ///< above the horizon
-  float fov_deg = 45.0f;    ///< vertical field of view
-  bool top_down = false;    ///< orthographic, looking straight down
+  float distance = 80.0f;                            ///< from the target [m]
+  float yaw_deg = -60.0f;                            ///< around Z
+  float pitch_deg = 45.0f;                           ///< above the horizon
+  float fov_deg = 45.0f;                             ///< vertical field of view
+  bool top_down = false;                             ///< orthographic, looking straight down
 
   Eigen::Matrix4f view() const;
   Eigen::Matrix4f projection(float aspect) const;
@@ -31,7 +31,7 @@ struct Camera {
 
 /// Projects a world point with a view-projection matrix to pixel coordinates (origin top-left) in
 /// a viewport of `width` x `height`; false when behind the camera.
-bool project_to_screen(const Eigen::Matrix4f& view_projection, const Eigen::Vector3f& p, float width,
-                       float height, Eigen::Vector2f& pixel);
+bool project_to_screen(const Eigen::Matrix4f& view_projection, const Eigen::Vector3f& p,
+                       float width, float height, Eigen::Vector2f& pixel);
 
 }  // namespace pagor::studio

@@ -5,11 +5,11 @@
 namespace pagor::studio {
 
 bool Gl::load(GetProcAddress get, std::string& error) {
-#define PAGOR_GL_LOAD(type, name)                                   \
-  name = reinterpret_cast<type>(get("gl" #name));                   \
-  if (!name) {                                                      \
-    error = "OpenGL function gl" #name " is not available";         \
-    return false;                                                   \
+#define PAGOR_GL_LOAD(type, name)                           \
+  name = reinterpret_cast<type>(get("gl" #name));           \
+  if (!name) {                                              \
+    error = "OpenGL function gl" #name " is not available"; \
+    return false;                                           \
   }
   PAGOR_GL_FUNCTIONS(PAGOR_GL_LOAD)
 #undef PAGOR_GL_LOAD

@@ -24,9 +24,12 @@ bool ImGuiRenderer::init(const Gl& gl, std::string& error) {
   gl.EnableVertexAttribArray(1);
   gl.EnableVertexAttribArray(2);
   const auto stride = static_cast<GLsizei>(sizeof(ImDrawVert));
-  gl.VertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(ImDrawVert, pos)));
-  gl.VertexAttribPointer(1, 2, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(ImDrawVert, uv)));
-  gl.VertexAttribPointer(2, 4, GL_UNSIGNED_BYTE, GL_TRUE, stride, reinterpret_cast<void*>(offsetof(ImDrawVert, col)));
+  gl.VertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, stride,
+                         reinterpret_cast<void*>(offsetof(ImDrawVert, pos)));
+  gl.VertexAttribPointer(1, 2, GL_FLOAT, GL_FALSE, stride,
+                         reinterpret_cast<void*>(offsetof(ImDrawVert, uv)));
+  gl.VertexAttribPointer(2, 4, GL_UNSIGNED_BYTE, GL_TRUE, stride,
+                         reinterpret_cast<void*>(offsetof(ImDrawVert, col)));
   gl.BindVertexArray(0);
 
   // Font atlas.
@@ -59,8 +62,9 @@ void ImGuiRenderer::render(const ImDrawData* data, int fb_width, int fb_height) 
   // Orthographic projection of the display rectangle, y down.
   const float L = data->DisplayPos.x, R = data->DisplayPos.x + data->DisplaySize.x;
   const float T = data->DisplayPos.y, B = data->DisplayPos.y + data->DisplaySize.y;
-  const float projection[16] = {2.0f / (R - L), 0, 0, 0, 0, 2.0f / (T - B), 0, 0, 0, 0, -1, 0,
-                                (R + L) / (L - R), (T + B) / (B - T), 0, 1};
+  const float projection[16] = {
+      2.0f / (R - L),    0, 0, 0, 0, 2.0f / (T - B), 0, 0, 0, 0, -1, 0, (R + L) / (L - R),
+      (T + B) / (B - T), 0, 1};
   gl.UseProgram(program_);
   gl.Uniform1i(u_texture_, 0);
   gl.UniformMatrix4fv(u_projection_, 1, GL_FALSE, projection);
@@ -72,9 +76,11 @@ void ImGuiRenderer::render(const ImDrawData* data, int fb_width, int fb_height) 
   const ImVec2 scale = data->FramebufferScale;
   for (int n = 0; n < data->CmdListsCount; ++n) {
     const ImDrawList* list = data->CmdLists[n];
-    gl.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(list->VtxBuffer.Size * sizeof(ImDrawVert)),
+    gl.BufferData(GL_ARRAY_BUFFER,
+                  static_cast<GLsizeiptr>(list->VtxBuffer.Size * sizeof(ImDrawVert)),
                   list->VtxBuffer.Data, GL_STREAM_DRAW);
-    gl.BufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(list->IdxBuffer.Size * sizeof(ImDrawIdx)),
+    gl.BufferData(GL_ELEMENT_ARRAY_BUFFER,
+                  static_cast<GLsizeiptr>(list->IdxBuffer.Size * sizeof(ImDrawIdx)),
                   list->IdxBuffer.Data, GL_STREAM_DRAW);
     for (int c = 0; c < list->CmdBuffer.Size; ++c) {
       const ImDrawCmd& cmd = list->CmdBuffer[c];
@@ -85,12 +91,14 @@ void ImGuiRenderer::render(const ImDrawData* data, int fb_width, int fb_height) 
       const float x0 = (cmd.ClipRect.x - L) * scale.x, y0 = (cmd.ClipRect.y - T) * scale.y;
       const float x1 = (cmd.ClipRect.z - L) * scale.x, y1 = (cmd.ClipRect.w - T) * scale.y;
       if (x1 <= x0 || y1 <= y0) continue;
-      gl.Scissor(static_cast<GLint>(x0), static_cast<GLint>(fb_height - y1), static_cast<GLsizei>(x1 - x0),
-                 static_cast<GLsizei>(y1 - y0));
-      gl.BindTexture(GL_TEXTURE_2D, static_cast<GLuint>(reinterpret_cast<std::intptr_t>(cmd.GetTexID())));
-      gl.DrawElements(GL_TRIANGLES, static_cast<GLsizei>(cmd.ElemCount),
-                      sizeof(ImDrawIdx) == 2 ? GL_UNSIGNED_SHORT : GL_UNSIGNED_INT,
-                      reinterpret_cast<void*>(static_cast<std::uintptr_t>(cmd.IdxOffset * sizeof(ImDrawIdx))));
+      gl.Scissor(static_cast<GLint>(x0), static_cast<GLint>(fb_height - y1),
+                 static_cast<GLsizei>(x1 - x0), static_cast<GLsizei>(y1 - y0));
+      gl.BindTexture(GL_TEXTURE_2D,
+                     static_cast<GLuint>(reinterpret_cast<std::intptr_t>(cmd.GetTexID())));
+      gl.DrawElements(
+          GL_TRIANGLES, static_cast<GLsizei>(cmd.ElemCount),
+          sizeof(ImDrawIdx) == 2 ? GL_UNSIGNED_SHORT : GL_UNSIGNED_INT,
+          reinterpret_cast<void*>(static_cast<std::uintptr_t>(cmd.IdxOffset * sizeof(ImDrawIdx))));
     }
   }
   gl.Disable(GL_SCISSOR_TEST);

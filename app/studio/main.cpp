@@ -1,9 +1,9 @@
 // pagor-studio: the interactive studio (GLFW window) and its headless twin (OSMesa), one code path.
 
 #include <GLFW/glfw3.h>
+#include <backends/imgui_impl_glfw.h>
 #include <dlfcn.h>
 #include <imgui.h>
-#include <backends/imgui_impl_glfw.h>
 
 #include <algorithm>
 #include <chrono>
@@ -21,13 +21,13 @@ namespace {
 
 // OSMesa, opened at run time so that the window build never loads it (its gl* symbols would
 // otherwise sit beside GLX's in one process).
-constexpr int kOsmesaFormat = 0x22;        // OSMESA_FORMAT
-constexpr int kOsmesaRgba = 0x1908;        // OSMESA_RGBA (GL_RGBA)
-constexpr int kOsmesaDepthBits = 0x30;     // OSMESA_DEPTH_BITS
-constexpr int kOsmesaProfile = 0x33;       // OSMESA_PROFILE
-constexpr int kOsmesaCoreProfile = 0x34;   // OSMESA_CORE_PROFILE
-constexpr int kOsmesaMajor = 0x36;         // OSMESA_CONTEXT_MAJOR_VERSION
-constexpr int kOsmesaMinor = 0x37;         // OSMESA_CONTEXT_MINOR_VERSION
+constexpr int kOsmesaFormat = 0x22;       // OSMESA_FORMAT
+constexpr int kOsmesaRgba = 0x1908;       // OSMESA_RGBA (GL_RGBA)
+constexpr int kOsmesaDepthBits = 0x30;    // OSMESA_DEPTH_BITS
+constexpr int kOsmesaProfile = 0x33;      // OSMESA_PROFILE
+constexpr int kOsmesaCoreProfile = 0x34;  // OSMESA_CORE_PROFILE
+constexpr int kOsmesaMajor = 0x36;        // OSMESA_CONTEXT_MAJOR_VERSION
+constexpr int kOsmesaMinor = 0x37;        // OSMESA_CONTEXT_MINOR_VERSION
 
 struct OsMesa {
   void* lib = nullptr;
@@ -37,8 +37,12 @@ struct OsMesa {
   void* (*get_proc)(const char*) = nullptr;
 };
 OsMesa g_osmesa;
-void* osmesa_proc(const char* name) { return g_osmesa.get_proc(name); }
-void* glfw_proc(const char* name) { return reinterpret_cast<void*>(glfwGetProcAddress(name)); }
+void* osmesa_proc(const char* name) {
+  return g_osmesa.get_proc(name);
+}
+void* glfw_proc(const char* name) {
+  return reinterpret_cast<void*>(glfwGetProcAddress(name));
+}
 
 std::vector<cli::Option> studio_options() {
   return {
@@ -57,7 +61,8 @@ std::vector<cli::Option> studio_options() {
       {"screenshot", 1, "PNG", "headless: write the rendered UI to this PNG"},
       {"size", 1, "WxH", "image or window size in pixels (default 1280x720)"},
       {"frames", 1, "N", "headless: also time N frames and print the frame time"},
-      {"timeout", 1, "S", "headless: give up waiting for the computation after S seconds (default 600)"},
+      {"timeout", 1, "S",
+       "headless: give up waiting for the computation after S seconds (default 600)"},
   };
 }
 
@@ -66,7 +71,8 @@ AppState state_from_args(const cli::Args& args) {
   if (args.has("session")) load_session(args.get("session"), s);
   if (args.has("config")) s.config = load_config(args.get("config"));
   const int chosen = args.has("source") + args.has("kitti-root") + args.has("synthetic");
-  if (chosen > 1) throw cli::UsageError("choose one input: --kitti-root, --source/--target or --synthetic");
+  if (chosen > 1)
+    throw cli::UsageError("choose one input: --kitti-root, --source/--target or --synthetic");
   if (args.has("kitti-root")) {
     if (!args.has("pair")) throw cli::UsageError("--kitti-root needs --pair S T");
     s.data.kind = PairSource::Kind::kitti;
@@ -85,14 +91,16 @@ AppState state_from_args(const cli::Args& args) {
     s.have_data = true;
   } else if (args.has("synthetic")) {
     s.data.kind = PairSource::Kind::synthetic;
-    s.data.synthetic_seed = static_cast<std::uint64_t>(cli::parse_int(args.get("synthetic"), "--synthetic"));
+    s.data.synthetic_seed =
+        static_cast<std::uint64_t>(cli::parse_int(args.get("synthetic"), "--synthetic"));
     s.have_data = true;
   }
   if (args.has("pairs")) {
     s.pairs_file = args.get("pairs");
     s.pairs = read_pairs_file(s.pairs_file);
     for (std::size_t i = 0; i < s.pairs.size(); ++i)
-      if (s.pairs[i] == std::make_pair(s.data.source_frame, s.data.target_frame)) s.pair_index = static_cast<int>(i);
+      if (s.pairs[i] == std::make_pair(s.data.source_frame, s.data.target_frame))
+        s.pair_index = static_cast<int>(i);
   }
   if (!s.have_data && s.data.kitti_root.empty()) {
     s.data.kind = PairSource::Kind::kitti;
@@ -102,8 +110,10 @@ AppState state_from_args(const cli::Args& args) {
   }
   if (args.has("size")) {
     int w = 0, h = 0;
-    if (std::sscanf(args.get("size").c_str(), "%dx%d", &w, &h) != 2 || w < 320 || h < 240 || w > 8192 || h > 8192)
-      throw cli::UsageError("--size: expected WxH between 320x240 and 8192x8192, got '" + args.get("size") + "'");
+    if (std::sscanf(args.get("size").c_str(), "%dx%d", &w, &h) != 2 || w < 320 || h < 240 ||
+        w > 8192 || h > 8192)
+      throw cli::UsageError("--size: expected WxH between 320x240 and 8192x8192, got '" +
+                            args.get("size") + "'");
     s.width = w;
     s.height = h;
   }
@@ -114,20 +124,35 @@ int run_headless(const cli::Args& args, AppState state) {
   if (!args.has("screenshot") && !args.has("frames"))
     throw cli::UsageError("--headless needs --screenshot OUT.png (and/or --frames N)");
   g_osmesa.lib = dlopen("libOSMesa.so.8", RTLD_NOW | RTLD_LOCAL);
-  if (!g_osmesa.lib) throw Error(std::string("cannot load OSMesa (install libosmesa6): ") + dlerror());
-  g_osmesa.create = reinterpret_cast<decltype(g_osmesa.create)>(dlsym(g_osmesa.lib, "OSMesaCreateContextAttribs"));
-  g_osmesa.make_current = reinterpret_cast<decltype(g_osmesa.make_current)>(dlsym(g_osmesa.lib, "OSMesaMakeCurrent"));
-  g_osmesa.destroy = reinterpret_cast<decltype(g_osmesa.destroy)>(dlsym(g_osmesa.lib, "OSMesaDestroyContext"));
-  g_osmesa.get_proc = reinterpret_cast<decltype(g_osmesa.get_proc)>(dlsym(g_osmesa.lib, "OSMesaGetProcAddress"));
+  if (!g_osmesa.lib)
+    throw Error(std::string("cannot load OSMesa (install libosmesa6): ") + dlerror());
+  g_osmesa.create = reinterpret_cast<decltype(g_osmesa.create)>(
+      dlsym(g_osmesa.lib, "OSMesaCreateContextAttribs"));
+  g_osmesa.make_current =
+      reinterpret_cast<decltype(g_osmesa.make_current)>(dlsym(g_osmesa.lib, "OSMesaMakeCurrent"));
+  g_osmesa.destroy =
+      reinterpret_cast<decltype(g_osmesa.destroy)>(dlsym(g_osmesa.lib, "OSMesaDestroyContext"));
+  g_osmesa.get_proc =
+      reinterpret_cast<decltype(g_osmesa.get_proc)>(dlsym(g_osmesa.lib, "OSMesaGetProcAddress"));
   if (!g_osmesa.create || !g_osmesa.make_current || !g_osmesa.destroy || !g_osmesa.get_proc)
     throw Error("libOSMesa.so.8 lacks the OSMesa 11.2 context API");
-  const int attribs[] = {kOsmesaFormat, kOsmesaRgba, kOsmesaDepthBits, 24, kOsmesaProfile, kOsmesaCoreProfile,
-                         kOsmesaMajor, 3, kOsmesaMinor, 3, 0};
+  const int attribs[] = {kOsmesaFormat,
+                         kOsmesaRgba,
+                         kOsmesaDepthBits,
+                         24,
+                         kOsmesaProfile,
+                         kOsmesaCoreProfile,
+                         kOsmesaMajor,
+                         3,
+                         kOsmesaMinor,
+                         3,
+                         0};
   void* ctx = g_osmesa.create(attribs, nullptr);
   if (!ctx) throw Error("OSMesa could not create an OpenGL 3.3 core context");
   const int w = state.width, h = state.height;
   std::vector<unsigned char> buffer(static_cast<std::size_t>(w) * h * 4);
-  if (!g_osmesa.make_current(ctx, buffer.data(), GL_UNSIGNED_BYTE, w, h)) throw Error("OSMesaMakeCurrent failed");
+  if (!g_osmesa.make_current(ctx, buffer.data(), GL_UNSIGNED_BYTE, w, h))
+    throw Error("OSMesaMakeCurrent failed");
 
   Gl gl;
   std::string error;
@@ -138,12 +163,14 @@ int run_headless(const cli::Args& args, AppState state) {
     Studio studio(gl, std::move(state));
     if (!studio.init(error)) throw Error(error);
     studio.submit_data();
-    const double timeout = args.has("timeout") ? cli::parse_int(args.get("timeout"), "--timeout") : 600;
+    const double timeout =
+        args.has("timeout") ? cli::parse_int(args.get("timeout"), "--timeout") : 600;
     // Wait for the pipeline, with a progress line on stderr.
     const auto t0 = std::chrono::steady_clock::now();
     while (!studio.worker().wait_idle(0.5)) {
       const WorkerStatus st = studio.worker().status();
-      std::fprintf(stderr, "\r%-60s", (st.activity + " " + std::to_string(int(st.fraction * 100)) + " %").c_str());
+      std::fprintf(stderr, "\r%-60s",
+                   (st.activity + " " + std::to_string(int(st.fraction * 100)) + " %").c_str());
       if (std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() > timeout)
         throw Error("the computation did not finish within " + std::to_string(int(timeout)) + " s");
     }
@@ -154,7 +181,8 @@ int run_headless(const cli::Args& args, AppState state) {
     for (int i = 0; i < 3; ++i) studio.frame(w, h);
     if (args.has("screenshot")) {
       if (!studio.screenshot(args.get("screenshot"), w, h, error)) throw Error(error);
-      std::printf("wrote %s (%dx%d, %s)\n", args.get("screenshot").c_str(), w, h, gl.describe().c_str());
+      std::printf("wrote %s (%dx%d, %s)\n", args.get("screenshot").c_str(), w, h,
+                  gl.describe().c_str());
     }
     if (args.has("frames")) {
       const int n = std::max(1, cli::parse_int(args.get("frames"), "--frames"));
@@ -165,9 +193,11 @@ int run_headless(const cli::Args& args, AppState state) {
         ms.push_back(studio.last_frame_ms());
       }
       std::sort(ms.begin(), ms.end());
-      std::printf("frame time at %dx%d over %d frames: median %.1f ms, min %.1f ms, max %.1f ms; "
-                  "cloud uploads during them: %d\n",
-                  w, h, n, ms[ms.size() / 2], ms.front(), ms.back(), studio.scene().cloud_uploads() - uploads);
+      std::printf(
+          "frame time at %dx%d over %d frames: median %.1f ms, min %.1f ms, max %.1f ms; "
+          "cloud uploads during them: %d\n",
+          w, h, n, ms[ms.size() / 2], ms.front(), ms.back(),
+          studio.scene().cloud_uploads() - uploads);
     }
   }
   ImGui::DestroyContext();
@@ -176,12 +206,14 @@ int run_headless(const cli::Args& args, AppState state) {
 }
 
 int run_window(AppState state) {
-  glfwSetErrorCallback([](int code, const char* text) { std::fprintf(stderr, "GLFW error %d: %s\n", code, text); });
+  glfwSetErrorCallback(
+      [](int code, const char* text) { std::fprintf(stderr, "GLFW error %d: %s\n", code, text); });
   if (!glfwInit()) throw Error("cannot initialise GLFW (no display? use --headless)");
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
-  GLFWwindow* window = glfwCreateWindow(state.width, state.height, "Pagor Studio", nullptr, nullptr);
+  GLFWwindow* window =
+      glfwCreateWindow(state.width, state.height, "Pagor Studio", nullptr, nullptr);
   if (!window) {
     glfwTerminate();
     throw Error("cannot open a window with OpenGL 3.3 core");
@@ -229,14 +261,17 @@ int main(int argc, char** argv) {
   const auto options = studio::studio_options();
   for (const auto& w : words)
     if (w == "--help" || w == "-h") {
-      std::printf("usage: pagor-studio [data] [--session S.json] [--headless --screenshot OUT.png]\n\noptions:\n%s",
-                  cli::format_options(options).c_str());
+      std::printf(
+          "usage: pagor-studio [data] [--session S.json] [--headless --screenshot "
+          "OUT.png]\n\noptions:\n%s",
+          cli::format_options(options).c_str());
       return 0;
     }
   try {
     const cli::Args args(words, options);
     studio::AppState state = studio::state_from_args(args);
-    return args.has("headless") ? studio::run_headless(args, std::move(state)) : studio::run_window(std::move(state));
+    return args.has("headless") ? studio::run_headless(args, std::move(state))
+                                : studio::run_window(std::move(state));
   } catch (const cli::UsageError& e) {
     std::fprintf(stderr, "pagor-studio: usage error: %s\n", e.what());
     return 2;

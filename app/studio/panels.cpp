@@ -32,10 +32,11 @@ bool enum_combo(const char* label, E& value, std::initializer_list<E> options) {
   return changed;
 }
 
-bool slider_double(const char* label, double& v, double lo, double hi, const char* fmt, bool log = false) {
+bool slider_double(const char* label, double& v, double lo, double hi, const char* fmt,
+                   bool log = false) {
   float f = static_cast<float>(v);
-  const bool changed = ImGui::SliderFloat(label, &f, static_cast<float>(lo), static_cast<float>(hi), fmt,
-                                          log ? ImGuiSliderFlags_Logarithmic : 0);
+  const bool changed = ImGui::SliderFloat(label, &f, static_cast<float>(lo), static_cast<float>(hi),
+                                          fmt, log ? ImGuiSliderFlags_Logarithmic : 0);
   if (changed) v = f;
   return changed;
 }
@@ -102,7 +103,8 @@ void data_panel(UiContext& ui) {
     ImGui::InputText("target labels", &d.target_labels);
   } else {
     int seed = static_cast<int>(d.synthetic_seed);
-    if (ImGui::InputInt("seed", &seed)) d.synthetic_seed = static_cast<std::uint64_t>(std::max(0, seed));
+    if (ImGui::InputInt("seed", &seed))
+      d.synthetic_seed = static_cast<std::uint64_t>(std::max(0, seed));
   }
   if (ImGui::Button("Open", ImVec2(-1, 0))) {
     s.have_data = true;
@@ -117,7 +119,8 @@ void parameters_panel(UiContext& ui) {
   bool changed = false;
   GraphParams& g = c.graph;
   const bool ratio = g.trim == TrimKind::ratio;
-  ImGui::TextDisabled("pyramid: %zu levels, TRIM %s", g.thresholds.size(), ratio ? "ratio [-]" : "difference [m]");
+  ImGui::TextDisabled("pyramid: %zu levels, TRIM %s", g.thresholds.size(),
+                      ratio ? "ratio [-]" : "difference [m]");
   changed |= enum_combo("TRIM", g.trim, {TrimKind::ratio, TrimKind::difference});
   const double lo = ratio ? 0.002 : 0.02, hi = ratio ? 1.0 : 5.0;
   for (std::size_t l = 0; l < g.thresholds.size(); ++l) {
@@ -137,7 +140,8 @@ void parameters_panel(UiContext& ui) {
     changed = true;
   }
   changed |= enum_combo("affinity", g.affinity, {AffinityKind::binary, AffinityKind::gaussian});
-  if (g.affinity == AffinityKind::gaussian) changed |= slider_double("\xcf\x83 / \xce\xb5", g.sigma_ratio, 0.05, 2.0, "%.2f");
+  if (g.affinity == AffinityKind::gaussian)
+    changed |= slider_double("\xcf\x83 / \xce\xb5", g.sigma_ratio, 0.05, 2.0, "%.2f");
   changed |= enum_combo("clique solver", c.clique.solver,
                         {CliqueSolver::cascaded, CliqueSolver::independent, CliqueSolver::exact});
   changed |= ImGui::Checkbox("k-core pruning", &c.clique.prune);
@@ -167,15 +171,18 @@ void parameters_panel(UiContext& ui) {
                                     ImGuiSliderFlags_Logarithmic);
       } else {
         changed |= slider_double("normal r [m]", p.normal_radius, 0.1, 5.0, "%.2f m", true);
-        changed |= slider_double("feature r [m]", p.feature_radius, p.normal_radius * 1.05, 10.0, "%.2f m", true);
+        changed |= slider_double("feature r [m]", p.feature_radius, p.normal_radius * 1.05, 10.0,
+                                 "%.2f m", true);
       }
       ImGui::TreePop();
     }
     ImGui::PopID();
   }
   section("success criterion");
-  changed |= slider_double("max t err [m]", c.evaluation.max_translation_error, 0.1, 10.0, "%.1f m");
-  changed |= slider_double("max r err [\xc2\xb0]", c.evaluation.max_rotation_error, 0.5, 30.0, "%.1f\xc2\xb0");
+  changed |=
+      slider_double("max t err [m]", c.evaluation.max_translation_error, 0.1, 10.0, "%.1f m");
+  changed |= slider_double("max r err [\xc2\xb0]", c.evaluation.max_rotation_error, 0.5, 30.0,
+                           "%.1f\xc2\xb0");
   if (ImGui::Button("defaults")) {
     c = default_config();
     changed = true;

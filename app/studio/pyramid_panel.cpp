@@ -22,7 +22,8 @@ Eigen::Vector3d ypr_deg(const Eigen::Matrix3d& R) {
   return Eigen::Vector3d(yaw, pitch, roll) * kRadToDeg;
 }
 
-const ImVec4 kGood(0.35f, 0.9f, 0.45f, 1.0f), kBad(1.0f, 0.4f, 0.4f, 1.0f), kDim(0.6f, 0.6f, 0.6f, 1.0f);
+const ImVec4 kGood(0.35f, 0.9f, 0.45f, 1.0f), kBad(1.0f, 0.4f, 0.4f, 1.0f),
+    kDim(0.6f, 0.6f, 0.6f, 1.0f);
 
 void bar_chart(const Snapshot& s, int shown) {
   ImGui::TextDisabled("score D per level [m], lower is better");
@@ -37,20 +38,27 @@ void bar_chart(const Snapshot& s, int shown) {
   const double base_value = std::isfinite(low) ? 0.8 * low : 0.0;
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   const float width = ImGui::GetContentRegionAvail().x, label_h = 16.0f;
-  const float height = std::max(60.0f, ImGui::GetContentRegionAvail().y - label_h - ImGui::GetTextLineHeightWithSpacing() - 4.0f);
+  const float height = std::max(60.0f, ImGui::GetContentRegionAvail().y - label_h -
+                                           ImGui::GetTextLineHeightWithSpacing() - 4.0f);
   ImDrawList* dl = ImGui::GetWindowDrawList();
-  dl->AddRectFilled(origin, ImVec2(origin.x + width, origin.y + height + label_h), IM_COL32(30, 32, 38, 255));
+  dl->AddRectFilled(origin, ImVec2(origin.x + width, origin.y + height + label_h),
+                    IM_COL32(30, 32, 38, 255));
   const float slot = width / std::max(n, 1);
   for (int i = 0; i < n; ++i) {
     const auto& l = s.levels[static_cast<std::size_t>(i)];
-    const float x0 = origin.x + slot * i + slot * 0.15f, x1 = origin.x + slot * (i + 1) - slot * 0.15f;
+    const float x0 = origin.x + slot * i + slot * 0.15f,
+                x1 = origin.x + slot * (i + 1) - slot * 0.15f;
     const float base = origin.y + height;
     char text[32];
     if (std::isfinite(l.score) && top > 0) {
-      const float h = static_cast<float>((l.score - base_value) / (top - base_value)) * (height - 18.0f);
-      const ImU32 color = i == s.selected ? IM_COL32(90, 220, 120, 255) : IM_COL32(90, 130, 200, 255);
+      const float h =
+          static_cast<float>((l.score - base_value) / (top - base_value)) * (height - 18.0f);
+      const ImU32 color =
+          i == s.selected ? IM_COL32(90, 220, 120, 255) : IM_COL32(90, 130, 200, 255);
       dl->AddRectFilled(ImVec2(x0, base - h), ImVec2(x1, base), color);
-      if (i == shown) dl->AddRect(ImVec2(x0 - 2, base - h - 2), ImVec2(x1 + 2, base), IM_COL32(255, 255, 255, 255), 0, 0, 2.0f);
+      if (i == shown)
+        dl->AddRect(ImVec2(x0 - 2, base - h - 2), ImVec2(x1 + 2, base),
+                    IM_COL32(255, 255, 255, 255), 0, 0, 2.0f);
       std::snprintf(text, sizeof(text), "%.0f", l.score);
       dl->AddText(ImVec2(x0, base - h - 15.0f), IM_COL32(220, 220, 220, 255), text);
     } else {
@@ -73,21 +81,25 @@ void pyramid_panel(UiContext& ui) {
   }
   ImGui::Text("%s", s->description.c_str());
   std::size_t lm_s = 0, lm_t = 0;
-  for (const auto& c : s->source_landmarks.classes) lm_s += c.method == LandmarkMethod::cluster ? c.landmarks : 0;
-  for (const auto& c : s->target_landmarks.classes) lm_t += c.method == LandmarkMethod::cluster ? c.landmarks : 0;
+  for (const auto& c : s->source_landmarks.classes)
+    lm_s += c.method == LandmarkMethod::cluster ? c.landmarks : 0;
+  for (const auto& c : s->target_landmarks.classes)
+    lm_t += c.method == LandmarkMethod::cluster ? c.landmarks : 0;
   ImGui::TextDisabled("%zu / %zu cluster landmarks, %zu correspondences%s", lm_s, lm_t,
                       s->correspondences.size(), s->correspondences_capped ? " (capped)" : "");
   const int shown = shown_level(ui.state.view, s->selected, static_cast<int>(s->levels.size()));
   const float chart_w = std::min(330.0f, ImGui::GetContentRegionAvail().x * 0.34f);
   ImGui::BeginChild("levels", ImVec2(ImGui::GetContentRegionAvail().x - chart_w - 8.0f, 0));
   const bool gt = s->ground_truth.has_value();
-  const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_Borders | ImGuiTableFlags_ScrollX |
-                                ImGuiTableFlags_SizingFixedFit;
+  const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_Borders |
+                                ImGuiTableFlags_ScrollX | ImGuiTableFlags_SizingFixedFit;
   const int columns = gt ? 11 : 8;
-  const float table_h = ImGui::GetTextLineHeightWithSpacing() * (static_cast<float>(s->levels.size()) + 2.4f);
+  const float table_h =
+      ImGui::GetTextLineHeightWithSpacing() * (static_cast<float>(s->levels.size()) + 2.4f);
   if (ImGui::BeginTable("pyramid", columns, flags, ImVec2(0, table_h))) {
     ImGui::TableSetupScrollFreeze(1, 1);
-    for (const char* h : {"level", "\xce\xb5", "verts", "edges", "clique", "D [m]"}) ImGui::TableSetupColumn(h);
+    for (const char* h : {"level", "\xce\xb5", "verts", "edges", "clique", "D [m]"})
+      ImGui::TableSetupColumn(h);
     if (gt) {
       ImGui::TableSetupColumn("t err [m]");
       ImGui::TableSetupColumn("r err [\xc2\xb0]");
@@ -113,15 +125,18 @@ void pyramid_panel(UiContext& ui) {
       ImGui::TableNextColumn();
       ImGui::Text("%zu", l.clique.size());
       ImGui::TableNextColumn();
-      if (l.pose.valid) ImGui::Text("%.1f", l.score);
-      else ImGui::TextColored(kDim, "invalid");
+      if (l.pose.valid)
+        ImGui::Text("%.1f", l.score);
+      else
+        ImGui::TextColored(kDim, "invalid");
       if (gt) {
         ImGui::TableNextColumn();
         if (l.error) ImGui::Text("%.2f", l.error->translation);
         ImGui::TableNextColumn();
         if (l.error) ImGui::Text("%.2f", l.error->rotation_deg);
         ImGui::TableNextColumn();
-        if (l.error) ImGui::TextColored(l.error->success ? kGood : kBad, l.error->success ? "yes" : "no");
+        if (l.error)
+          ImGui::TextColored(l.error->success ? kGood : kBad, l.error->success ? "yes" : "no");
       }
       ImGui::TableNextColumn();
       if (l.pose.valid) {
@@ -136,8 +151,9 @@ void pyramid_panel(UiContext& ui) {
     }
     ImGui::EndTable();
   }
-  ImGui::TextDisabled("* selected: lowest D (\xce\xbc %.2f m, %zu points). Click a row to view its level.",
-                      s->config.verification.mu, s->verification_points);
+  ImGui::TextDisabled(
+      "* selected: lowest D (\xce\xbc %.2f m, %zu points). Click a row to view its level.",
+      s->config.verification.mu, s->verification_points);
 
   ImGui::EndChild();
   ImGui::SameLine();
@@ -159,9 +175,10 @@ void pyramid_panel(UiContext& ui) {
   if (gt) {
     ImGui::Spacing();
     if (s->selected_error)
-      ImGui::TextColored(s->selected_error->success ? kGood : kBad, "selected: %s (%.2f m, %.2f\xc2\xb0)",
-                         s->selected_error->success ? "SUCCESS" : "FAILURE", s->selected_error->translation,
-                         s->selected_error->rotation_deg);
+      ImGui::TextColored(s->selected_error->success ? kGood : kBad,
+                         "selected: %s (%.2f m, %.2f\xc2\xb0)",
+                         s->selected_error->success ? "SUCCESS" : "FAILURE",
+                         s->selected_error->translation, s->selected_error->rotation_deg);
     else
       ImGui::TextColored(kBad, "selected: none");
     ImGui::SameLine();

@@ -6,17 +6,23 @@
 // exact; paths come from CMake as PAGOR_RES_<name> definitions.
 #define PAGOR_STR2(x) #x
 #define PAGOR_STR(x) PAGOR_STR2(x)
-#define PAGOR_EMBED(sym, path)                                   \
-  __asm__(".section .rodata\n"                                   \
-          ".balign 16\n"                                         \
-          ".global pagor_res_" #sym "\n"                         \
-          "pagor_res_" #sym ":\n"                                \
-          ".incbin \"" path "\"\n"                               \
-          ".global pagor_res_" #sym "_end\n"                     \
-          "pagor_res_" #sym "_end:\n"                            \
-          ".byte 0\n"                                            \
-          ".previous\n");                                        \
-  extern "C" const unsigned char pagor_res_##sym[];              \
+#define PAGOR_EMBED(sym, path)                      \
+  __asm__(                                          \
+      ".section .rodata\n"                          \
+      ".balign 16\n"                                \
+      ".global pagor_res_" #sym                     \
+      "\n"                                          \
+      "pagor_res_" #sym                             \
+      ":\n"                                         \
+      ".incbin \"" path                             \
+      "\"\n"                                        \
+      ".global pagor_res_" #sym                     \
+      "_end\n"                                      \
+      "pagor_res_" #sym                             \
+      "_end:\n"                                     \
+      ".byte 0\n"                                   \
+      ".previous\n");                               \
+  extern "C" const unsigned char pagor_res_##sym[]; \
   extern "C" const unsigned char pagor_res_##sym##_end[];
 
 PAGOR_EMBED(points_vert, PAGOR_STR(PAGOR_RES_points_vert))

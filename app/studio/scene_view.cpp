@@ -17,7 +17,8 @@ constexpr int kFloatsPerVertex = 4;  // x, y, z, packed RGBA
 float pack(const Rgba& c) {
   float f;
   std::uint32_t u = static_cast<std::uint32_t>(c[0]) | (static_cast<std::uint32_t>(c[1]) << 8) |
-                    (static_cast<std::uint32_t>(c[2]) << 16) | (static_cast<std::uint32_t>(c[3]) << 24);
+                    (static_cast<std::uint32_t>(c[2]) << 16) |
+                    (static_cast<std::uint32_t>(c[3]) << 24);
   static_assert(sizeof(f) == sizeof(u));
   std::memcpy(&f, &u, sizeof(f));
   return f;
@@ -37,7 +38,8 @@ ClassColors::ClassColors() {
   const auto j = nlohmann::json::parse(resource("class_colors.json").text());
   for (const auto& item : j.items()) {
     if (!item.value().is_array() || item.value().size() != 3) continue;
-    colors_[item.key()] = {item.value()[0].get<unsigned char>(), item.value()[1].get<unsigned char>(),
+    colors_[item.key()] = {item.value()[0].get<unsigned char>(),
+                           item.value()[1].get<unsigned char>(),
                            item.value()[2].get<unsigned char>(), 255};
   }
 }
@@ -72,7 +74,8 @@ bool SceneView::init(const Gl& gl, std::string& error) {
   u_use_uniform_ = gl.GetUniformLocation(program_, "u_use_uniform_color");
   u_color_ = gl.GetUniformLocation(program_, "u_color");
   u_round_ = gl.GetUniformLocation(program_, "u_round");
-  for (Buffer* b : {&source_, &target_, &landmarks_src_, &landmarks_tgt_, &keypoints_src_, &keypoints_tgt_, &lines_}) {
+  for (Buffer* b : {&source_, &target_, &landmarks_src_, &landmarks_tgt_, &keypoints_src_,
+                    &keypoints_tgt_, &lines_}) {
     gl.GenVertexArrays(1, &b->vao);
     gl.GenBuffers(1, &b->vbo);
     gl.BindVertexArray(b->vao);
@@ -89,7 +92,8 @@ bool SceneView::init(const Gl& gl, std::string& error) {
 
 void SceneView::shutdown() {
   if (!gl_) return;
-  for (Buffer* b : {&source_, &target_, &landmarks_src_, &landmarks_tgt_, &keypoints_src_, &keypoints_tgt_, &lines_}) {
+  for (Buffer* b : {&source_, &target_, &landmarks_src_, &landmarks_tgt_, &keypoints_src_,
+                    &keypoints_tgt_, &lines_}) {
     gl_->DeleteBuffers(1, &b->vbo);
     gl_->DeleteVertexArrays(1, &b->vao);
   }
@@ -102,7 +106,8 @@ void SceneView::shutdown() {
 
 void SceneView::upload(Buffer& b, const std::vector<float>& v) {
   gl_->BindBuffer(GL_ARRAY_BUFFER, b.vbo);
-  gl_->BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(v.size() * sizeof(float)), v.data(), GL_STATIC_DRAW);
+  gl_->BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(v.size() * sizeof(float)), v.data(),
+                  GL_STATIC_DRAW);
   b.count = static_cast<GLsizei>(v.size() / kFloatsPerVertex);
 }
 
@@ -110,7 +115,8 @@ void SceneView::update(const Snapshot& s, const ViewState& view, const Transform
   // Dense clouds: only when the data or the label scheme changes.
   const std::string scheme = s.config.label_scheme.name + "/" + s.config.label_scheme.class_list();
   if (s.data_generation != cloud_generation_ || scheme != cloud_scheme_) {
-    for (const auto& [cloud, buffer] : {std::pair{s.source.get(), &source_}, std::pair{s.target.get(), &target_}}) {
+    for (const auto& [cloud, buffer] :
+         {std::pair{s.source.get(), &source_}, std::pair{s.target.get(), &target_}}) {
       std::vector<float> v;
       if (cloud) {
         const std::vector<Rgba> colors = class_colors_.per_point(*cloud, s.config.label_scheme);
@@ -133,33 +139,40 @@ void SceneView::update(const Snapshot& s, const ViewState& view, const Transform
   overlay_request_ = s.request;
   overlay_key_ = key;
 
-  std::vector<char> used_src(s.source_landmarks.landmarks.size(), 0), used_tgt(s.target_landmarks.landmarks.size(), 0);
+  std::vector<char> used_src(s.source_landmarks.landmarks.size(), 0),
+      used_tgt(s.target_landmarks.landmarks.size(), 0);
   for (const auto& c : s.correspondences) {
     used_src[static_cast<std::size_t>(c.source)] = 1;
     used_tgt[static_cast<std::size_t>(c.target)] = 1;
   }
-  const auto landmark_vertices = [&](const LandmarkSet& set, const std::vector<char>& used, bool source,
-                                     LandmarkKind kind) {
+  const auto landmark_vertices = [&](const LandmarkSet& set, const std::vector<char>& used,
+                                     bool source, LandmarkKind kind) {
     std::vector<float> v;
     for (std::size_t i = 0; i < set.landmarks.size(); ++i) {
       const Landmark& lm = set.landmarks[i];
       if (lm.kind != kind || (kind == LandmarkKind::keypoint && !used[i])) continue;
-      const Rgba color = view.color == ColorMode::by_class
-                             ? class_colors_.of(set.classes[static_cast<std::size_t>(lm.class_index)].name)
-                             : (source ? Palette::source : Palette::target);
+      const Rgba color =
+          view.color == ColorMode::by_class
+              ? class_colors_.of(set.classes[static_cast<std::size_t>(lm.class_index)].name)
+              : (source ? Palette::source : Palette::target);
       push(v, source ? apply(pose, lm.centroid) : lm.centroid.cast<float>(), color);
     }
     return v;
   };
-  upload(landmarks_src_, landmark_vertices(s.source_landmarks, used_src, true, LandmarkKind::cluster));
-  upload(landmarks_tgt_, landmark_vertices(s.target_landmarks, used_tgt, false, LandmarkKind::cluster));
-  upload(keypoints_src_, landmark_vertices(s.source_landmarks, used_src, true, LandmarkKind::keypoint));
-  upload(keypoints_tgt_, landmark_vertices(s.target_landmarks, used_tgt, false, LandmarkKind::keypoint));
+  upload(landmarks_src_,
+         landmark_vertices(s.source_landmarks, used_src, true, LandmarkKind::cluster));
+  upload(landmarks_tgt_,
+         landmark_vertices(s.target_landmarks, used_tgt, false, LandmarkKind::cluster));
+  upload(keypoints_src_,
+         landmark_vertices(s.source_landmarks, used_src, true, LandmarkKind::keypoint));
+  upload(keypoints_tgt_,
+         landmark_vertices(s.target_landmarks, used_tgt, false, LandmarkKind::keypoint));
 
   std::vector<float> lines;
   if (level >= 0) {
     std::vector<char> in_clique(s.correspondences.size(), 0);
-    for (int v : s.levels[static_cast<std::size_t>(level)].clique) in_clique[static_cast<std::size_t>(v)] = 1;
+    for (int v : s.levels[static_cast<std::size_t>(level)].clique)
+      in_clique[static_cast<std::size_t>(v)] = 1;
     // Faint ones first, so that clique lines are drawn over them.
     for (int pass = 0; pass < 2; ++pass) {
       for (std::size_t i = 0; i < s.correspondences.size(); ++i) {
@@ -168,7 +181,8 @@ void SceneView::update(const Snapshot& s, const ViewState& view, const Transform
         if (pass == 1 && !in_clique[i]) continue;
         Rgba color = Palette::other;
         if (in_clique[i])
-          color = s.ground_truth && !true_inlier(c, *s.ground_truth, s.config.evaluation.max_translation_error)
+          color = s.ground_truth && !true_inlier(c, *s.ground_truth,
+                                                 s.config.evaluation.max_translation_error)
                       ? Palette::clique_outlier
                       : Palette::clique;
         push(lines, apply(pose, c.p), color);
@@ -201,8 +215,8 @@ void SceneView::resize(int width, int height) {
   fb_height_ = height;
 }
 
-void SceneView::draw(const Buffer& b, GLenum mode, const Eigen::Matrix4f& mvp, float size, bool round,
-                     const Rgba* uniform_color) {
+void SceneView::draw(const Buffer& b, GLenum mode, const Eigen::Matrix4f& mvp, float size,
+                     bool round, const Rgba* uniform_color) {
   if (b.count == 0) return;
   const Gl& gl = *gl_;
   gl.UniformMatrix4fv(u_mvp_, 1, GL_FALSE, mvp.data());
@@ -236,9 +250,11 @@ void SceneView::render(int width, int height, const Camera& camera, const ViewSt
   const Eigen::Matrix4f vp = camera.projection(static_cast<float>(width) / height) * camera.view();
   const Eigen::Matrix4f source_mvp = vp * pose.cast<float>();
   const bool by_cloud = view.color == ColorMode::by_cloud;
-  if (view.layers.target) draw(target_, GL_POINTS, vp, view.point_size, false, by_cloud ? &Palette::target : nullptr);
+  if (view.layers.target)
+    draw(target_, GL_POINTS, vp, view.point_size, false, by_cloud ? &Palette::target : nullptr);
   if (view.layers.source)
-    draw(source_, GL_POINTS, source_mvp, view.point_size, false, by_cloud ? &Palette::source : nullptr);
+    draw(source_, GL_POINTS, source_mvp, view.point_size, false,
+         by_cloud ? &Palette::source : nullptr);
   // Overlays on top of the clouds: lines without depth writes, landmarks last.
   gl.DepthMask(GL_FALSE);
   gl.Disable(GL_DEPTH_TEST);

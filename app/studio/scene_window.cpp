@@ -20,9 +20,11 @@ Eigen::Vector3f apply(const Transform& T, const Eigen::Vector3d& p) {
   return (T.block<3, 3>(0, 0) * p + T.block<3, 1>(0, 3)).cast<float>();
 }
 
-float segment_distance(const Eigen::Vector2f& m, const Eigen::Vector2f& a, const Eigen::Vector2f& b) {
+float segment_distance(const Eigen::Vector2f& m, const Eigen::Vector2f& a,
+                       const Eigen::Vector2f& b) {
   const Eigen::Vector2f ab = b - a;
-  const float t = ab.squaredNorm() > 0 ? std::clamp((m - a).dot(ab) / ab.squaredNorm(), 0.0f, 1.0f) : 0.0f;
+  const float t =
+      ab.squaredNorm() > 0 ? std::clamp((m - a).dot(ab) / ab.squaredNorm(), 0.0f, 1.0f) : 0.0f;
   return (a + t * ab - m).norm();
 }
 
@@ -31,8 +33,8 @@ void landmark_tooltip(const LandmarkSet& set, int index, bool source) {
   ImGui::Text("%s landmark %d: %s (%s)", source ? "source" : "target", index,
               set.classes[static_cast<std::size_t>(lm.class_index)].name.c_str(),
               lm.kind == LandmarkKind::cluster ? "cluster" : "FPFH keypoint");
-  ImGui::Text("centroid (%.2f, %.2f, %.2f) m, %zu points", lm.centroid.x(), lm.centroid.y(), lm.centroid.z(),
-              lm.point_count);
+  ImGui::Text("centroid (%.2f, %.2f, %.2f) m, %zu points", lm.centroid.x(), lm.centroid.y(),
+              lm.centroid.z(), lm.point_count);
   if (lm.kind == LandmarkKind::cluster)
     ImGui::Text("spread (std. dev.) %.2f / %.2f / %.2f m", std::sqrt(lm.covariance(0, 0)),
                 std::sqrt(lm.covariance(1, 1)), std::sqrt(lm.covariance(2, 2)));
@@ -40,10 +42,13 @@ void landmark_tooltip(const LandmarkSet& set, int index, bool source) {
 
 void correspondence_tooltip(const Snapshot& s, int index, int level) {
   const Correspondence& c = s.correspondences[static_cast<std::size_t>(index)];
-  ImGui::Text("correspondence %d: %s", index, s.source_landmarks.classes[static_cast<std::size_t>(c.class_index)].name.c_str());
-  ImGui::Text("source landmark %d -> target landmark %d, rank score %.2f", c.source, c.target, c.score);
+  ImGui::Text("correspondence %d: %s", index,
+              s.source_landmarks.classes[static_cast<std::size_t>(c.class_index)].name.c_str());
+  ImGui::Text("source landmark %d -> target landmark %d, rank score %.2f", c.source, c.target,
+              c.score);
   if (s.ground_truth) {
-    const double r = (s.ground_truth->block<3, 3>(0, 0) * c.p + s.ground_truth->block<3, 1>(0, 3) - c.q).norm();
+    const double r =
+        (s.ground_truth->block<3, 3>(0, 0) * c.p + s.ground_truth->block<3, 1>(0, 3) - c.q).norm();
     ImGui::Text("ground truth residual %.2f m: %s (tolerance %.1f m)", r,
                 r <= s.config.evaluation.max_translation_error ? "true inlier" : "outlier",
                 s.config.evaluation.max_translation_error);
@@ -58,24 +63,28 @@ void correspondence_tooltip(const Snapshot& s, int index, int level) {
     trims.push_back(trim_value(s.config.graph.trim, (c.p - o.p).norm(), (c.q - o.q).norm()));
   }
   std::sort(trims.begin(), trims.end());
-  ImGui::Text("level %d (eps %.3f): %s the clique", level, s.levels[static_cast<std::size_t>(level)].epsilon,
-              member ? "in" : "not in");
+  ImGui::Text("level %d (eps %.3f): %s the clique", level,
+              s.levels[static_cast<std::size_t>(level)].epsilon, member ? "in" : "not in");
   if (!trims.empty())
     ImGui::Text("TRIM (%s) to the %zu clique members: min %.4f, median %.4f, max %.4f",
-                to_string(s.config.graph.trim), trims.size(), trims.front(), trims[trims.size() / 2], trims.back());
+                to_string(s.config.graph.trim), trims.size(), trims.front(),
+                trims[trims.size() / 2], trims.back());
 }
 
 void legend_item(ImDrawList* dl, ImVec2& at, const Rgba& c, const char* text, bool line) {
   const ImU32 col = IM_COL32(c[0], c[1], c[2], std::max<int>(c[3], 160));
-  if (line) dl->AddLine(ImVec2(at.x, at.y + 7), ImVec2(at.x + 16, at.y + 7), col, 2.0f);
-  else dl->AddCircleFilled(ImVec2(at.x + 8, at.y + 7), 5.0f, col);
+  if (line)
+    dl->AddLine(ImVec2(at.x, at.y + 7), ImVec2(at.x + 16, at.y + 7), col, 2.0f);
+  else
+    dl->AddCircleFilled(ImVec2(at.x + 8, at.y + 7), 5.0f, col);
   dl->AddText(ImVec2(at.x + 22, at.y), IM_COL32(230, 230, 230, 255), text);
   at.y += 17;
 }
 
 void legend(const Snapshot& s, const AppState& state, ImVec2 at) {
   ImDrawList* dl = ImGui::GetWindowDrawList();
-  dl->AddRectFilled(ImVec2(at.x - 4, at.y - 4), ImVec2(at.x + 210, at.y + 92), IM_COL32(0, 0, 0, 150), 4.0f);
+  dl->AddRectFilled(ImVec2(at.x - 4, at.y - 4), ImVec2(at.x + 210, at.y + 92),
+                    IM_COL32(0, 0, 0, 150), 4.0f);
   const bool gt = s.ground_truth.has_value();
   legend_item(dl, at, Palette::clique, gt ? "clique, true inlier" : "clique correspondence", true);
   if (gt) legend_item(dl, at, Palette::clique_outlier, "clique, outlier (ground truth)", true);
@@ -101,7 +110,8 @@ Transform shown_source_pose(const AppState& state, const Snapshot& s) {
         return s.levels[static_cast<std::size_t>(level)].pose.T_target_source;
       break;
     }
-    case PoseShown::identity: break;
+    case PoseShown::identity:
+      break;
   }
   return Transform::Identity();
 }
@@ -144,14 +154,17 @@ void scene_window(UiContext& ui) {
   if (!hovered) return;
 
   ImGuiIO& io = ImGui::GetIO();
-  if (ImGui::IsMouseDragging(ImGuiMouseButton_Left)) state.camera.orbit(io.MouseDelta.x, io.MouseDelta.y);
-  if (ImGui::IsMouseDragging(ImGuiMouseButton_Right) || ImGui::IsMouseDragging(ImGuiMouseButton_Middle))
+  if (ImGui::IsMouseDragging(ImGuiMouseButton_Left))
+    state.camera.orbit(io.MouseDelta.x, io.MouseDelta.y);
+  if (ImGui::IsMouseDragging(ImGuiMouseButton_Right) ||
+      ImGui::IsMouseDragging(ImGuiMouseButton_Middle))
     state.camera.pan(io.MouseDelta.x, io.MouseDelta.y, static_cast<float>(h));
   if (io.MouseWheel != 0) state.camera.zoom(io.MouseWheel);
 
   // Hover: the nearest landmark within a few pixels, else the nearest correspondence line.
   const Eigen::Vector2f mouse(io.MousePos.x - origin.x, io.MousePos.y - origin.y);
-  const Eigen::Matrix4f vp = state.camera.projection(static_cast<float>(w) / h) * state.camera.view();
+  const Eigen::Matrix4f vp =
+      state.camera.projection(static_cast<float>(w) / h) * state.camera.view();
   float best = kLandmarkPickPx;
   int best_index = -1;
   bool best_source = false;
@@ -160,7 +173,8 @@ void scene_window(UiContext& ui) {
       const LandmarkSet& set = side == 0 ? s->source_landmarks : s->target_landmarks;
       for (std::size_t i = 0; i < set.landmarks.size(); ++i) {
         if (set.landmarks[i].kind != LandmarkKind::cluster) continue;
-        const Eigen::Vector3f p = side == 0 ? apply(pose, set.landmarks[i].centroid) : set.landmarks[i].centroid.cast<float>();
+        const Eigen::Vector3f p = side == 0 ? apply(pose, set.landmarks[i].centroid)
+                                            : set.landmarks[i].centroid.cast<float>();
         Eigen::Vector2f px;
         if (!project_to_screen(vp, p, static_cast<float>(w), static_cast<float>(h), px)) continue;
         const float d = (px - mouse).norm();
@@ -174,7 +188,8 @@ void scene_window(UiContext& ui) {
   }
   if (best_index >= 0) {
     ImGui::BeginTooltip();
-    landmark_tooltip(best_source ? s->source_landmarks : s->target_landmarks, best_index, best_source);
+    landmark_tooltip(best_source ? s->source_landmarks : s->target_landmarks, best_index,
+                     best_source);
     ImGui::EndTooltip();
     return;
   }
@@ -219,11 +234,13 @@ void status_bar(UiContext& ui) {
       ran += std::string(ran.empty() ? "" : ", ") + stage_name(static_cast<Stage>(i));
       total += s.stage_ms[k];
     }
-    ImGui::Text("ready | last run %.0f ms: %s", total, ran.empty() ? "nothing to recompute" : ran.c_str());
+    ImGui::Text("ready | last run %.0f ms: %s", total,
+                ran.empty() ? "nothing to recompute" : ran.c_str());
     if (ImGui::IsItemHovered()) {
       ImGui::BeginTooltip();
       for (int i = 0; i < kStageCount; ++i)
-        ImGui::Text("%-18s %8.1f ms%s", stage_name(static_cast<Stage>(i)), s.stage_ms[static_cast<std::size_t>(i)],
+        ImGui::Text("%-18s %8.1f ms%s", stage_name(static_cast<Stage>(i)),
+                    s.stage_ms[static_cast<std::size_t>(i)],
                     s.stage_ran[static_cast<std::size_t>(i)] ? "" : " (cached)");
       ImGui::EndTooltip();
     }
@@ -234,14 +251,16 @@ void status_bar(UiContext& ui) {
   ImGui::TextDisabled("| frame %.1f ms", ui.frame_ms);
   if (ui.snapshot && !ui.snapshot->warnings.empty()) {
     ImGui::SameLine();
-    ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "| %zu warnings", ui.snapshot->warnings.size());
+    ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "| %zu warnings",
+                       ui.snapshot->warnings.size());
     if (ImGui::IsItemHovered()) {
       ImGui::BeginTooltip();
       for (const auto& w : ui.snapshot->warnings) ImGui::TextUnformatted(w.c_str());
       ImGui::EndTooltip();
     }
   }
-  const std::string& error = !st.error.empty() ? st.error : (ui.state.message_is_error ? ui.state.message : "");
+  const std::string& error =
+      !st.error.empty() ? st.error : (ui.state.message_is_error ? ui.state.message : "");
   if (!error.empty()) {
     ImGui::SameLine();
     ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.35f, 1.0f), "| error: %s", error.c_str());

@@ -12,19 +12,28 @@ namespace {
 
 using json = nlohmann::json;
 
-const char* color_name(ColorMode c) { return c == ColorMode::by_class ? "class" : "cloud"; }
+const char* color_name(ColorMode c) {
+  return c == ColorMode::by_class ? "class" : "cloud";
+}
 const char* pose_name(PoseShown p) {
-  return p == PoseShown::selected ? "selected" : p == PoseShown::ground_truth ? "ground_truth" : "identity";
+  return p == PoseShown::selected       ? "selected"
+         : p == PoseShown::ground_truth ? "ground_truth"
+                                        : "identity";
 }
 
 json data_json(const PairSource& d) {
   switch (d.kind) {
     case PairSource::Kind::kitti:
-      return {{"kind", "kitti"}, {"kitti_root", d.kitti_root}, {"sequence", d.sequence},
+      return {{"kind", "kitti"},
+              {"kitti_root", d.kitti_root},
+              {"sequence", d.sequence},
               {"pair", {d.source_frame, d.target_frame}}};
     case PairSource::Kind::files:
-      return {{"kind", "files"}, {"source", d.source}, {"source_labels", d.source_labels},
-              {"target", d.target}, {"target_labels", d.target_labels}};
+      return {{"kind", "files"},
+              {"source", d.source},
+              {"source_labels", d.source_labels},
+              {"target", d.target},
+              {"target_labels", d.target_labels}};
     case PairSource::Kind::synthetic:
       return {{"kind", "synthetic"}, {"seed", d.synthetic_seed}};
   }
@@ -69,22 +78,29 @@ int shown_level(const ViewState& view, int selected, int levels) {
 
 void save_session(const AppState& s, const std::string& path) {
   const Camera& c = s.camera;
-  json j = {
-      {"schema", "pagor.session/1"},
-      {"data", s.have_data ? data_json(s.data) : json()},
-      {"pairs_file", s.pairs_file},
-      {"config", json::parse(config_to_json(s.config))},
-      {"camera",
-       {{"target", {c.target.x(), c.target.y(), c.target.z()}}, {"distance", c.distance},
-        {"yaw_deg", c.yaw_deg}, {"pitch_deg", c.pitch_deg}, {"top_down", c.top_down}}},
-      {"view",
-       {{"layers",
-         {{"source", s.view.layers.source}, {"target", s.view.layers.target},
-          {"landmarks", s.view.layers.landmarks}, {"correspondences", s.view.layers.correspondences},
-          {"all_correspondences", s.view.layers.all_correspondences}}},
-        {"point_size", s.view.point_size}, {"landmark_size", s.view.landmark_size},
-        {"color", color_name(s.view.color)}, {"pose", pose_name(s.view.pose)}, {"level", s.view.level}}},
-      {"window", {{"width", s.width}, {"height", s.height}}}};
+  json j = {{"schema", "pagor.session/1"},
+            {"data", s.have_data ? data_json(s.data) : json()},
+            {"pairs_file", s.pairs_file},
+            {"config", json::parse(config_to_json(s.config))},
+            {"camera",
+             {{"target", {c.target.x(), c.target.y(), c.target.z()}},
+              {"distance", c.distance},
+              {"yaw_deg", c.yaw_deg},
+              {"pitch_deg", c.pitch_deg},
+              {"top_down", c.top_down}}},
+            {"view",
+             {{"layers",
+               {{"source", s.view.layers.source},
+                {"target", s.view.layers.target},
+                {"landmarks", s.view.layers.landmarks},
+                {"correspondences", s.view.layers.correspondences},
+                {"all_correspondences", s.view.layers.all_correspondences}}},
+              {"point_size", s.view.point_size},
+              {"landmark_size", s.view.landmark_size},
+              {"color", color_name(s.view.color)},
+              {"pose", pose_name(s.view.pose)},
+              {"level", s.view.level}}},
+            {"window", {{"width", s.width}, {"height", s.height}}}};
   std::ofstream out(path, std::ios::trunc);
   if (!out) throw InputError(path + ": cannot open for writing");
   out << j.dump(2) << "\n";
@@ -117,7 +133,8 @@ void load_session(const std::string& path, AppState& s) {
       src.kitti_root = get<std::string>(d, "kitti_root", where, "");
       src.sequence = get<std::string>(d, "sequence", where, "00");
       const auto pair = get<std::vector<int>>(d, "pair", where, {});
-      if (pair.size() != 2) throw InputError(where + ".pair: expected [source, target] frame numbers");
+      if (pair.size() != 2)
+        throw InputError(where + ".pair: expected [source, target] frame numbers");
       src.source_frame = pair[0];
       src.target_frame = pair[1];
     } else if (kind == "files") {
@@ -130,7 +147,8 @@ void load_session(const std::string& path, AppState& s) {
       src.kind = PairSource::Kind::synthetic;
       src.synthetic_seed = get<std::uint64_t>(d, "seed", where, 7);
     } else {
-      throw InputError(where + ".kind: expected \"kitti\", \"files\" or \"synthetic\", got \"" + kind + "\"");
+      throw InputError(where + ".kind: expected \"kitti\", \"files\" or \"synthetic\", got \"" +
+                       kind + "\"");
     }
     next.data = src;
     next.have_data = true;

@@ -43,8 +43,8 @@ bool Studio::init(std::string& error) {
   const Resource font = resource("ui_font.ttf");
   ImFontConfig cfg;
   cfg.FontDataOwnedByAtlas = false;
-  if (!io.Fonts->AddFontFromMemoryTTF(const_cast<unsigned char*>(font.data), static_cast<int>(font.size),
-                                      kFontSize, &cfg, kGlyphRanges)) {
+  if (!io.Fonts->AddFontFromMemoryTTF(const_cast<unsigned char*>(font.data),
+                                      static_cast<int>(font.size), kFontSize, &cfg, kGlyphRanges)) {
     error = "cannot load the embedded UI font";
     return false;
   }
@@ -60,7 +60,9 @@ void Studio::submit_data() {
   if (state_.have_data) worker_.submit(resolved_data(state_), state_.config);
 }
 
-void Studio::submit_config() { worker_.submit(std::nullopt, state_.config); }
+void Studio::submit_config() {
+  worker_.submit(std::nullopt, state_.config);
+}
 
 void Studio::frame(int width, int height) {
   const auto t0 = std::chrono::steady_clock::now();
@@ -72,8 +74,9 @@ void Studio::frame(int width, int height) {
   ImGuiIO& io = ImGui::GetIO();
   io.DisplaySize = ImVec2(static_cast<float>(width), static_cast<float>(height));
   ImGui::NewFrame();
-  UiContext ui{state_, snapshot_.get(), status, [this] { submit_data(); }, [this] { submit_config(); }, scene_,
-               frame_ms_};
+  UiContext ui{
+      state_, snapshot_.get(), status, [this] { submit_data(); }, [this] { submit_config(); },
+      scene_, frame_ms_};
   const float W = static_cast<float>(width), H = static_cast<float>(height) - kStatusHeight;
 
   place(0, 0, kLeftWidth, H);
@@ -90,11 +93,16 @@ void Studio::frame(int width, int height) {
   const float scene_h = std::floor(H * kSceneShare);
   place(kLeftWidth, 0, W - kLeftWidth, scene_h);
   ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
-  const int level = snapshot_ ? shown_level(state_.view, snapshot_->selected, static_cast<int>(snapshot_->levels.size())) : -1;
+  const int level = snapshot_ ? shown_level(state_.view, snapshot_->selected,
+                                            static_cast<int>(snapshot_->levels.size()))
+                              : -1;
   std::string title = "3D view";
-  if (snapshot_) title += " | " + snapshot_->description + (level >= 0 ? " | level " + std::to_string(level) : "");
+  if (snapshot_)
+    title +=
+        " | " + snapshot_->description + (level >= 0 ? " | level " + std::to_string(level) : "");
   title += "###scene";
-  if (ImGui::Begin(title.c_str(), nullptr, kPanelFlags | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse))
+  if (ImGui::Begin(title.c_str(), nullptr,
+                   kPanelFlags | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse))
     scene_window(ui);
   ImGui::End();
   ImGui::PopStyleVar();
@@ -104,7 +112,8 @@ void Studio::frame(int width, int height) {
   ImGui::End();
 
   place(0, H, W, kStatusHeight);
-  if (ImGui::Begin("##status", nullptr, kPanelFlags | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar))
+  if (ImGui::Begin("##status", nullptr,
+                   kPanelFlags | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar))
     status_bar(ui);
   ImGui::End();
 
@@ -115,7 +124,8 @@ void Studio::frame(int width, int height) {
   gl_.Clear(GL_COLOR_BUFFER_BIT);
   imgui_renderer_.render(ImGui::GetDrawData(), width, height);
   gl_.Finish();
-  frame_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  frame_ms_ =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
 
 bool Studio::screenshot(const std::string& path, int width, int height, std::string& error) const {
@@ -127,7 +137,8 @@ bool Studio::screenshot(const std::string& path, int width, int height, std::str
   std::vector<unsigned char> flipped(pixels.size());
   const std::size_t row = static_cast<std::size_t>(width) * 4;
   for (int y = 0; y < height; ++y)
-    std::copy_n(pixels.data() + static_cast<std::size_t>(height - 1 - y) * row, row, flipped.data() + y * row);
+    std::copy_n(pixels.data() + static_cast<std::size_t>(height - 1 - y) * row, row,
+                flipped.data() + y * row);
   for (std::size_t i = 3; i < flipped.size(); i += 4) flipped[i] = 255;
   if (!stbi_write_png(path.c_str(), width, height, 4, flipped.data(), static_cast<int>(row))) {
     error = path + ": cannot write PNG";

@@ -84,8 +84,10 @@ void Worker::handle(Request request) {
     }
     try {
       LoadedPair pair = load_pair(*request.data);
-      if (!pair.source.cloud.has_labels()) throw InputError(pair.source_name + ": no semantic labels");
-      if (!pair.target.cloud.has_labels()) throw InputError(pair.target_name + ": no semantic labels");
+      if (!pair.source.cloud.has_labels())
+        throw InputError(pair.source_name + ": no semantic labels");
+      if (!pair.target.cloud.has_labels())
+        throw InputError(pair.target_name + ": no semantic labels");
       source_ = std::make_shared<const PointCloud>(std::move(pair.source.cloud));
       target_ = std::make_shared<const PointCloud>(std::move(pair.target.cloud));
       ground_truth_ = pair.T_target_source_gt;
@@ -106,7 +108,8 @@ void Worker::handle(Request request) {
   }
   if (!pipeline_.has_input()) return;
   std::array<int, kStageCount> runs_before{};
-  for (int s = 0; s < kStageCount; ++s) runs_before[static_cast<std::size_t>(s)] = pipeline_.runs(static_cast<Stage>(s));
+  for (int s = 0; s < kStageCount; ++s)
+    runs_before[static_cast<std::size_t>(s)] = pipeline_.runs(static_cast<Stage>(s));
   try {
     pipeline_.run(
         [this](Stage stage, double fraction) {
@@ -159,7 +162,8 @@ std::shared_ptr<Snapshot> Worker::make_snapshot(std::uint64_t request) const {
   s->selected = p.selected_level();
   s->upper_bound = p.upper_bound_success();
   s->selected_error = p.selected_error();
-  for (int i = 0; i < kStageCount; ++i) s->stage_ms[static_cast<std::size_t>(i)] = p.time_ms(static_cast<Stage>(i));
+  for (int i = 0; i < kStageCount; ++i)
+    s->stage_ms[static_cast<std::size_t>(i)] = p.time_ms(static_cast<Stage>(i));
   s->verification_points = p.verifier() ? p.verifier()->source_points().size() : 0;
   s->warnings = p.warnings();
   return s;

@@ -44,8 +44,8 @@ struct Snapshot {
   int selected = -1;
   bool upper_bound = false;
   std::optional<PoseError> selected_error;
-  std::array<double, kStageCount> stage_ms{};   ///< last wall time per stage [ms]
-  std::array<bool, kStageCount> stage_ran{};    ///< which stages this run recomputed
+  std::array<double, kStageCount> stage_ms{};  ///< last wall time per stage [ms]
+  std::array<bool, kStageCount> stage_ran{};   ///< which stages this run recomputed
   std::size_t verification_points = 0;
   std::vector<std::string> warnings;
 };

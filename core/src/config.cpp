@@ -6,8 +6,8 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <set>
-#include <type_traits>
 #include <sstream>
+#include <type_traits>
 #include <utility>
 
 #include "pagor/errors.hpp"
@@ -133,13 +133,17 @@ void fields_of_evaluation(V& v, P& p) {
 
 template <class T>
 struct IsParams : std::false_type {};
-#define PAGOR_FIELDS(Type, fn)                             \
-  template <>                                              \
-  struct IsParams<Type> : std::true_type {};               \
-  template <class V>                                       \
-  void fields(V& v, Type& p) { fn(v, p); }                 \
-  template <class V>                                       \
-  void fields(V& v, const Type& p) { fn(v, p); }
+#define PAGOR_FIELDS(Type, fn)               \
+  template <>                                \
+  struct IsParams<Type> : std::true_type {}; \
+  template <class V>                         \
+  void fields(V& v, Type& p) {               \
+    fn(v, p);                                \
+  }                                          \
+  template <class V>                         \
+  void fields(V& v, const Type& p) {         \
+    fn(v, p);                                \
+  }
 PAGOR_FIELDS(ClassParams, fields_of_class)
 PAGOR_FIELDS(LandmarkParams, fields_of_landmarks)
 PAGOR_FIELDS(CorrespondenceParams, fields_of_correspondences)
@@ -152,13 +156,27 @@ PAGOR_FIELDS(EvaluationParams, fields_of_evaluation)
 
 // ---- writing ----------------------------------------------------------------------------------
 
-json encode(double x) { return x; }
-json encode(int x) { return x; }
-json encode(long x) { return x; }
-json encode(std::uint64_t x) { return x; }
-json encode(bool x) { return x; }
-json encode(const std::string& x) { return x; }
-json encode(const std::vector<double>& x) { return x; }
+json encode(double x) {
+  return x;
+}
+json encode(int x) {
+  return x;
+}
+json encode(long x) {
+  return x;
+}
+json encode(std::uint64_t x) {
+  return x;
+}
+json encode(bool x) {
+  return x;
+}
+json encode(const std::string& x) {
+  return x;
+}
+json encode(const std::vector<double>& x) {
+  return x;
+}
 template <class E, std::enable_if_t<std::is_enum<E>::value, int> = 0>
 json encode(E x) {
   return enum_name(x);
@@ -223,7 +241,9 @@ struct Context {
   throw ConfigError(ctx.origin + ": " + path + ": " + what);
 }
 
-std::string type_name(const json& j) { return j.type_name(); }
+std::string type_name(const json& j) {
+  return j.type_name();
+}
 
 void decode(const Context& ctx, const json& j, const std::string& path, double& x) {
   if (!j.is_number()) fail(ctx, path, "expected a number, got " + type_name(j));
@@ -359,12 +379,24 @@ void check(const Context& ctx, bool ok, const std::string& path, const std::stri
 
 }  // namespace
 
-const char* to_string(LandmarkMethod v) { return enum_name(v); }
-const char* to_string(TrimKind v) { return enum_name(v); }
-const char* to_string(AffinityKind v) { return enum_name(v); }
-const char* to_string(CliqueSolver v) { return enum_name(v); }
-const char* to_string(PoseModel v) { return enum_name(v); }
-const char* to_string(ScoreKind v) { return enum_name(v); }
+const char* to_string(LandmarkMethod v) {
+  return enum_name(v);
+}
+const char* to_string(TrimKind v) {
+  return enum_name(v);
+}
+const char* to_string(AffinityKind v) {
+  return enum_name(v);
+}
+const char* to_string(CliqueSolver v) {
+  return enum_name(v);
+}
+const char* to_string(PoseModel v) {
+  return enum_name(v);
+}
+const char* to_string(ScoreKind v) {
+  return enum_name(v);
+}
 
 Config default_config() {
   Config c;
@@ -460,15 +492,24 @@ Config parse_config(const std::string& json_text, const std::string& origin) {
   for (const auto& item : j.items()) {
     const std::string& key = item.key();
     const json& v = item.value();
-    if (key == "label_scheme") decode_scheme(ctx, v, c.label_scheme);
-    else if (key == "landmarks") decode(ctx, v, key, c.landmarks);
-    else if (key == "correspondences") decode(ctx, v, key, c.correspondences);
-    else if (key == "graph") decode(ctx, v, key, c.graph);
-    else if (key == "clique") decode(ctx, v, key, c.clique);
-    else if (key == "gnc") decode(ctx, v, key, c.gnc);
-    else if (key == "verification") decode(ctx, v, key, c.verification);
-    else if (key == "evaluation") decode(ctx, v, key, c.evaluation);
-    else fail(ctx, key, "unknown key");
+    if (key == "label_scheme")
+      decode_scheme(ctx, v, c.label_scheme);
+    else if (key == "landmarks")
+      decode(ctx, v, key, c.landmarks);
+    else if (key == "correspondences")
+      decode(ctx, v, key, c.correspondences);
+    else if (key == "graph")
+      decode(ctx, v, key, c.graph);
+    else if (key == "clique")
+      decode(ctx, v, key, c.clique);
+    else if (key == "gnc")
+      decode(ctx, v, key, c.gnc);
+    else if (key == "verification")
+      decode(ctx, v, key, c.verification);
+    else if (key == "evaluation")
+      decode(ctx, v, key, c.evaluation);
+    else
+      fail(ctx, key, "unknown key");
   }
   validate(c, origin);
   return c;

@@ -51,7 +51,7 @@ void all_to_all(const LandmarkSet& s, const LandmarkSet& t, const std::vector<in
 }
 
 pcl::PointCloud<pcl::FPFHSignature33>::Ptr descriptor_cloud(const LandmarkSet& set,
-                                                           const std::vector<int>& idx) {
+                                                            const std::vector<int>& idx) {
   pcl::PointCloud<pcl::FPFHSignature33>::Ptr cloud(new pcl::PointCloud<pcl::FPFHSignature33>);
   cloud->resize(idx.size());
   for (std::size_t k = 0; k < idx.size(); ++k) {

@@ -43,7 +43,8 @@ LoadedPair load_pair(const PairSource& src) {
 
 std::string describe(const PairSource& src) {
   switch (src.kind) {
-    case PairSource::Kind::files: return src.source + " -> " + src.target;
+    case PairSource::Kind::files:
+      return src.source + " -> " + src.target;
     case PairSource::Kind::kitti:
       return "KITTI " + src.sequence + ": " + std::to_string(src.source_frame) + " -> " +
              std::to_string(src.target_frame);

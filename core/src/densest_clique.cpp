@@ -17,7 +17,7 @@ double ms_since(Clock::time_point t0) {
 // One level of the pyramid restricted to a vertex subset, with local ids and per-edge affinities:
 // the relaxation's inner loop then touches neither absent levels nor pruned vertices.
 struct LevelGraph {
-  std::vector<int> ids;             // local -> global vertex id
+  std::vector<int> ids;              // local -> global vertex id
   std::vector<std::size_t> offsets;  // CSR over local ids, neighbours sorted
   std::vector<int> neighbors;
   std::vector<double> weights;
@@ -25,8 +25,10 @@ struct LevelGraph {
 
   std::size_t size() const { return ids.size(); }
   bool adjacent(int a, int b) const {
-    const auto first = neighbors.begin() + static_cast<std::ptrdiff_t>(offsets[static_cast<std::size_t>(a)]);
-    const auto last = neighbors.begin() + static_cast<std::ptrdiff_t>(offsets[static_cast<std::size_t>(a) + 1]);
+    const auto first =
+        neighbors.begin() + static_cast<std::ptrdiff_t>(offsets[static_cast<std::size_t>(a)]);
+    const auto last =
+        neighbors.begin() + static_cast<std::ptrdiff_t>(offsets[static_cast<std::size_t>(a) + 1]);
     return std::binary_search(first, last, b);
   }
 };
@@ -34,7 +36,8 @@ struct LevelGraph {
 std::vector<int> degrees(const PyramidGraph& g, int level) {
   std::vector<int> deg(static_cast<std::size_t>(g.vertices), 0);
   for (int v = 0; v < g.vertices; ++v)
-    for (auto e = g.offsets[static_cast<std::size_t>(v)]; e < g.offsets[static_cast<std::size_t>(v) + 1]; ++e)
+    for (auto e = g.offsets[static_cast<std::size_t>(v)];
+         e < g.offsets[static_cast<std::size_t>(v) + 1]; ++e)
       deg[static_cast<std::size_t>(v)] += g.level[static_cast<std::size_t>(e)] <= level;
   return deg;
 }
@@ -52,8 +55,10 @@ std::vector<int> greedy_clique(const PyramidGraph& g, int level, const std::vect
     const int v = order[static_cast<std::size_t>(k)];
     if (static_cast<std::size_t>(deg[static_cast<std::size_t>(v)]) + 1 <= best.size()) break;
     std::vector<int> cand;
-    for (auto e = g.offsets[static_cast<std::size_t>(v)]; e < g.offsets[static_cast<std::size_t>(v) + 1]; ++e)
-      if (g.level[static_cast<std::size_t>(e)] <= level) cand.push_back(g.neighbors[static_cast<std::size_t>(e)]);
+    for (auto e = g.offsets[static_cast<std::size_t>(v)];
+         e < g.offsets[static_cast<std::size_t>(v) + 1]; ++e)
+      if (g.level[static_cast<std::size_t>(e)] <= level)
+        cand.push_back(g.neighbors[static_cast<std::size_t>(e)]);
     std::stable_sort(cand.begin(), cand.end(), [&](int a, int b) {
       return deg[static_cast<std::size_t>(a)] > deg[static_cast<std::size_t>(b)];
     });
@@ -82,7 +87,8 @@ std::vector<int> core(const PyramidGraph& g, int level, std::vector<int> deg, in
   while (!stack.empty()) {
     const int v = stack.back();
     stack.pop_back();
-    for (auto e = g.offsets[static_cast<std::size_t>(v)]; e < g.offsets[static_cast<std::size_t>(v) + 1]; ++e) {
+    for (auto e = g.offsets[static_cast<std::size_t>(v)];
+         e < g.offsets[static_cast<std::size_t>(v) + 1]; ++e) {
       if (g.level[static_cast<std::size_t>(e)] > level) continue;
       const auto w = static_cast<std::size_t>(g.neighbors[static_cast<std::size_t>(e)]);
       if (!removed[w] && --deg[w] < min_degree) {
@@ -102,10 +108,12 @@ LevelGraph induce(const PyramidGraph& g, int level, const std::vector<int>& keep
   s.ids = keep;
   s.binary = g.affinity == AffinityKind::binary;
   std::vector<int> local(static_cast<std::size_t>(g.vertices), -1);
-  for (std::size_t i = 0; i < keep.size(); ++i) local[static_cast<std::size_t>(keep[i])] = static_cast<int>(i);
+  for (std::size_t i = 0; i < keep.size(); ++i)
+    local[static_cast<std::size_t>(keep[i])] = static_cast<int>(i);
   s.offsets.assign(1, 0);
   for (int v : keep) {
-    for (auto e = g.offsets[static_cast<std::size_t>(v)]; e < g.offsets[static_cast<std::size_t>(v) + 1]; ++e) {
+    for (auto e = g.offsets[static_cast<std::size_t>(v)];
+         e < g.offsets[static_cast<std::size_t>(v) + 1]; ++e) {
       const auto se = static_cast<std::size_t>(e);
       const int w = local[static_cast<std::size_t>(g.neighbors[se])];
       if (g.level[se] > level || w < 0) continue;
@@ -144,7 +152,8 @@ void products(const LevelGraph& g, const std::vector<double>& u, std::vector<dou
   }
   for (std::size_t v = 0; v < g.size(); ++v) {
     double c = u[v];
-    for (std::size_t e = g.offsets[v]; e < g.offsets[v + 1]; ++e) c += u[static_cast<std::size_t>(g.neighbors[e])];
+    for (std::size_t e = g.offsets[v]; e < g.offsets[v + 1]; ++e)
+      c += u[static_cast<std::size_t>(g.neighbors[e])];
     Cu[v] = c;
   }
   if (g.binary) {
@@ -186,7 +195,8 @@ std::vector<int> round_to_clique(const LevelGraph& g, const std::vector<double>&
   const auto k = std::min<std::size_t>(static_cast<std::size_t>(omega), order.size());
   std::partial_sort(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(k), order.end(),
                     [&](int a, int b) {
-                      const double ua = u[static_cast<std::size_t>(a)], ub = u[static_cast<std::size_t>(b)];
+                      const double ua = u[static_cast<std::size_t>(a)],
+                                   ub = u[static_cast<std::size_t>(b)];
                       return ua > ub || (ua == ub && a < b);
                     });
   std::vector<int> clique(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(k));
@@ -329,7 +339,8 @@ CliqueResult solve_clipper(const PyramidGraph& g, int level, const std::vector<d
   std::vector<int> greedy, keep;
   if (p.prune) {
     greedy = greedy_clique(g, level, deg);
-    if (known_clique.size() > greedy.size() && is_clique(g, level, known_clique)) greedy = known_clique;
+    if (known_clique.size() > greedy.size() && is_clique(g, level, known_clique))
+      greedy = known_clique;
     keep = core(g, level, deg, static_cast<int>(greedy.size()) - 1);
   } else {
     keep.resize(n);
@@ -394,12 +405,15 @@ struct ExactSearch {
       }
     // Take vertices from the highest colour down; colour + |current| bounds any clique found.
     for (int idx = static_cast<int>(order.size()) - 1; idx >= 0; --idx) {
-      if (current.size() + static_cast<std::size_t>(colour[static_cast<std::size_t>(idx)]) <= best.size()) return;
+      if (current.size() + static_cast<std::size_t>(colour[static_cast<std::size_t>(idx)]) <=
+          best.size())
+        return;
       const int v = order[static_cast<std::size_t>(idx)];
       current.push_back(v);
       std::vector<int> next;
       for (int j = 0; j < idx; ++j)
-        if (g.adjacent(v, order[static_cast<std::size_t>(j)], level)) next.push_back(order[static_cast<std::size_t>(j)]);
+        if (g.adjacent(v, order[static_cast<std::size_t>(j)], level))
+          next.push_back(order[static_cast<std::size_t>(j)]);
       if (next.empty()) {
         if (current.size() > best.size()) best = current;
       } else {
@@ -421,7 +435,8 @@ CliqueResult exact_max_clique(const PyramidGraph& g, int level, const CliquePara
   // Higher degree first tends to find large cliques early.
   std::vector<int> degree(all.size(), 0);
   for (int v = 0; v < g.vertices; ++v)
-    for (auto e = g.offsets[static_cast<std::size_t>(v)]; e < g.offsets[static_cast<std::size_t>(v) + 1]; ++e)
+    for (auto e = g.offsets[static_cast<std::size_t>(v)];
+         e < g.offsets[static_cast<std::size_t>(v) + 1]; ++e)
       degree[static_cast<std::size_t>(v)] += g.level[static_cast<std::size_t>(e)] <= level;
   std::stable_sort(all.begin(), all.end(), [&](int a, int b) {
     return degree[static_cast<std::size_t>(a)] < degree[static_cast<std::size_t>(b)];
@@ -441,14 +456,20 @@ std::vector<CliqueResult> solve_pyramid(const PyramidGraph& g, const CliqueParam
   const std::vector<double> start = random_start(g.vertices, p.seed);
   for (int l = 0; l < g.levels(); ++l) {
     switch (p.solver) {
-      case CliqueSolver::exact: out.push_back(exact_max_clique(g, l, p)); break;
-      case CliqueSolver::independent: out.push_back(solve_clipper(g, l, start, p)); break;
+      case CliqueSolver::exact:
+        out.push_back(exact_max_clique(g, l, p));
+        break;
+      case CliqueSolver::independent:
+        out.push_back(solve_clipper(g, l, start, p));
+        break;
       case CliqueSolver::cascaded:
         // Alg. 1: level l starts where level l-1 ended. Its edges are a subset of level l's, so its
         // clique is also a clique here: a lower bound for pruning.
-        if (l == 0) out.push_back(solve_clipper(g, l, start, p));
-        else out.push_back(solve_clipper(g, l, out.back().u, p, out.back().vertices,
-                                         p.warm_start_penalty * out.back().penalty));
+        if (l == 0)
+          out.push_back(solve_clipper(g, l, start, p));
+        else
+          out.push_back(solve_clipper(g, l, out.back().u, p, out.back().vertices,
+                                      p.warm_start_penalty * out.back().penalty));
         break;
     }
   }

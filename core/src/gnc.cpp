@@ -28,8 +28,8 @@ double rotation_angle_deg(const Eigen::Matrix3d& R) {
 }
 
 bool weighted_rigid_transform(const std::vector<Eigen::Vector3d>& src,
-                              const std::vector<Eigen::Vector3d>& dst,
-                              const std::vector<double>& w, PoseModel model, Transform& T) {
+                              const std::vector<Eigen::Vector3d>& dst, const std::vector<double>& w,
+                              PoseModel model, Transform& T) {
   const int dim = model == PoseModel::se3 ? 3 : 2;
   double wsum = 0;
   Eigen::Vector3d ps = Eigen::Vector3d::Zero(), qs = Eigen::Vector3d::Zero();
@@ -80,7 +80,8 @@ PoseEstimate estimate_pose_gnc(const std::vector<Eigen::Vector3d>& src,
                                const std::vector<Eigen::Vector3d>& dst, const GncParams& p) {
   const auto t0 = std::chrono::steady_clock::now();
   auto finish = [&](PoseEstimate& e) {
-    e.time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    e.time_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     return e;
   };
   PoseEstimate est;
@@ -100,7 +101,8 @@ PoseEstimate estimate_pose_gnc(const std::vector<Eigen::Vector3d>& src,
   }
   auto residuals = [&] {
     double worst = 0;
-    for (std::size_t i = 0; i < n; ++i) worst = std::max(worst, r2[i] = residual_sq(T, src[i], dst[i], p.model));
+    for (std::size_t i = 0; i < n; ++i)
+      worst = std::max(worst, r2[i] = residual_sq(T, src[i], dst[i], p.model));
     return worst;
   };
   const double r2_max = residuals();
@@ -112,9 +114,12 @@ PoseEstimate estimate_pose_gnc(const std::vector<Eigen::Vector3d>& src,
       est.iterations = it + 1;
       const double lower = mu / (mu + 1) * c2, upper = (mu + 1) / mu * c2;
       for (std::size_t i = 0; i < n; ++i) {
-        if (r2[i] >= upper) w[i] = 0;
-        else if (r2[i] <= lower) w[i] = 1;
-        else w[i] = std::sqrt(c2 * mu * (mu + 1) / r2[i]) - mu;
+        if (r2[i] >= upper)
+          w[i] = 0;
+        else if (r2[i] <= lower)
+          w[i] = 1;
+        else
+          w[i] = std::sqrt(c2 * mu * (mu + 1) / r2[i]) - mu;
       }
       if (!weighted_rigid_transform(src, dst, w, p.model, T)) {
         est.failure = "degenerate inlier set during GNC (collinear or too few)";

@@ -45,15 +45,48 @@ void write_file_bytes(const std::string& path, const void* data, std::size_t siz
 // Reads one scalar of any PCL datatype as double.
 double read_scalar(const std::uint8_t* p, std::uint8_t datatype) {
   switch (datatype) {
-    case pcl::PCLPointField::INT8: { std::int8_t v; std::memcpy(&v, p, 1); return v; }
-    case pcl::PCLPointField::UINT8: { std::uint8_t v; std::memcpy(&v, p, 1); return v; }
-    case pcl::PCLPointField::INT16: { std::int16_t v; std::memcpy(&v, p, 2); return v; }
-    case pcl::PCLPointField::UINT16: { std::uint16_t v; std::memcpy(&v, p, 2); return v; }
-    case pcl::PCLPointField::INT32: { std::int32_t v; std::memcpy(&v, p, 4); return v; }
-    case pcl::PCLPointField::UINT32: { std::uint32_t v; std::memcpy(&v, p, 4); return v; }
-    case pcl::PCLPointField::FLOAT32: { float v; std::memcpy(&v, p, 4); return v; }
-    case pcl::PCLPointField::FLOAT64: { double v; std::memcpy(&v, p, 8); return v; }
-    default: return std::nan("");
+    case pcl::PCLPointField::INT8: {
+      std::int8_t v;
+      std::memcpy(&v, p, 1);
+      return v;
+    }
+    case pcl::PCLPointField::UINT8: {
+      std::uint8_t v;
+      std::memcpy(&v, p, 1);
+      return v;
+    }
+    case pcl::PCLPointField::INT16: {
+      std::int16_t v;
+      std::memcpy(&v, p, 2);
+      return v;
+    }
+    case pcl::PCLPointField::UINT16: {
+      std::uint16_t v;
+      std::memcpy(&v, p, 2);
+      return v;
+    }
+    case pcl::PCLPointField::INT32: {
+      std::int32_t v;
+      std::memcpy(&v, p, 4);
+      return v;
+    }
+    case pcl::PCLPointField::UINT32: {
+      std::uint32_t v;
+      std::memcpy(&v, p, 4);
+      return v;
+    }
+    case pcl::PCLPointField::FLOAT32: {
+      float v;
+      std::memcpy(&v, p, 4);
+      return v;
+    }
+    case pcl::PCLPointField::FLOAT64: {
+      double v;
+      std::memcpy(&v, p, 8);
+      return v;
+    }
+    default:
+      return std::nan("");
   }
 }
 
@@ -78,8 +111,10 @@ void check_pcd_header(const std::string& path, const std::vector<char>& bytes) {
     if (!(ls >> key) || key[0] == '#') continue;
     std::vector<std::string> words;
     for (std::string w; ls >> w;) words.push_back(w);
-    if (key == "FIELDS") fields = words.size();
-    else if (key == "TYPE") types = words.size();
+    if (key == "FIELDS")
+      fields = words.size();
+    else if (key == "TYPE")
+      types = words.size();
     else if (key == "SIZE") {
       sizes = words.size();
       for (const auto& w : words) point_bytes += static_cast<std::size_t>(std::atoi(w.c_str()));
@@ -104,12 +139,14 @@ void check_pcd_header(const std::string& path, const std::vector<char>& bytes) {
   const std::streamoff body = in.tellg();
   if (data == "binary" && body >= 0 &&
       bytes.size() - static_cast<std::size_t>(body) < points * point_bytes)
-    throw InputError(path + ": truncated PCD body (" + std::to_string(points) + " points declared)");
+    throw InputError(path + ": truncated PCD body (" + std::to_string(points) +
+                     " points declared)");
 }
 
 void check_ply_header(const std::string& path, const std::vector<char>& bytes) {
-  const std::string head(bytes.begin(), bytes.begin() + static_cast<std::ptrdiff_t>(
-                                                            std::min<std::size_t>(bytes.size(), 65536)));
+  const std::string head(
+      bytes.begin(),
+      bytes.begin() + static_cast<std::ptrdiff_t>(std::min<std::size_t>(bytes.size(), 65536)));
   if (head.rfind("ply", 0) != 0 || head.find("end_header") == std::string::npos ||
       head.find("element vertex") == std::string::npos)
     throw InputError(path + ": not a PLY file with a vertex element");
@@ -117,8 +154,10 @@ void check_ply_header(const std::string& path, const std::vector<char>& bytes) {
 
 PointCloud read_pcl_file(const std::string& path, const std::string& ext) {
   const std::vector<char> bytes = read_file_bytes(path, "point cloud");
-  if (ext == ".pcd") check_pcd_header(path, bytes);
-  else check_ply_header(path, bytes);
+  if (ext == ".pcd")
+    check_pcd_header(path, bytes);
+  else
+    check_ply_header(path, bytes);
   pcl::PCLPointCloud2 blob;
   int status = -1;
   try {
@@ -144,9 +183,10 @@ PointCloud read_pcl_file(const std::string& path, const std::string& ext) {
   if (fl) cloud.labels.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     const std::uint8_t* base = blob.data.data() + i * blob.point_step;
-    cloud.points[i] = Eigen::Vector3f(static_cast<float>(read_scalar(base + fx->offset, fx->datatype)),
-                                      static_cast<float>(read_scalar(base + fy->offset, fy->datatype)),
-                                      static_cast<float>(read_scalar(base + fz->offset, fz->datatype)));
+    cloud.points[i] =
+        Eigen::Vector3f(static_cast<float>(read_scalar(base + fx->offset, fx->datatype)),
+                        static_cast<float>(read_scalar(base + fy->offset, fy->datatype)),
+                        static_cast<float>(read_scalar(base + fz->offset, fz->datatype)));
     if (fi) cloud.intensities[i] = static_cast<float>(read_scalar(base + fi->offset, fi->datatype));
     if (fl) {
       // Labels are unsigned ids; a float field holding integers is accepted too.
@@ -182,7 +222,10 @@ pcl::PCLPointCloud2 to_blob(const PointCloud& cloud) {
     std::uint8_t* base = blob.data.data() + i * blob.point_step;
     std::memcpy(base, cloud.points[i].data(), 12);
     std::size_t off = 12;
-    if (cloud.has_intensities()) { std::memcpy(base + off, &cloud.intensities[i], 4); off += 4; }
+    if (cloud.has_intensities()) {
+      std::memcpy(base + off, &cloud.intensities[i], 4);
+      off += 4;
+    }
     if (cloud.has_labels()) std::memcpy(base + off, &cloud.labels[i], 4);
   }
   return blob;
@@ -303,7 +346,8 @@ LoadedCloud load_cloud(const std::string& path, const std::string& labels_path) 
     out.warnings.push_back(path + ": dropped " + std::to_string(out.dropped_nonfinite) +
                            " points with NaN or Inf coordinates");
   if (c.empty())
-    throw InputError(path + (out.dropped_nonfinite > 0 ? ": no finite points" : ": the cloud is empty"));
+    throw InputError(path +
+                     (out.dropped_nonfinite > 0 ? ": no finite points" : ": the cloud is empty"));
   return out;
 }
 

@@ -31,19 +31,32 @@ std::vector<std::string> builtin_label_scheme_names() {
 LabelScheme builtin_label_scheme(const std::string& name) {
   if (name == "semantickitti") {
     return {name,
-            {{"car", {10}},          {"bicycle", {11}},      {"motorcycle", {15}},
-             {"truck", {18}},        {"other-vehicle", {13, 16, 20}},
-             {"person", {30}},       {"bicyclist", {31}},    {"motorcyclist", {32}},
-             {"road", {40, 60}},     {"parking", {44}},      {"sidewalk", {48}},
-             {"other-ground", {49}}, {"building", {50}},     {"fence", {51}},
-             {"vegetation", {70}},   {"trunk", {71}},        {"terrain", {72}},
-             {"pole", {80}},         {"traffic-sign", {81}}}};
+            {{"car", {10}},
+             {"bicycle", {11}},
+             {"motorcycle", {15}},
+             {"truck", {18}},
+             {"other-vehicle", {13, 16, 20}},
+             {"person", {30}},
+             {"bicyclist", {31}},
+             {"motorcyclist", {32}},
+             {"road", {40, 60}},
+             {"parking", {44}},
+             {"sidewalk", {48}},
+             {"other-ground", {49}},
+             {"building", {50}},
+             {"fence", {51}},
+             {"vegetation", {70}},
+             {"trunk", {71}},
+             {"terrain", {72}},
+             {"pole", {80}},
+             {"traffic-sign", {81}}}};
   }
   if (name == "semantickitti-train") {
-    static const char* const kNames[] = {
-        "car",     "bicycle",  "motorcycle",   "truck",    "other-vehicle", "person",   "bicyclist",
-        "motorcyclist", "road", "parking",     "sidewalk", "other-ground",  "building", "fence",
-        "vegetation", "trunk", "terrain",      "pole",     "traffic-sign"};
+    static const char* const kNames[] = {"car",           "bicycle", "motorcycle",  "truck",
+                                         "other-vehicle", "person",  "bicyclist",   "motorcyclist",
+                                         "road",          "parking", "sidewalk",    "other-ground",
+                                         "building",      "fence",   "vegetation",  "trunk",
+                                         "terrain",       "pole",    "traffic-sign"};
     LabelScheme s{name, {}};
     for (std::uint32_t i = 0; i < 19; ++i) s.classes.push_back({kNames[i], {i}});
     return s;

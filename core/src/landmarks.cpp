@@ -111,7 +111,8 @@ void add_keypoints(int class_index, const ClassParams& p, const VoxelDownsample&
   for (std::size_t v = 0; v < ds.points.size(); ++v) {
     const auto& n = (*normals)[v];
     const float* h = features[v].histogram;
-    if (!std::isfinite(n.normal_x) || !std::all_of(h, h + 33, [](float x) { return std::isfinite(x); }))
+    if (!std::isfinite(n.normal_x) ||
+        !std::all_of(h, h + 33, [](float x) { return std::isfinite(x); }))
       continue;  // too few neighbours for a normal or a descriptor
     if (std::all_of(h, h + 33, [](float x) { return x == 0.0f; })) continue;
     Landmark lm;

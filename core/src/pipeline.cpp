@@ -26,8 +26,9 @@ const std::vector<Stage>& dependents(Stage s) {
 }  // namespace
 
 const char* stage_name(Stage stage) {
-  static const char* const names[kStageCount] = {"landmarks", "correspondences", "graph", "clique",
-                                                 "gnc", "verification_prep", "verification", "evaluation"};
+  static const char* const names[kStageCount] = {
+      "landmarks", "correspondences",   "graph",        "clique",
+      "gnc",       "verification_prep", "verification", "evaluation"};
   return names[static_cast<int>(stage)];
 }
 
@@ -115,7 +116,8 @@ void Pipeline::run_stage(Stage stage) {
       }
       break;
     case Stage::correspondences:
-      correspondences_ = match_landmarks(source_landmarks_, target_landmarks_, config_.correspondences);
+      correspondences_ =
+          match_landmarks(source_landmarks_, target_landmarks_, config_.correspondences);
       break;
     case Stage::graph:
       graph_ = build_pyramid_graph(correspondences_.items, config_.graph, threads_);
@@ -132,7 +134,8 @@ void Pipeline::run_stage(Stage stage) {
           q.push_back(correspondences_.items[static_cast<std::size_t>(v)].q);
         }
         PoseEstimate e = estimate_pose_gnc(p, q, config_.gnc);
-        for (int& i : e.inliers) i = c.vertices[static_cast<std::size_t>(i)];  // -> correspondence ids
+        for (int& i : e.inliers)
+          i = c.vertices[static_cast<std::size_t>(i)];  // -> correspondence ids
         poses_.push_back(std::move(e));
       }
       break;
@@ -147,15 +150,17 @@ void Pipeline::run_stage(Stage stage) {
       level_errors_.clear();
       if (ground_truth_)
         for (const PoseEstimate& e : poses_)
-          level_errors_.push_back(e.valid ? std::optional<PoseError>(pose_error(
-                                                e.T_target_source, *ground_truth_, config_.evaluation))
-                                          : std::nullopt);
+          level_errors_.push_back(e.valid
+                                      ? std::optional<PoseError>(pose_error(
+                                            e.T_target_source, *ground_truth_, config_.evaluation))
+                                      : std::nullopt);
       break;
   }
 }
 
 std::optional<Transform> Pipeline::selected_transform() const {
-  if (verification_.selected < 0 || static_cast<std::size_t>(verification_.selected) >= poses_.size())
+  if (verification_.selected < 0 ||
+      static_cast<std::size_t>(verification_.selected) >= poses_.size())
     return std::nullopt;
   return poses_[static_cast<std::size_t>(verification_.selected)].T_target_source;
 }
@@ -180,7 +185,8 @@ std::vector<std::string> Pipeline::warnings() const {
   for (std::size_t l = 0; l < poses_.size(); ++l)
     if (!poses_[l].valid)
       out.push_back("level " + std::to_string(l) + ": no pose (" + poses_[l].failure + ")");
-  if (!poses_.empty() && verification_.selected < 0) out.push_back("no valid candidate on any level");
+  if (!poses_.empty() && verification_.selected < 0)
+    out.push_back("no valid candidate on any level");
   return out;
 }
 

@@ -36,7 +36,8 @@ struct Packed {
 
 // Edges (i, j), i < j, for i in [begin, end), in increasing (i, j) order. Most pairs are rejected
 // on squared lengths alone; square roots are taken only for the survivors.
-void collect_edges(const Packed& c, const GraphParams& params, int begin, int end, std::vector<Edge>& out) {
+void collect_edges(const Packed& c, const GraphParams& params, int begin, int end,
+                   std::vector<Edge>& out) {
   const auto& eps = params.thresholds;
   const double largest = eps.back();
   const double min_sq = params.min_length * params.min_length;
@@ -84,7 +85,8 @@ bool PyramidGraph::adjacent(int u, int v, int l) const {
 std::size_t PyramidGraph::active_vertices(int l) const {
   std::size_t n = 0;
   for (int v = 0; v < vertices; ++v)
-    for (auto e = offsets[static_cast<std::size_t>(v)]; e < offsets[static_cast<std::size_t>(v) + 1]; ++e)
+    for (auto e = offsets[static_cast<std::size_t>(v)];
+         e < offsets[static_cast<std::size_t>(v) + 1]; ++e)
       if (level[static_cast<std::size_t>(e)] <= l) {
         ++n;
         break;
@@ -122,8 +124,8 @@ PyramidGraph build_pyramid_graph(const std::vector<Correspondence>& c, const Gra
   } else {
     std::vector<std::thread> pool;
     for (int t = 0; t < threads; ++t)
-      pool.emplace_back(collect_edges, std::cref(packed), std::cref(params), bounds[t], bounds[t + 1],
-                        std::ref(parts[static_cast<std::size_t>(t)]));
+      pool.emplace_back(collect_edges, std::cref(packed), std::cref(params), bounds[t],
+                        bounds[t + 1], std::ref(parts[static_cast<std::size_t>(t)]));
     for (auto& th : pool) th.join();
   }
 
@@ -134,7 +136,8 @@ PyramidGraph build_pyramid_graph(const std::vector<Correspondence>& c, const Gra
       ++g.offsets[static_cast<std::size_t>(e.j) + 1];
       ++g.edges_at_level[e.level];
     }
-  for (std::size_t l = 1; l < g.edges_at_level.size(); ++l) g.edges_at_level[l] += g.edges_at_level[l - 1];
+  for (std::size_t l = 1; l < g.edges_at_level.size(); ++l)
+    g.edges_at_level[l] += g.edges_at_level[l - 1];
   for (std::size_t v = 0; v < c.size(); ++v) g.offsets[v + 1] += g.offsets[v];
   const std::size_t directed = static_cast<std::size_t>(g.offsets.back());
   g.neighbors.resize(directed);
@@ -154,7 +157,8 @@ PyramidGraph build_pyramid_graph(const std::vector<Correspondence>& c, const Gra
     for (const Edge& e : part) place(e.j, e.i, e);
   for (const auto& part : parts)
     for (const Edge& e : part) place(e.i, e.j, e);
-  g.time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  g.time_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   return g;
 }
 

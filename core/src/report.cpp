@@ -55,7 +55,8 @@ std::string registration_report_json(const Pipeline& p, const std::string& sourc
   const auto selected = p.selected_transform();
   json gt = nullptr;
   if (p.ground_truth()) {
-    gt = {{"T_target_source", matrix_json(*p.ground_truth())}, {"upper_bound", p.upper_bound_success()}};
+    gt = {{"T_target_source", matrix_json(*p.ground_truth())},
+          {"upper_bound", p.upper_bound_success()}};
     if (const auto e = p.selected_error()) {
       gt["translation_error_m"] = e->translation;
       gt["rotation_error_deg"] = e->rotation_deg;
@@ -88,7 +89,9 @@ std::string registration_report_json(const Pipeline& p, const std::string& sourc
               {"levels", levels},
               {"ground_truth", gt},
               {"correspondences",
-               {{"count", corr.items.size()}, {"candidates", corr.candidates}, {"capped", corr.capped},
+               {{"count", corr.items.size()},
+                {"candidates", corr.candidates},
+                {"capped", corr.capped},
                 {"per_class", per_class}}},
               {"landmarks",
                {{"source", counts_by_class(p.source_landmarks())},

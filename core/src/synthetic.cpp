@@ -72,8 +72,8 @@ void add_building(Sampled& s, const Eigen::Vector2d& c, double yaw, const Eigen:
     const double sign = face % 2 == 0 ? 1.0 : -1.0;
     Eigen::Vector2d local = along_x ? Eigen::Vector2d(offset, sign * (size.y() / 2 + depth / 2))
                                     : Eigen::Vector2d(sign * (size.x() / 2 + depth / 2), offset);
-    const Eigen::Vector3d dsize = along_x ? Eigen::Vector3d(width, depth, height)
-                                          : Eigen::Vector3d(depth, width, height);
+    const Eigen::Vector3d dsize =
+        along_x ? Eigen::Vector3d(width, depth, height) : Eigen::Vector3d(depth, width, height);
     add_box(s, c + R * local, yaw, dsize, spacing, kBuilding, -1);
   }
 }
@@ -87,7 +87,8 @@ Transform planar_pose(double x, double y, double yaw) {
 }
 
 PointCloud observe(const Sampled& s, const std::vector<SyntheticObject>& objects, bool source,
-                   const Transform& T_world_sensor, double range, double noise, std::mt19937_64& rng) {
+                   const Transform& T_world_sensor, double range, double noise,
+                   std::mt19937_64& rng) {
   const Transform T_sensor_world = T_world_sensor.inverse();
   const Eigen::Vector3d origin = T_world_sensor.block<3, 1>(0, 3);
   std::normal_distribution<double> n(0.0, noise);
@@ -103,7 +104,8 @@ PointCloud observe(const Sampled& s, const std::vector<SyntheticObject>& objects
     }
     if (!seen) continue;
     const Eigen::Vector3d p = T_sensor_world.block<3, 3>(0, 0) * s.points[i] +
-                              T_sensor_world.block<3, 1>(0, 3) + Eigen::Vector3d(n(rng), n(rng), n(rng));
+                              T_sensor_world.block<3, 1>(0, 3) +
+                              Eigen::Vector3d(n(rng), n(rng), n(rng));
     out.points.push_back(p.cast<float>());
     out.intensities.push_back(0.5f);
     out.labels.push_back(s.labels[i]);
@@ -151,7 +153,8 @@ SyntheticScene make_synthetic_scene(const SyntheticParams& params) {
       object_centres.push_back(c);
       const int obj = static_cast<int>(scene.objects.size());
       const std::size_t first = s.points.size();
-      if (label == kCar) add_box(s, c, unit(rng) * kPi, {4.4, 1.8, 1.5}, params.spacing, label, obj);
+      if (label == kCar)
+        add_box(s, c, unit(rng) * kPi, {4.4, 1.8, 1.5}, params.spacing, label, obj);
       if (label == kTrunk) add_cylinder(s, c, 0.2, 3.0, params.spacing, label, obj);
       if (label == kPole) add_cylinder(s, c, 0.1, 6.0, params.spacing, label, obj);
       Eigen::Vector3d mean = Eigen::Vector3d::Zero();
@@ -178,7 +181,8 @@ SyntheticScene make_synthetic_scene(const SyntheticParams& params) {
       s.object.push_back(-1);
     }
 
-  scene.source = observe(s, scene.objects, true, scene.T_world_source, params.range, params.noise, rng);
+  scene.source =
+      observe(s, scene.objects, true, scene.T_world_source, params.range, params.noise, rng);
   scene.target = observe(s, scene.objects, false, T_world_target, params.range, params.noise, rng);
   return scene;
 }

@@ -16,7 +16,8 @@ struct Verifier::Impl {
 
   // Distance from every source point with index in [begin, end), moved by T, to its nearest
   // target point; +inf when none is closer than `bound` [m] (the search is pruned by it).
-  void nearest(const Transform& T, std::size_t begin, std::size_t end, float bound, float* out) const {
+  void nearest(const Transform& T, std::size_t begin, std::size_t end, float bound,
+               float* out) const {
     const Eigen::Matrix3f R = T.block<3, 3>(0, 0).cast<float>();
     const Eigen::Vector3f t = T.block<3, 1>(0, 3).cast<float>();
     const float bound_sq = bound * bound;
@@ -41,9 +42,15 @@ Verifier::~Verifier() = default;
 Verifier::Verifier(Verifier&&) noexcept = default;
 Verifier& Verifier::operator=(Verifier&&) noexcept = default;
 
-const std::vector<Eigen::Vector3f>& Verifier::source_points() const { return impl_->source; }
-const std::vector<Eigen::Vector3f>& Verifier::target_points() const { return impl_->target; }
-double Verifier::build_time_ms() const { return impl_->build_ms; }
+const std::vector<Eigen::Vector3f>& Verifier::source_points() const {
+  return impl_->source;
+}
+const std::vector<Eigen::Vector3f>& Verifier::target_points() const {
+  return impl_->target;
+}
+double Verifier::build_time_ms() const {
+  return impl_->build_ms;
+}
 
 std::vector<float> Verifier::distances(const Transform& T) const {
   std::vector<float> d(impl_->source.size(), HUGE_VALF);
@@ -65,7 +72,8 @@ double Verifier::score(const Transform& T, double mu, ScoreKind kind, int thread
       for (int k = 0; k < threads; ++k)
         pool.emplace_back([&, k] {
           impl_->nearest(T, n * static_cast<std::size_t>(k) / static_cast<std::size_t>(threads),
-                         n * static_cast<std::size_t>(k + 1) / static_cast<std::size_t>(threads), bound, d.data());
+                         n * static_cast<std::size_t>(k + 1) / static_cast<std::size_t>(threads),
+                         bound, d.data());
         });
       for (auto& t : pool) t.join();
     }
@@ -73,9 +81,15 @@ double Verifier::score(const Transform& T, double mu, ScoreKind kind, int thread
   double D = 0.0;
   for (float x : d) {
     switch (kind) {
-      case ScoreKind::truncated: D += std::min<double>(x, mu); break;
-      case ScoreKind::trimmed: D += x < mu ? x : 0.0; break;
-      case ScoreKind::nearest: D += x; break;
+      case ScoreKind::truncated:
+        D += std::min<double>(x, mu);
+        break;
+      case ScoreKind::trimmed:
+        D += x < mu ? x : 0.0;
+        break;
+      case ScoreKind::nearest:
+        D += x;
+        break;
     }
   }
   return D;
@@ -98,14 +112,16 @@ VerificationResult verify_candidates(const Verifier& verifier,
     const bool same = std::abs(r.scores[i] - best) <= 1e-9 * std::max(1.0, std::abs(best));
     if (same) {
       r.tie = true;
-      if (candidates[i].inliers.size() > candidates[static_cast<std::size_t>(r.selected)].inliers.size())
+      if (candidates[i].inliers.size() >
+          candidates[static_cast<std::size_t>(r.selected)].inliers.size())
         r.selected = static_cast<int>(i);
     } else if (r.scores[i] < best) {
       r.selected = static_cast<int>(i);
       r.tie = false;
     }
   }
-  r.time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  r.time_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   return r;
 }
 

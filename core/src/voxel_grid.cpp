@@ -40,7 +40,8 @@ VoxelDownsample voxel_downsample(const std::vector<Eigen::Vector3f>& points, dou
   index.reserve(n / 2 + 16);
   std::vector<Eigen::Vector3d> sums;
   for (std::size_t i = 0; i < n; ++i) {
-    const auto [it, inserted] = index.emplace(voxel_key(point(i), inv), static_cast<int>(sums.size()));
+    const auto [it, inserted] =
+        index.emplace(voxel_key(point(i), inv), static_cast<int>(sums.size()));
     if (inserted) {
       sums.emplace_back(Eigen::Vector3d::Zero());
       out.counts.push_back(0);

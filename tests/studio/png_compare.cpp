@@ -42,8 +42,9 @@ bool load(const std::string& path, Image& img) {
 
 int main(int argc, char** argv) {
   if (argc < 3) {
-    std::fprintf(stderr, "usage: png_compare REFERENCE ACTUAL [--diff OUT.png] [--pixel-threshold N] "
-                         "[--max-fraction F] [--ignore x,y,w,h]...\n");
+    std::fprintf(stderr,
+                 "usage: png_compare REFERENCE ACTUAL [--diff OUT.png] [--pixel-threshold N] "
+                 "[--max-fraction F] [--ignore x,y,w,h]...\n");
     return 2;
   }
   std::string diff_path;
@@ -52,9 +53,12 @@ int main(int argc, char** argv) {
   std::vector<Rect> ignore;
   for (int i = 3; i + 1 < argc; i += 2) {
     const std::string opt = argv[i];
-    if (opt == "--diff") diff_path = argv[i + 1];
-    else if (opt == "--pixel-threshold") threshold = std::atoi(argv[i + 1]);
-    else if (opt == "--max-fraction") max_fraction = std::atof(argv[i + 1]);
+    if (opt == "--diff")
+      diff_path = argv[i + 1];
+    else if (opt == "--pixel-threshold")
+      threshold = std::atoi(argv[i + 1]);
+    else if (opt == "--max-fraction")
+      max_fraction = std::atof(argv[i + 1]);
     else if (opt == "--ignore") {
       Rect r{};
       if (std::sscanf(argv[i + 1], "%d,%d,%d,%d", &r.x, &r.y, &r.w, &r.h) != 4) {
@@ -89,7 +93,8 @@ int main(int argc, char** argv) {
       bool skip = false;
       for (const Rect& r : ignore) skip = skip || r.contains(x, y);
       int d = 0;
-      for (int c = 0; c < 3; ++c) d = std::max(d, std::abs(int(ref.rgba[k + c]) - int(act.rgba[k + c])));
+      for (int c = 0; c < 3; ++c)
+        d = std::max(d, std::abs(int(ref.rgba[k + c]) - int(act.rgba[k + c])));
       const bool differs = !skip && d > threshold;
       if (!skip) {
         ++compared;
@@ -104,11 +109,13 @@ int main(int argc, char** argv) {
       diff[k + 3] = 255;
     }
   const double fraction = compared ? static_cast<double>(differing) / compared : 0.0;
-  std::printf("%zu of %zu pixels differ (%.4f %%, limit %.4f %%), largest channel difference %d "
-              "(pixel threshold %d)\n",
-              differing, compared, 100 * fraction, 100 * max_fraction, largest, threshold);
+  std::printf(
+      "%zu of %zu pixels differ (%.4f %%, limit %.4f %%), largest channel difference %d "
+      "(pixel threshold %d)\n",
+      differing, compared, 100 * fraction, 100 * max_fraction, largest, threshold);
   if (fraction <= max_fraction) return 0;
-  if (!diff_path.empty() && stbi_write_png(diff_path.c_str(), ref.w, ref.h, 4, diff.data(), ref.w * 4))
+  if (!diff_path.empty() &&
+      stbi_write_png(diff_path.c_str(), ref.w, ref.h, 4, diff.data(), ref.w * 4))
     std::printf("wrote diff image %s\n", diff_path.c_str());
   return 1;
 }

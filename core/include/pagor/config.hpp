@@ -16,7 +16,7 @@ enum class LandmarkMethod { cluster, fpfh };
 
 /// Landmark extraction for one semantic class.
 struct ClassParams {
-  std::string name;                               ///< class name in the label scheme
+  std::string name;                                 ///< class name in the label scheme
   LandmarkMethod method = LandmarkMethod::cluster;  ///< clusters, or FPFH keypoints
   double voxel_size = 0.2;         ///< downsampling voxel before clustering or FPFH [m]; 0 = none
   double cluster_tolerance = 0.5;  ///< cluster: max gap between points of one cluster [m]
@@ -36,8 +36,8 @@ struct CorrespondenceParams {
   int max_correspondences = 1500;  ///< cap on the total; the most promising are kept; 0 = no cap
   bool fpfh_mutual = true;         ///< fpfh classes: keep only mutual nearest descriptors
   int fpfh_max_per_class = 300;    ///< fpfh classes: at most this many matches (best first)
-  double shape_scale = 0.5;  ///< ranking of cluster pairs: extents differing by this much [m]
-                             ///< score e^-1
+  double shape_scale = 0.5;        ///< ranking of cluster pairs: extents differing by this much [m]
+                                   ///< score e^-1
 };
 
 /// Translation-and-rotation-invariant measurement between two correspondences.
@@ -53,9 +53,10 @@ enum class AffinityKind {
 
 /// The pyramid of consistency graphs.
 struct GraphParams {
-  TrimKind trim = TrimKind::ratio;                        ///< TRIM kind
-  std::vector<double> thresholds{0.02, 0.04, 0.08, 0.16};  ///< epsilon_1 < ... < epsilon_k [TRIM unit]
-  AffinityKind affinity = AffinityKind::binary;           ///< edge weights
+  TrimKind trim = TrimKind::ratio;  ///< TRIM kind
+  std::vector<double> thresholds{0.02, 0.04, 0.08,
+                                 0.16};          ///< epsilon_1 < ... < epsilon_k [TRIM unit]
+  AffinityKind affinity = AffinityKind::binary;  ///< edge weights
   double sigma_ratio = 0.5;  ///< gaussian: sigma as a fraction of the level's epsilon
   double min_length = 0.5;   ///< pairs of landmarks closer than this are never consistent [m]
 };
@@ -74,16 +75,16 @@ struct CliqueParams {
   /// k = greedy size - 1), and never return less than the greedy clique. Off: the plain relaxation
   /// on every vertex.
   bool prune = true;
-  double tol_u = 1e-8;            ///< inner loop stops when |u_new - u| < tol_u
-  double tol_F = 1e-9;            ///< inner loop stops when the objective changes less
-  int max_inner_iterations = 200;  ///< gradient steps for one penalty d
+  double tol_u = 1e-8;              ///< inner loop stops when |u_new - u| < tol_u
+  double tol_F = 1e-9;              ///< inner loop stops when the objective changes less
+  int max_inner_iterations = 200;   ///< gradient steps for one penalty d
   int max_outer_iterations = 1000;  ///< penalty increases
-  double beta = 0.25;             ///< backtracking step reduction, in (0, 1)
-  int max_line_search = 99;       ///< backtracking steps per gradient step
-  double eps = 1e-9;              ///< numerical zero
-  double support_tol = 1e-6;      ///< entries below this fraction of the largest count as zero
-  std::uint64_t seed = 42;        ///< seed of the initial vector
-  double warm_start_mix = 0.05;   ///< cascaded: weight of the random start added to a warm start
+  double beta = 0.25;               ///< backtracking step reduction, in (0, 1)
+  int max_line_search = 99;         ///< backtracking steps per gradient step
+  double eps = 1e-9;                ///< numerical zero
+  double support_tol = 1e-6;        ///< entries below this fraction of the largest count as zero
+  std::uint64_t seed = 42;          ///< seed of the initial vector
+  double warm_start_mix = 0.05;     ///< cascaded: weight of the random start added to a warm start
   /// cascaded: a warm-started level begins with this fraction of the previous level's final
   /// penalty d (1: continue where the previous level stopped; 0: from d = 0).
   double warm_start_penalty = 1.0;
@@ -99,10 +100,10 @@ enum class PoseModel {
 /// GNC with a truncated least-squares cost.
 struct GncParams {
   PoseModel model = PoseModel::se3;  ///< SE(3) or SE(2)
-  double noise_bound = 1.0;        ///< TLS truncation: residuals beyond are outliers [m]
-  double mu_factor = 1.4;          ///< GNC continuation factor, > 1
-  int max_iterations = 100;        ///< GNC iterations
-  double cost_tolerance = 1e-6;    ///< stop when the TLS cost changes less [m^2]
+  double noise_bound = 1.0;          ///< TLS truncation: residuals beyond are outliers [m]
+  double mu_factor = 1.4;            ///< GNC continuation factor, > 1
+  int max_iterations = 100;          ///< GNC iterations
+  double cost_tolerance = 1e-6;      ///< stop when the TLS cost changes less [m^2]
 };
 
 /// How a candidate pose is scored on the dense clouds.
@@ -114,8 +115,8 @@ enum class ScoreKind {
 
 /// Geometric verification on the metric clouds.
 struct VerificationParams {
-  double voxel_size = 0.5;  ///< downsampling of both clouds [m]
-  double mu = 1.0;          ///< truncation distance [m]
+  double voxel_size = 0.5;                 ///< downsampling of both clouds [m]
+  double mu = 1.0;                         ///< truncation distance [m]
   ScoreKind score = ScoreKind::truncated;  ///< scoring
 };
 
@@ -141,7 +142,8 @@ struct Config {
 Config default_config();
 
 /// Parses a JSON document. Keys that are absent keep their defaults. Unknown keys, wrong types
-/// and invalid values throw ConfigError naming `origin` and the key path (e.g. `graph.thresholds[2]`).
+/// and invalid values throw ConfigError naming `origin` and the key path (e.g.
+/// `graph.thresholds[2]`).
 Config parse_config(const std::string& json_text, const std::string& origin = "config");
 
 /// Reads and parses a JSON file. Throws InputError (unreadable) or ConfigError.

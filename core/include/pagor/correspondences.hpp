@@ -14,9 +14,9 @@ namespace pagor {
 
 /// The correspondences of a pair of clouds.
 struct CorrespondenceSet {
-  std::vector<Correspondence> items;  ///< kept correspondences, best score first within a class
-  std::size_t candidates = 0;         ///< how many there were before the cap
-  bool capped = false;                ///< whether the cap removed some
+  std::vector<Correspondence> items;   ///< kept correspondences, best score first within a class
+  std::size_t candidates = 0;          ///< how many there were before the cap
+  bool capped = false;                 ///< whether the cap removed some
   std::vector<std::size_t> per_class;  ///< kept per configured class
   std::vector<std::string> warnings;
   double time_ms = 0.0;  ///< wall time [ms]

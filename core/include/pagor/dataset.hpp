@@ -20,17 +20,17 @@ struct PairSource {
   std::string source, source_labels;  ///< source cloud and optional `.label` file
   std::string target, target_labels;  ///< target cloud and optional `.label` file
   // kitti
-  std::string kitti_root;             ///< directory holding `sequences/`
-  std::string sequence = "00";        ///< sequence name
+  std::string kitti_root;       ///< directory holding `sequences/`
+  std::string sequence = "00";  ///< sequence name
   int source_frame = 0, target_frame = 0;
   // synthetic
-  std::uint64_t synthetic_seed = 7;   ///< seed of the generated scene
+  std::uint64_t synthetic_seed = 7;  ///< seed of the generated scene
 };
 
 /// A loaded pair.
 struct LoadedPair {
   LoadedCloud source, target;
-  std::string source_name, target_name;  ///< file paths or descriptions, for messages
+  std::string source_name, target_name;         ///< file paths or descriptions, for messages
   std::optional<Transform> T_target_source_gt;  ///< ground truth when known
 };
 

@@ -14,12 +14,12 @@ namespace pagor {
 
 /// A candidate pose.
 struct PoseEstimate {
-  bool valid = false;                              ///< false: too few or degenerate correspondences
+  bool valid = false;  ///< false: too few or degenerate correspondences
   Transform T_target_source = Transform::Identity();  ///< maps source points into the target frame
-  std::vector<int> inliers;   ///< indices (into the input lists) with residual <= noise bound
-  int iterations = 0;         ///< GNC iterations run
-  std::string failure;        ///< why it is invalid
-  double time_ms = 0.0;       ///< wall time [ms]
+  std::vector<int> inliers;  ///< indices (into the input lists) with residual <= noise bound
+  int iterations = 0;        ///< GNC iterations run
+  std::string failure;       ///< why it is invalid
+  double time_ms = 0.0;      ///< wall time [ms]
 };
 
 /// Weighted least-squares rigid transform (Horn/Umeyama without scale) mapping `src` onto `dst`.
@@ -32,7 +32,8 @@ bool weighted_rigid_transform(const std::vector<Eigen::Vector3d>& src,
 /// GNC-TLS. `src` and `dst` have the same length. In SE(2), residuals are measured in the x-y
 /// plane. Fewer than 3 correspondences (2 in SE(2)), or a collinear set, gives an invalid estimate.
 PoseEstimate estimate_pose_gnc(const std::vector<Eigen::Vector3d>& src,
-                               const std::vector<Eigen::Vector3d>& dst, const GncParams& params = {});
+                               const std::vector<Eigen::Vector3d>& dst,
+                               const GncParams& params = {});
 
 /// Rotation angle of a rotation matrix [deg].
 double rotation_angle_deg(const Eigen::Matrix3d& R);

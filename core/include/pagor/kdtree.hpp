@@ -19,15 +19,16 @@ class KdTree3f {
 
   /// Nearest point to `q` strictly closer than sqrt(`max_distance_sq`): its index in the input and
   /// squared distance; index -1 (and `max_distance_sq`) when there is none.
-  std::pair<int, float> nearest(const Eigen::Vector3f& q,
-                                float max_distance_sq = std::numeric_limits<float>::infinity()) const;
+  std::pair<int, float> nearest(
+      const Eigen::Vector3f& q,
+      float max_distance_sq = std::numeric_limits<float>::infinity()) const;
 
   std::size_t size() const { return points_.size(); }
 
  private:
   struct Node {
-    float split = 0;  // coordinate of the splitting plane (inner nodes)
-    int axis = -1;    // 0, 1, 2; -1 for a leaf
+    float split = 0;   // coordinate of the splitting plane (inner nodes)
+    int axis = -1;     // 0, 1, 2; -1 for a leaf
     int a = 0, b = 0;  // inner: children; leaf: [a, b) range of points_
   };
   int build(int begin, int end, int leaf_size);

@@ -15,10 +15,10 @@ namespace pagor {
 struct ClassSummary {
   std::string name;                                 ///< class name
   LandmarkMethod method = LandmarkMethod::cluster;  ///< how its landmarks were made
-  std::size_t points = 0;     ///< input points of this class
-  std::size_t voxels = 0;     ///< after voxel downsampling
-  std::size_t landmarks = 0;  ///< landmarks made
-  double time_ms = 0.0;       ///< wall time [ms]
+  std::size_t points = 0;                           ///< input points of this class
+  std::size_t voxels = 0;                           ///< after voxel downsampling
+  std::size_t landmarks = 0;                        ///< landmarks made
+  double time_ms = 0.0;                             ///< wall time [ms]
 };
 
 /// The landmarks of one cloud.

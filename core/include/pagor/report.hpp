@@ -10,8 +10,8 @@
 ///                     upper_bound (null without ground truth)
 ///   correspondences   count, candidates, capped, per_class {name: count}
 ///   landmarks         source / target: {class name: count}
-///   timings_ms        landmarks, correspondences, graph, clique, gnc, verification, evaluation, total
-///   warnings[], config (the full configuration used)
+///   timings_ms        landmarks, correspondences, graph, clique, gnc, verification, evaluation,
+///   total warnings[], config (the full configuration used)
 
 #include <string>
 

@@ -30,18 +30,18 @@ struct SyntheticParams {
 
 /// One generated object.
 struct SyntheticObject {
-  std::string class_name;            ///< "car", "trunk", "pole" or "building"
-  std::uint32_t label = 0;           ///< its semantickitti-train id
-  Eigen::Vector3d centroid_world;    ///< mean of its surface samples in the world frame [m]
+  std::string class_name;          ///< "car", "trunk", "pole" or "building"
+  std::uint32_t label = 0;         ///< its semantickitti-train id
+  Eigen::Vector3d centroid_world;  ///< mean of its surface samples in the world frame [m]
   bool in_source = false, in_target = false;  ///< whether each scan sees it
 };
 
 /// The scene and its two scans.
 struct SyntheticScene {
-  PointCloud source;                  ///< points in the source sensor frame
-  PointCloud target;                  ///< points in the target sensor frame
-  Transform T_target_source;          ///< maps source points into the target frame
-  Transform T_world_source;           ///< source sensor pose in the world
+  PointCloud source;          ///< points in the source sensor frame
+  PointCloud target;          ///< points in the target sensor frame
+  Transform T_target_source;  ///< maps source points into the target frame
+  Transform T_world_source;   ///< source sensor pose in the world
   std::vector<SyntheticObject> objects;
 };
 

@@ -24,7 +24,9 @@ struct PointCloud {
 };
 
 /// Semantic class id of a raw label (lower 16 bits).
-inline std::uint32_t semantic_id(std::uint32_t raw_label) { return raw_label & 0xFFFFu; }
+inline std::uint32_t semantic_id(std::uint32_t raw_label) {
+  return raw_label & 0xFFFFu;
+}
 
 /// How a landmark was made.
 enum class LandmarkKind : std::uint8_t {
@@ -34,19 +36,19 @@ enum class LandmarkKind : std::uint8_t {
 
 /// A semantic landmark: a cluster centroid or a FPFH keypoint of one configured class.
 struct Landmark {
-  int class_index = -1;                               ///< index into the configured class list
-  LandmarkKind kind = LandmarkKind::cluster;          ///< how it was made
-  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();  ///< position [m]
+  int class_index = -1;                                  ///< index into the configured class list
+  LandmarkKind kind = LandmarkKind::cluster;             ///< how it was made
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();    ///< position [m]
   Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();  ///< spread of its points [m^2]
-  std::size_t point_count = 0;                        ///< points of the input cloud it covers
-  std::vector<int> point_indices;                     ///< those points' indices in the input cloud
+  std::size_t point_count = 0;                           ///< points of the input cloud it covers
+  std::vector<int> point_indices;  ///< those points' indices in the input cloud
 };
 
 /// A putative association of a source landmark with a target landmark of the same class.
 struct Correspondence {
-  int class_index = -1;  ///< configured class both landmarks belong to
-  int source = -1;       ///< index into the source landmark list
-  int target = -1;       ///< index into the target landmark list
+  int class_index = -1;                         ///< configured class both landmarks belong to
+  int source = -1;                              ///< index into the source landmark list
+  int target = -1;                              ///< index into the target landmark list
   Eigen::Vector3d p = Eigen::Vector3d::Zero();  ///< source landmark position [m]
   Eigen::Vector3d q = Eigen::Vector3d::Zero();  ///< target landmark position [m]
   double score = 0.0;  ///< how promising, in [0, 1]; used only to rank when capping

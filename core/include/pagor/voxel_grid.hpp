@@ -9,9 +9,10 @@ namespace pagor {
 
 /// Result of voxel downsampling.
 struct VoxelDownsample {
-  std::vector<Eigen::Vector3f> points;  ///< one point per occupied voxel: the mean of its points [m]
-  std::vector<int> counts;              ///< input points per voxel
-  std::vector<int> voxel_of;            ///< per input point (or per subset entry): its voxel index
+  std::vector<Eigen::Vector3f>
+      points;                 ///< one point per occupied voxel: the mean of its points [m]
+  std::vector<int> counts;    ///< input points per voxel
+  std::vector<int> voxel_of;  ///< per input point (or per subset entry): its voxel index
 };
 
 /// Downsamples `points` (or only `points[subset[i]]` when `subset` is given) on a grid of
