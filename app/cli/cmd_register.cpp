@@ -31,48 +31,6 @@ std::string pose_text(const Transform& T) {
 
 }  // namespace
 
-std::vector<Option> pair_options() {
-  return {
-      {"source", 1, "FILE", "source cloud (.bin, .pcd, .ply)"},
-      {"target", 1, "FILE", "target cloud"},
-      {"source-labels", 1, "FILE", "SemanticKITTI .label file for --source"},
-      {"target-labels", 1, "FILE", "SemanticKITTI .label file for --target"},
-      {"kitti-root", 1, "DIR", "KITTI root holding sequences/ (instead of --source/--target)"},
-      {"sequence", 1, "SEQ", "KITTI sequence (default 00)"},
-      {"pair", 2, "S T", "KITTI source and target frame numbers"},
-      {"synthetic", 1, "SEED", "the generated scene with that seed"},
-  };
-}
-
-PairSource pair_source_from_args(const Args& args) {
-  const int chosen = args.has("source") + args.has("kitti-root") + args.has("synthetic");
-  if (chosen != 1)
-    throw UsageError(
-        "choose one input: --source S --target T, --kitti-root DIR --pair S T, "
-        "or --synthetic SEED");
-  PairSource src;
-  if (args.has("source")) {
-    if (!args.has("target")) throw UsageError("--source needs --target");
-    src.kind = PairSource::Kind::files;
-    src.source = args.get("source");
-    src.target = args.get("target");
-    src.source_labels = args.get("source-labels");
-    src.target_labels = args.get("target-labels");
-  } else if (args.has("kitti-root")) {
-    if (!args.has("pair")) throw UsageError("--kitti-root needs --pair S T");
-    src.kind = PairSource::Kind::kitti;
-    src.kitti_root = args.get("kitti-root");
-    src.sequence = args.get("sequence", "00");
-    src.source_frame = parse_int(args.all("pair")[0], "--pair (source frame)");
-    src.target_frame = parse_int(args.all("pair")[1], "--pair (target frame)");
-  } else {
-    src.kind = PairSource::Kind::synthetic;
-    src.synthetic_seed =
-        static_cast<std::uint64_t>(parse_int(args.get("synthetic"), "--synthetic"));
-  }
-  return src;
-}
-
 void print_registration(const Pipeline& p) {
   const auto& sl = p.source_landmarks();
   const auto& tl = p.target_landmarks();
@@ -150,7 +108,12 @@ std::vector<Option> register_options() {
 
 int run_register(const Args& args) {
   const Config config = config_from_args(args);
-  const PairSource src = pair_source_from_args(args);
+  const auto chosen = pair_source_from_args(args);
+  if (!chosen)
+    throw UsageError(
+        "choose one input: --source S --target T, --kitti-root DIR --pair S T, or --synthetic "
+        "SEED");
+  const PairSource& src = *chosen;
   std::printf("pair: %s\n", describe(src).c_str());
   const auto t0 = std::chrono::steady_clock::now();
   LoadedPair pair = load_pair(src);

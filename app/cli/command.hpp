@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "common/args.hpp"
+#include "common/pair_args.hpp"
 #include "pagor/config.hpp"
 #include "pagor/dataset.hpp"
 
@@ -45,11 +46,6 @@ std::vector<Option> single_cloud_options();
 
 /// Loads the cloud the single-cloud options select; `name` receives a description.
 LoadedCloud load_single_cloud(const Args& args, std::string& name);
-
-/// Options selecting a registration pair (files, KITTI pair, or synthetic scene).
-std::vector<Option> pair_options();
-/// The pair those options select. Throws UsageError.
-PairSource pair_source_from_args(const Args& args);
 
 /// Prints a warning line on stderr.
 void warn(const std::string& message);

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "common/args.hpp"
+#include "common/pair_args.hpp"
 #include "pagor/errors.hpp"
 #include "pagor/kitti.hpp"
 #include "studio.hpp"
@@ -45,16 +46,9 @@ void* glfw_proc(const char* name) {
 }
 
 std::vector<cli::Option> studio_options() {
-  return {
-      {"kitti-root", 1, "DIR", "KITTI root holding sequences/"},
-      {"sequence", 1, "SEQ", "KITTI sequence (default 00)"},
-      {"pair", 2, "S T", "KITTI source and target frames"},
+  std::vector<cli::Option> o = cli::pair_options();
+  const std::vector<cli::Option> more = {
       {"pairs", 1, "FILE", "pairs file to step through"},
-      {"source", 1, "FILE", "source cloud (.bin, .pcd, .ply)"},
-      {"target", 1, "FILE", "target cloud"},
-      {"source-labels", 1, "FILE", ".label file for --source"},
-      {"target-labels", 1, "FILE", ".label file for --target"},
-      {"synthetic", 1, "SEED", "the generated scene"},
       {"config", 1, "FILE", "configuration JSON"},
       {"session", 1, "FILE", "session JSON (data, parameters, camera, layers, level)"},
       {"headless", 0, "", "render offscreen through OSMesa (no display needed)"},
@@ -64,36 +58,18 @@ std::vector<cli::Option> studio_options() {
       {"timeout", 1, "S",
        "headless: give up waiting for the computation after S seconds (default 600)"},
   };
+  o.insert(o.end(), more.begin(), more.end());
+  return o;
 }
 
 AppState state_from_args(const cli::Args& args) {
   AppState s;
   if (args.has("session")) load_session(args.get("session"), s);
   if (args.has("config")) s.config = load_config(args.get("config"));
-  const int chosen = args.has("source") + args.has("kitti-root") + args.has("synthetic");
-  if (chosen > 1)
-    throw cli::UsageError("choose one input: --kitti-root, --source/--target or --synthetic");
-  if (args.has("kitti-root")) {
-    if (!args.has("pair")) throw cli::UsageError("--kitti-root needs --pair S T");
-    s.data.kind = PairSource::Kind::kitti;
-    s.data.kitti_root = args.get("kitti-root");
-    s.data.sequence = args.get("sequence", "00");
-    s.data.source_frame = cli::parse_int(args.all("pair")[0], "--pair");
-    s.data.target_frame = cli::parse_int(args.all("pair")[1], "--pair");
+  if (const auto chosen = cli::pair_source_from_args(args)) {
+    s.data = *chosen;
     s.have_data = true;
-  } else if (args.has("source")) {
-    if (!args.has("target")) throw cli::UsageError("--source needs --target");
-    s.data.kind = PairSource::Kind::files;
-    s.data.source = args.get("source");
-    s.data.target = args.get("target");
-    s.data.source_labels = args.get("source-labels");
-    s.data.target_labels = args.get("target-labels");
-    s.have_data = true;
-  } else if (args.has("synthetic")) {
-    s.data.kind = PairSource::Kind::synthetic;
-    s.data.synthetic_seed =
-        static_cast<std::uint64_t>(cli::parse_int(args.get("synthetic"), "--synthetic"));
-    s.have_data = true;
+    s.base_dir.clear();  // paths given on the command line are relative to the working directory
   }
   if (args.has("pairs")) {
     s.pairs_file = args.get("pairs");
@@ -102,11 +78,18 @@ AppState state_from_args(const cli::Args& args) {
       if (s.pairs[i] == std::make_pair(s.data.source_frame, s.data.target_frame))
         s.pair_index = static_cast<int>(i);
   }
-  if (!s.have_data && s.data.kitti_root.empty()) {
-    s.data.kind = PairSource::Kind::kitti;
-    s.data.kitti_root = "../shared/data/kitti";
-    s.data.source_frame = 20;
-    s.data.target_frame = 30;
+  if (!s.have_data && !args.has("session")) {
+    // Nothing asked for: the shared KITTI pair 20 -> 30 when it is there, else the synthetic scene.
+    std::error_code ec;
+    if (std::filesystem::is_directory("../shared/data/kitti/sequences/00", ec)) {
+      s.data.kind = PairSource::Kind::kitti;
+      s.data.kitti_root = "../shared/data/kitti";
+      s.data.source_frame = 20;
+      s.data.target_frame = 30;
+    } else {
+      s.data.kind = PairSource::Kind::synthetic;
+    }
+    s.have_data = true;
   }
   if (args.has("size")) {
     int w = 0, h = 0;

@@ -1,0 +1,48 @@
+#include "common/pair_args.hpp"
+
+namespace pagor::cli {
+
+std::vector<Option> pair_options() {
+  return {
+      {"source", 1, "FILE", "source cloud (.bin, .pcd, .ply)"},
+      {"target", 1, "FILE", "target cloud"},
+      {"source-labels", 1, "FILE", "SemanticKITTI .label file for --source"},
+      {"target-labels", 1, "FILE", "SemanticKITTI .label file for --target"},
+      {"kitti-root", 1, "DIR", "KITTI root holding sequences/ (instead of --source/--target)"},
+      {"sequence", 1, "SEQ", "KITTI sequence (default 00)"},
+      {"pair", 2, "S T", "KITTI source and target frame numbers"},
+      {"synthetic", 1, "SEED", "the generated scene with that seed"},
+  };
+}
+
+std::optional<PairSource> pair_source_from_args(const Args& args) {
+  const int chosen = args.has("source") + args.has("kitti-root") + args.has("synthetic");
+  if (chosen == 0) return std::nullopt;
+  if (chosen > 1)
+    throw UsageError(
+        "choose one input: --source S --target T, --kitti-root DIR --pair S T, "
+        "or --synthetic SEED");
+  PairSource src;
+  if (args.has("source")) {
+    if (!args.has("target")) throw UsageError("--source needs --target");
+    src.kind = PairSource::Kind::files;
+    src.source = args.get("source");
+    src.target = args.get("target");
+    src.source_labels = args.get("source-labels");
+    src.target_labels = args.get("target-labels");
+  } else if (args.has("kitti-root")) {
+    if (!args.has("pair")) throw UsageError("--kitti-root needs --pair S T");
+    src.kind = PairSource::Kind::kitti;
+    src.kitti_root = args.get("kitti-root");
+    src.sequence = args.get("sequence", "00");
+    src.source_frame = parse_int(args.all("pair")[0], "--pair (source frame)");
+    src.target_frame = parse_int(args.all("pair")[1], "--pair (target frame)");
+  } else {
+    src.kind = PairSource::Kind::synthetic;
+    src.synthetic_seed =
+        static_cast<std::uint64_t>(parse_int(args.get("synthetic"), "--synthetic"));
+  }
+  return src;
+}
+
+}  // namespace pagor::cli

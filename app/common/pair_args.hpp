@@ -1,0 +1,20 @@
+#pragma once
+/// \file pair_args.hpp
+/// The options that select a registration pair, shared by `pagor` and `pagor-studio`.
+
+#include <optional>
+#include <vector>
+
+#include "common/args.hpp"
+#include "pagor/dataset.hpp"
+
+namespace pagor::cli {
+
+/// `--source/--target` (+ labels), `--kitti-root/--sequence/--pair`, or `--synthetic`.
+std::vector<Option> pair_options();
+
+/// The pair those options select; nullopt when none is given. Throws UsageError for two inputs at
+/// once or an incomplete one.
+std::optional<PairSource> pair_source_from_args(const Args& args);
+
+}  // namespace pagor::cli
