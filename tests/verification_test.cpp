@@ -82,6 +82,9 @@ TEST_CASE("scores match a brute-force reference") {
   CHECK(verifier.score(T, mu, ScoreKind::trimmed) == Approx(trimmed).epsilon(1e-5));
   CHECK(verifier.score(T, mu, ScoreKind::nearest) == Approx(nearest).epsilon(1e-5));
   CHECK(verifier.score(T, mu, ScoreKind::truncated, 3) == Approx(truncated).epsilon(1e-5));
+  double sum = 0;
+  for (float d : verifier.distances(T)) sum += d;
+  CHECK(sum == Approx(nearest).epsilon(1e-5));
 }
 
 TEST_CASE(
