@@ -433,11 +433,7 @@ CliqueResult exact_max_clique(const PyramidGraph& g, int level, const CliquePara
   std::vector<int> all(static_cast<std::size_t>(g.vertices));
   std::iota(all.begin(), all.end(), 0);
   // Higher degree first tends to find large cliques early.
-  std::vector<int> degree(all.size(), 0);
-  for (int v = 0; v < g.vertices; ++v)
-    for (auto e = g.offsets[static_cast<std::size_t>(v)];
-         e < g.offsets[static_cast<std::size_t>(v) + 1]; ++e)
-      degree[static_cast<std::size_t>(v)] += g.level[static_cast<std::size_t>(e)] <= level;
+  const std::vector<int> degree = degrees(g, level);
   std::stable_sort(all.begin(), all.end(), [&](int a, int b) {
     return degree[static_cast<std::size_t>(a)] < degree[static_cast<std::size_t>(b)];
   });

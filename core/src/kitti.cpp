@@ -92,8 +92,9 @@ bool KittiSequence::has_labels(int frame) const {
 
 LoadedCloud KittiSequence::load_frame(int frame) const {
   if (frame < 0) throw InputError("frame " + std::to_string(frame) + ": frame numbers start at 0");
-  LoadedCloud out = load_cloud(scan_path(frame), has_labels(frame) ? label_path(frame) : "");
-  if (!has_labels(frame))
+  const bool labelled = has_labels(frame);
+  LoadedCloud out = load_cloud(scan_path(frame), labelled ? label_path(frame) : "");
+  if (!labelled)
     out.warnings.push_back(label_path(frame) + ": no label file; the scan has no semantic labels");
   return out;
 }
