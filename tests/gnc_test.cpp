@@ -112,6 +112,16 @@ TEST_CASE("pose errors against ground truth") {
   CHECK(e.translation == Approx(1.5));
   CHECK(e.rotation_deg == Approx(3.0).epsilon(1e-6));
   CHECK(e.success);
+  // Euler angles of a known rotation, and the small-pitch branch.
+  const Eigen::Matrix3d R = (Eigen::AngleAxisd(0.5, Eigen::Vector3d::UnitZ()) *
+                             Eigen::AngleAxisd(-0.1, Eigen::Vector3d::UnitY()) *
+                             Eigen::AngleAxisd(0.2, Eigen::Vector3d::UnitX()))
+                                .toRotationMatrix();
+  const Eigen::Vector3d ypr = yaw_pitch_roll_deg(R);
+  CHECK(ypr.x() == Approx(0.5 * 180 / 3.14159265358979));
+  CHECK(ypr.y() == Approx(-0.1 * 180 / 3.14159265358979));
+  CHECK(ypr.z() == Approx(0.2 * 180 / 3.14159265358979));
+  CHECK(yaw_pitch_roll_deg(Eigen::Matrix3d::Identity()).norm() == 0.0);
   EvaluationParams strict;
   strict.max_translation_error = 1.0;
   CHECK_FALSE(pose_error(est, truth, strict).success);

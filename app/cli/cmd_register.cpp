@@ -7,25 +7,18 @@
 
 #include "command.hpp"
 #include "pagor/errors.hpp"
+#include "pagor/evaluation.hpp"
 #include "pagor/pipeline.hpp"
 #include "pagor/report.hpp"
 
 namespace pagor::cli {
 namespace {
 
-constexpr double kRadToDeg = 180.0 / 3.14159265358979323846;
-
 std::string pose_text(const Transform& T) {
-  const Eigen::Vector3d ypr = T.block<3, 3>(0, 0).eulerAngles(2, 1, 0);
-  // eulerAngles returns yaw in [0, pi]; show the equivalent with small roll and pitch.
-  Eigen::Vector3d a = ypr;
-  if (std::abs(a[1]) > M_PI / 2 || std::abs(a[2]) > M_PI / 2) {
-    a = Eigen::Vector3d(a[0] - M_PI, M_PI - a[1], a[2] - M_PI);
-    for (int i = 0; i < 3; ++i) a[i] = std::remainder(a[i], 2 * M_PI);
-  }
+  const Eigen::Vector3d a = yaw_pitch_roll_deg(T.block<3, 3>(0, 0));
   char buf[160];
   std::snprintf(buf, sizeof(buf), "t = (%.2f, %.2f, %.2f) m, yaw %.2f, pitch %.2f, roll %.2f deg",
-                T(0, 3), T(1, 3), T(2, 3), a[0] * kRadToDeg, a[1] * kRadToDeg, a[2] * kRadToDeg);
+                T(0, 3), T(1, 3), T(2, 3), a[0], a[1], a[2]);
   return buf;
 }
 

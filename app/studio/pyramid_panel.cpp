@@ -7,20 +7,11 @@
 #include <cmath>
 #include <cstdio>
 
+#include "pagor/evaluation.hpp"
 #include "panels.hpp"
 
 namespace pagor::studio {
 namespace {
-
-constexpr double kRadToDeg = 180.0 / 3.14159265358979323846;
-
-// Yaw, pitch, roll [deg] of a rotation (Z-Y-X), in the branch with |pitch| <= 90.
-Eigen::Vector3d ypr_deg(const Eigen::Matrix3d& R) {
-  const double pitch = std::asin(std::clamp(-R(2, 0), -1.0, 1.0));
-  const double yaw = std::atan2(R(1, 0), R(0, 0));
-  const double roll = std::atan2(R(2, 1), R(2, 2));
-  return Eigen::Vector3d(yaw, pitch, roll) * kRadToDeg;
-}
 
 const ImVec4 kGood(0.35f, 0.9f, 0.45f, 1.0f), kBad(1.0f, 0.4f, 0.4f, 1.0f),
     kDim(0.6f, 0.6f, 0.6f, 1.0f);
@@ -143,7 +134,7 @@ void pyramid_panel(UiContext& ui) {
         const Transform& T = l.pose.T_target_source;
         ImGui::Text("%7.2f %6.2f %6.2f", T(0, 3), T(1, 3), T(2, 3));
         ImGui::TableNextColumn();
-        ImGui::Text("%.2f", ypr_deg(T.block<3, 3>(0, 0)).x());
+        ImGui::Text("%.2f", yaw_pitch_roll_deg(T.block<3, 3>(0, 0)).x());
       } else {
         ImGui::TextColored(kDim, "%s", l.pose.failure.c_str());
         ImGui::TableNextColumn();
@@ -164,7 +155,7 @@ void pyramid_panel(UiContext& ui) {
     ImGui::Text("level %d (\xce\xb5 %.3f): clique of %zu", shown, l.epsilon, l.clique.size());
     if (l.pose.valid) {
       const Transform& T = l.pose.T_target_source;
-      const Eigen::Vector3d a = ypr_deg(T.block<3, 3>(0, 0));
+      const Eigen::Vector3d a = yaw_pitch_roll_deg(T.block<3, 3>(0, 0));
       ImGui::Text("t = (%.2f, %.2f, %.2f) m", T(0, 3), T(1, 3), T(2, 3));
       ImGui::Text("yaw %.2f\xc2\xb0 pitch %.2f\xc2\xb0 roll %.2f\xc2\xb0", a.x(), a.y(), a.z());
       ImGui::Text("%zu GNC inliers, %d iterations", l.pose.inliers.size(), l.pose.iterations);

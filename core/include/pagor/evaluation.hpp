@@ -14,6 +14,10 @@ struct PoseError {
   bool success = false;       ///< both within the criterion
 };
 
+/// Yaw, pitch and roll of a rotation [deg]: Z-Y-X Euler angles (R = Rz(yaw) Ry(pitch) Rx(roll))
+/// in the branch with |pitch| <= 90 deg.
+Eigen::Vector3d yaw_pitch_roll_deg(const Eigen::Matrix3d& R);
+
 /// Compares an estimate with the truth under `criterion` (default 2 m / 5 deg).
 PoseError pose_error(const Transform& estimate, const Transform& truth,
                      const EvaluationParams& criterion = {});
