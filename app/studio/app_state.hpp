@@ -69,6 +69,9 @@ std::string resolve_path(const AppState& state, const std::string& path);
 /// `data` with its relative paths resolved against `base_dir`.
 PairSource resolved_data(const AppState& state);
 
+/// Index of `data`'s KITTI frame pair in `pairs`, or -1.
+int index_of_pair(const std::vector<std::pair<int, int>>& pairs, const PairSource& data);
+
 /// The level the view shows: `view.level` if valid, else the selected one (or -1).
 int shown_level(const ViewState& view, int selected, int levels);
 

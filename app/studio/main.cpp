@@ -74,9 +74,7 @@ AppState state_from_args(const cli::Args& args) {
   if (args.has("pairs")) {
     s.pairs_file = args.get("pairs");
     s.pairs = read_pairs_file(s.pairs_file);
-    for (std::size_t i = 0; i < s.pairs.size(); ++i)
-      if (s.pairs[i] == std::make_pair(s.data.source_frame, s.data.target_frame))
-        s.pair_index = static_cast<int>(i);
+    s.pair_index = index_of_pair(s.pairs, s.data);
   }
   if (!s.have_data && !args.has("session")) {
     // Nothing asked for: the shared KITTI pair 20 -> 30 when it is there, else the synthetic scene.

@@ -28,10 +28,6 @@ void push(std::vector<float>& v, const Eigen::Vector3f& p, const Rgba& c) {
   v.insert(v.end(), {p.x(), p.y(), p.z(), pack(c)});
 }
 
-Eigen::Vector3f apply(const Transform& T, const Eigen::Vector3d& p) {
-  return (T.block<3, 3>(0, 0) * p + T.block<3, 1>(0, 3)).cast<float>();
-}
-
 }  // namespace
 
 ClassColors::ClassColors() {
@@ -61,8 +57,16 @@ std::vector<Rgba> ClassColors::per_point(const PointCloud& cloud, const LabelSch
   return out;
 }
 
+Eigen::Vector3f transform_point(const Transform& T, const Eigen::Vector3d& p) {
+  return (T.block<3, 3>(0, 0) * p + T.block<3, 1>(0, 3)).cast<float>();
+}
+
+double ground_truth_residual(const Correspondence& c, const Transform& T_gt) {
+  return (T_gt.block<3, 3>(0, 0) * c.p + T_gt.block<3, 1>(0, 3) - c.q).norm();
+}
+
 bool true_inlier(const Correspondence& c, const Transform& T_gt, double bound) {
-  return (T_gt.block<3, 3>(0, 0) * c.p + T_gt.block<3, 1>(0, 3) - c.q).norm() <= bound;
+  return ground_truth_residual(c, T_gt) <= bound;
 }
 
 bool SceneView::init(const Gl& gl, std::string& error) {
@@ -155,7 +159,7 @@ void SceneView::update(const Snapshot& s, const ViewState& view, const Transform
           view.color == ColorMode::by_class
               ? class_colors_.of(set.classes[static_cast<std::size_t>(lm.class_index)].name)
               : (source ? Palette::source : Palette::target);
-      push(v, source ? apply(pose, lm.centroid) : lm.centroid.cast<float>(), color);
+      push(v, source ? transform_point(pose, lm.centroid) : lm.centroid.cast<float>(), color);
     }
     return v;
   };
@@ -185,7 +189,7 @@ void SceneView::update(const Snapshot& s, const ViewState& view, const Transform
                                                  s.config.evaluation.max_translation_error)
                       ? Palette::clique_outlier
                       : Palette::clique;
-        push(lines, apply(pose, c.p), color);
+        push(lines, transform_point(pose, c.p), color);
         push(lines, c.q.cast<float>(), color);
       }
     }

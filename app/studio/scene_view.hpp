@@ -45,6 +45,10 @@ struct Palette {
 /// `bound` [m] (the studio uses the success criterion's translation tolerance, as KITTI's ground
 /// truth itself is only good to about a metre).
 bool true_inlier(const Correspondence& c, const Transform& T_gt, double bound);
+/// |T_gt p - q| of a correspondence [m].
+double ground_truth_residual(const Correspondence& c, const Transform& T_gt);
+/// A source point moved by T, as the GPU buffers store it.
+Eigen::Vector3f transform_point(const Transform& T, const Eigen::Vector3d& p);
 
 class SceneView {
  public:

@@ -16,10 +16,6 @@ namespace {
 
 constexpr float kLandmarkPickPx = 8.0f, kLinePickPx = 4.0f;
 
-Eigen::Vector3f apply(const Transform& T, const Eigen::Vector3d& p) {
-  return (T.block<3, 3>(0, 0) * p + T.block<3, 1>(0, 3)).cast<float>();
-}
-
 float segment_distance(const Eigen::Vector2f& m, const Eigen::Vector2f& a,
                        const Eigen::Vector2f& b) {
   const Eigen::Vector2f ab = b - a;
@@ -47,11 +43,10 @@ void correspondence_tooltip(const Snapshot& s, int index, int level) {
   ImGui::Text("source landmark %d -> target landmark %d, rank score %.2f", c.source, c.target,
               c.score);
   if (s.ground_truth) {
-    const double r =
-        (s.ground_truth->block<3, 3>(0, 0) * c.p + s.ground_truth->block<3, 1>(0, 3) - c.q).norm();
-    ImGui::Text("ground truth residual %.2f m: %s (tolerance %.1f m)", r,
-                r <= s.config.evaluation.max_translation_error ? "true inlier" : "outlier",
-                s.config.evaluation.max_translation_error);
+    const double tolerance = s.config.evaluation.max_translation_error;
+    ImGui::Text("ground truth residual %.2f m: %s (tolerance %.1f m)",
+                ground_truth_residual(c, *s.ground_truth),
+                true_inlier(c, *s.ground_truth, tolerance) ? "true inlier" : "outlier", tolerance);
   }
   if (level < 0) return;
   const auto& clique = s.levels[static_cast<std::size_t>(level)].clique;
@@ -173,7 +168,7 @@ void scene_window(UiContext& ui) {
       const LandmarkSet& set = side == 0 ? s->source_landmarks : s->target_landmarks;
       for (std::size_t i = 0; i < set.landmarks.size(); ++i) {
         if (set.landmarks[i].kind != LandmarkKind::cluster) continue;
-        const Eigen::Vector3f p = side == 0 ? apply(pose, set.landmarks[i].centroid)
+        const Eigen::Vector3f p = side == 0 ? transform_point(pose, set.landmarks[i].centroid)
                                             : set.landmarks[i].centroid.cast<float>();
         Eigen::Vector2f px;
         if (!project_to_screen(vp, p, static_cast<float>(w), static_cast<float>(h), px)) continue;
@@ -202,7 +197,8 @@ void scene_window(UiContext& ui) {
     if (!member && !state.view.layers.all_correspondences) continue;
     Eigen::Vector2f a, b;
     const Correspondence& c = s->correspondences[i];
-    if (!project_to_screen(vp, apply(pose, c.p), static_cast<float>(w), static_cast<float>(h), a) ||
+    if (!project_to_screen(vp, transform_point(pose, c.p), static_cast<float>(w),
+                           static_cast<float>(h), a) ||
         !project_to_screen(vp, c.q.cast<float>(), static_cast<float>(w), static_cast<float>(h), b))
       continue;
     const float d = segment_distance(mouse, a, b);

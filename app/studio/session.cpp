@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -69,6 +70,12 @@ PairSource resolved_data(const AppState& s) {
   for (std::string* p : {&d.kitti_root, &d.source, &d.source_labels, &d.target, &d.target_labels})
     *p = resolve(*p, base);
   return d;
+}
+
+int index_of_pair(const std::vector<std::pair<int, int>>& pairs, const PairSource& data) {
+  const auto it =
+      std::find(pairs.begin(), pairs.end(), std::make_pair(data.source_frame, data.target_frame));
+  return it == pairs.end() ? -1 : static_cast<int>(it - pairs.begin());
 }
 
 int shown_level(const ViewState& view, int selected, int levels) {
@@ -159,9 +166,7 @@ void load_session(const std::string& path, AppState& s) {
   next.pair_index = -1;
   if (!next.pairs_file.empty()) {
     next.pairs = read_pairs_file(resolve(next.pairs_file, base));
-    for (std::size_t i = 0; i < next.pairs.size(); ++i)
-      if (next.pairs[i] == std::make_pair(next.data.source_frame, next.data.target_frame))
-        next.pair_index = static_cast<int>(i);
+    next.pair_index = index_of_pair(next.pairs, next.data);
   }
 
   if (j.contains("camera") && !j["camera"].is_null()) {

@@ -7,6 +7,16 @@
 namespace pagor::studio {
 namespace {
 
+// The info log of a shader or program, through the matching pair of GL getters.
+template <class GetIv, class GetLog>
+std::string info_log(GLuint object, GetIv get_iv, GetLog get_log) {
+  GLint length = 0;
+  get_iv(object, GL_INFO_LOG_LENGTH, &length);
+  std::vector<char> log(static_cast<std::size_t>(length > 0 ? length : 1), '\0');
+  get_log(object, static_cast<GLsizei>(log.size()), nullptr, log.data());
+  return log.data();
+}
+
 GLuint compile(const Gl& gl, GLenum kind, const std::string& name, std::string& error) {
   const std::string source = resource(name).text();
   const char* text = source.c_str();
@@ -16,11 +26,8 @@ GLuint compile(const Gl& gl, GLenum kind, const std::string& name, std::string& 
   GLint ok = 0;
   gl.GetShaderiv(shader, GL_COMPILE_STATUS, &ok);
   if (!ok) {
-    GLint length = 0;
-    gl.GetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
-    std::vector<char> log(static_cast<std::size_t>(length > 0 ? length : 1), '\0');
-    gl.GetShaderInfoLog(shader, static_cast<GLsizei>(log.size()), nullptr, log.data());
-    error = "shader " + name + " does not compile: " + log.data();
+    error = "shader " + name +
+            " does not compile: " + info_log(shader, gl.GetShaderiv, gl.GetShaderInfoLog);
     gl.DeleteShader(shader);
     return 0;
   }
@@ -47,11 +54,8 @@ GLuint build_program(const Gl& gl, const std::string& vertex_name, const std::st
   GLint ok = 0;
   gl.GetProgramiv(program, GL_LINK_STATUS, &ok);
   if (!ok) {
-    GLint length = 0;
-    gl.GetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
-    std::vector<char> log(static_cast<std::size_t>(length > 0 ? length : 1), '\0');
-    gl.GetProgramInfoLog(program, static_cast<GLsizei>(log.size()), nullptr, log.data());
-    error = "program " + vertex_name + " + " + fragment_name + " does not link: " + log.data();
+    error = "program " + vertex_name + " + " + fragment_name +
+            " does not link: " + info_log(program, gl.GetProgramiv, gl.GetProgramInfoLog);
     gl.DeleteProgram(program);
     return 0;
   }

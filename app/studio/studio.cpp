@@ -68,7 +68,7 @@ void Studio::frame(int width, int height) {
   const auto t0 = std::chrono::steady_clock::now();
   state_.width = width;
   state_.height = height;
-  if (auto latest = worker_.snapshot(); latest != snapshot_) snapshot_ = std::move(latest);
+  snapshot_ = worker_.snapshot();
   const WorkerStatus status = worker_.status();
 
   ImGuiIO& io = ImGui::GetIO();
