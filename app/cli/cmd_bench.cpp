@@ -1,126 +1,105 @@
-// pagor bench: every pair of a pairs file, one JSON line per pair, and a summary table.
+// pagor bench: every pair of a pairs set (KITTI pairs file or generic manifest), a row per pair,
+// the success rate, the acceptance verdict's precision and recall, and stage times.
 
-#include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <fstream>
-#include <nlohmann/json.hpp>
 
 #include "command.hpp"
+#include "pagor/benchmark.hpp"
 #include "pagor/errors.hpp"
-#include "pagor/kitti.hpp"
-#include "pagor/pipeline.hpp"
-#include "pagor/report.hpp"
 
 namespace pagor::cli {
 namespace {
 
-double median(std::vector<double> v) {
-  if (v.empty()) return 0.0;
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+PairSet pair_set_from_args(const Args& args) {
+  if (args.has("manifest")) {
+    if (args.has("kitti-root") || args.has("pairs"))
+      throw UsageError("choose --manifest FILE or --kitti-root DIR --pairs FILE, not both");
+    return read_pair_manifest(args.get("manifest"));
+  }
+  if (!args.has("kitti-root") || !args.has("pairs"))
+    throw UsageError("bench needs --manifest FILE, or --kitti-root DIR and --pairs FILE");
+  return kitti_pair_set(args.get("kitti-root"), args.get("sequence", "00"), args.get("pairs"));
 }
 
-double mean(const std::vector<double>& v) {
-  double s = 0;
-  for (double x : v) s += x;
-  return v.empty() ? 0.0 : s / static_cast<double>(v.size());
+void print_row(const PairOutcome& o) {
+  const char* verdict = o.accepted ? "accept" : "reject";
+  const char* truth = o.negative ? "neg" : (o.has_ground_truth ? (o.success ? "yes" : "no") : "-");
+  if (o.error)
+    std::printf("%-14s %6d %10.2f %11.2f %8s %6s %8s %10.1f\n", o.name.c_str(), o.selected_level,
+                o.error->translation, o.error->rotation_deg, truth,
+                o.upper_bound ? "yes" : "no", verdict, o.total_ms);
+  else
+    std::printf("%-14s %6s %10s %11s %8s %6s %8s %10.1f\n", o.name.c_str(),
+                o.selected_level >= 0 ? std::to_string(o.selected_level).c_str() : "-", "-", "-",
+                truth, o.has_ground_truth ? (o.upper_bound ? "yes" : "no") : "-", verdict,
+                o.total_ms);
+  std::fflush(stdout);
+}
+
+void print_summary(const BenchmarkSummary& s, const Config& config) {
+  std::printf("\npairs run: %d%s\n", s.pairs_run,
+              s.skipped ? (" (" + std::to_string(s.skipped) + " skipped)").c_str() : "");
+  if (s.with_truth > 0) {
+    std::printf("success (selected pose, %.1f m / %.1f deg): %d/%d = %.1f %%\n",
+                config.evaluation.max_translation_error, config.evaluation.max_rotation_error,
+                s.successes, s.with_truth, 100.0 * s.successes / s.with_truth);
+    std::printf("upper bound (any level succeeds):       %d/%d = %.1f %%\n", s.upper_bound,
+                s.with_truth, 100.0 * s.upper_bound / s.with_truth);
+  }
+  std::printf("verdict: %d accepted; precision %.1f %% (%d right, %d wrong), recall %.1f %% of "
+              "the %d successful pairs; %d known negatives\n",
+              s.accepted, 100.0 * s.precision(), s.true_accepts, s.false_accepts,
+              100.0 * s.recall(), s.successes, s.negatives);
+  std::printf("\n%-18s %10s %12s\n", "stage", "mean [ms]", "median [ms]");
+  for (int i = 0; i < kStageCount; ++i)
+    std::printf("%-18s %10.2f %12.2f\n", stage_name(static_cast<Stage>(i)),
+                s.mean_ms[static_cast<std::size_t>(i)], s.median_ms[static_cast<std::size_t>(i)]);
+  std::printf("%-18s %10.2f %12.2f\n", "total", s.mean_total_ms, s.median_total_ms);
 }
 
 }  // namespace
 
 std::vector<Option> bench_options() {
-  return {{"kitti-root", 1, "DIR", "KITTI root holding sequences/"},
+  return {{"manifest", 1, "FILE",
+           "pairs manifest: 'SOURCE TARGET [gt=FILE] [source_labels=FILE] [target_labels=FILE] "
+           "[name=TEXT] [overlap=no]' per line, paths relative to it"},
+          {"kitti-root", 1, "DIR", "KITTI root holding sequences/ (with --pairs)"},
           {"sequence", 1, "SEQ", "KITTI sequence (default 00)"},
-          {"pairs", 1, "FILE", "pairs file: 'source target' frame numbers per line"},
+          {"pairs", 1, "FILE", "KITTI pairs file: 'source target' frame numbers per line"},
           {"config", 1, "FILE", "configuration JSON (default: built-in outdoor defaults)"},
           {"out", 1, "FILE", "write one JSON line per pair (pagor.register/1 without config)"},
-          {"threads", 1, "N", "threads for graph construction and verification (default 1)"}};
+          {"threads", 1, "N", "threads for landmarks, graph and verification (default 1)"}};
 }
 
 int run_bench(const Args& args) {
-  if (!args.has("kitti-root") || !args.has("pairs"))
-    throw UsageError("bench needs --kitti-root DIR and --pairs FILE");
   const Config config = config_from_args(args);
-  const KittiSequence seq(args.get("kitti-root"), args.get("sequence", "00"));
-  const auto pairs = read_pairs_file(args.get("pairs"));
+  const PairSet set = pair_set_from_args(args);
   std::ofstream out;
   if (args.has("out")) {
     out.open(args.get("out"), std::ios::trunc);
     if (!out) throw InputError(args.get("out") + ": cannot open for writing");
   }
-
-  const Stage stages[] = {
-      Stage::landmarks, Stage::correspondences,   Stage::graph,       Stage::clique,
-      Stage::pose,      Stage::verification_prep, Stage::verification};
-  std::vector<std::vector<double>> times(std::size(stages));
-  std::vector<double> totals;
-  int successes = 0, upper = 0, failed_to_load = 0;
   Pipeline pipeline(config, args.get_int("threads", 1));
-
-  std::printf("%-12s %6s %10s %11s %8s %8s %10s\n", "pair", "level", "t err [m]", "r err [deg]",
-              "success", "bound", "time [ms]");
-  for (std::size_t k = 0; k < pairs.size(); ++k) {
-    const auto [s, t] = pairs[k];
-    std::fprintf(stderr, "[%zu/%zu] %d -> %d ...\r", k + 1, pairs.size(), s, t);
+  std::printf("%-14s %6s %10s %11s %8s %6s %8s %10s\n", "pair", "level", "t err [m]",
+              "r err [deg]", "success", "bound", "verdict", "time [ms]");
+  std::vector<PairOutcome> outcomes;
+  for (std::size_t k = 0; k < set.pairs.size(); ++k) {
+    std::fprintf(stderr, "[%zu/%zu] %s ...\r", k + 1, set.pairs.size(), set.pairs[k].name.c_str());
     std::fflush(stderr);
-    LoadedCloud source, target;
-    try {
-      source = seq.load_frame(s);
-      target = seq.load_frame(t);
-    } catch (const InputError& e) {
-      warn(std::string("pair ") + std::to_string(s) + " -> " + std::to_string(t) +
-           " skipped: " + e.what());
-      ++failed_to_load;
-      continue;
+    PairOutcome o = run_pair(pipeline, set.pairs[k]);
+    if (!o.loaded) {
+      warn("pair " + o.name + " skipped: " + o.load_error);
+    } else {
+      print_row(o);
+      if (out) out << o.report_json << "\n" << std::flush;
     }
-    pipeline.set_input(std::move(source.cloud), std::move(target.cloud));
-    pipeline.set_ground_truth(seq.ground_truth(s, t));
-    pipeline.run();
-
-    double total = 0;
-    for (std::size_t i = 0; i < std::size(stages); ++i) {
-      times[i].push_back(pipeline.time_ms(stages[i]));
-      total += pipeline.time_ms(stages[i]);
-    }
-    totals.push_back(total);
-    const auto err = pipeline.selected_error();
-    const bool ok = err && err->success;
-    successes += ok;
-    upper += pipeline.upper_bound_success();
-    const std::string name = std::to_string(s) + " -> " + std::to_string(t);
-    if (err)
-      std::printf("%-12s %6d %10.2f %11.2f %8s %8s %10.1f\n", name.c_str(),
-                  pipeline.selected_level(), err->translation, err->rotation_deg, ok ? "yes" : "no",
-                  pipeline.upper_bound_success() ? "yes" : "no", total);
-    else
-      std::printf("%-12s %6s %10s %11s %8s %8s %10.1f\n", name.c_str(), "-", "-", "-", "no",
-                  pipeline.upper_bound_success() ? "yes" : "no", total);
-    std::fflush(stdout);
-    if (out) {
-      auto j = nlohmann::json::parse(
-          registration_report_json(pipeline, seq.scan_path(s), seq.scan_path(t), -1));
-      j.erase("config");
-      j["pair"] = {s, t};
-      out << j.dump() << "\n";
-    }
+    outcomes.push_back(std::move(o));
   }
   std::fprintf(stderr, "%40s\r", "");
-
-  const std::size_t n = totals.size();
-  if (n == 0) throw InputError(args.get("pairs") + ": no pair could be loaded");
-  std::printf("\npairs run: %zu%s\n", n,
-              failed_to_load ? (" (" + std::to_string(failed_to_load) + " skipped)").c_str() : "");
-  std::printf("success (selected pose, %.1f m / %.1f deg): %d/%zu = %.1f %%\n",
-              config.evaluation.max_translation_error, config.evaluation.max_rotation_error,
-              successes, n, 100.0 * successes / static_cast<double>(n));
-  std::printf("upper bound (any level succeeds):       %d/%zu = %.1f %%\n", upper, n,
-              100.0 * upper / static_cast<double>(n));
-  std::printf("\n%-18s %10s %12s\n", "stage", "mean [ms]", "median [ms]");
-  for (std::size_t i = 0; i < std::size(stages); ++i)
-    std::printf("%-18s %10.2f %12.2f\n", stage_name(stages[i]), mean(times[i]), median(times[i]));
-  std::printf("%-18s %10.2f %12.2f\n", "total", mean(totals), median(totals));
+  const BenchmarkSummary s = summarize(outcomes);
+  if (s.pairs_run == 0) throw InputError(set.origin + ": no pair could be loaded");
+  print_summary(s, config);
   if (args.has("out")) std::printf("\nwrote %s\n", args.get("out").c_str());
   return 0;
 }

@@ -67,6 +67,12 @@ void print_registration(const Pipeline& p) {
   } else {
     std::printf("\nno valid candidate on any level\n");
   }
+  const Acceptance& a = p.acceptance();
+  if (p.selected_level() >= 0)
+    std::printf("verdict: %s (aligned %.0f %% of points within %.2f m, %d inliers, D margin %.3f)%s%s\n",
+                a.accepted ? "ACCEPTED" : "REJECTED", 100.0 * a.overlap,
+                p.config().acceptance.inlier_distance, a.inliers, a.margin,
+                a.accepted ? "" : ": ", a.reason.c_str());
   if (gt) {
     if (const auto e = p.selected_error())
       std::printf(
@@ -112,8 +118,6 @@ int run_register(const Args& args) {
   LoadedPair pair = load_pair(src);
   for (const auto& w : pair.source.warnings) warn(w);
   for (const auto& w : pair.target.warnings) warn(w);
-  if (!pair.source.cloud.has_labels()) throw InputError(pair.source_name + ": no semantic labels");
-  if (!pair.target.cloud.has_labels()) throw InputError(pair.target_name + ": no semantic labels");
   std::printf(
       "loaded %zu + %zu points in %.1f ms\n", pair.source.cloud.size(), pair.target.cloud.size(),
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());

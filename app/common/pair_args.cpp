@@ -12,6 +12,7 @@ std::vector<Option> pair_options() {
       {"sequence", 1, "SEQ", "KITTI sequence (default 00)"},
       {"pair", 2, "S T", "KITTI source and target frame numbers"},
       {"synthetic", 1, "SEED", "the generated scene with that seed"},
+      {"ground-truth", 1, "FILE", "4x4 T_target_source (row-major) to judge the result against"},
   };
 }
 
@@ -38,10 +39,13 @@ std::optional<PairSource> pair_source_from_args(const Args& args) {
     src.source_frame = parse_int(args.all("pair")[0], "--pair (source frame)");
     src.target_frame = parse_int(args.all("pair")[1], "--pair (target frame)");
   } else {
+    if (args.has("ground-truth"))
+      throw UsageError("--ground-truth goes with --source/--target or --kitti-root");
     src.kind = PairSource::Kind::synthetic;
     src.synthetic_seed =
         static_cast<std::uint64_t>(parse_int(args.get("synthetic"), "--synthetic"));
   }
+  src.ground_truth = args.get("ground-truth");
   return src;
 }
 

@@ -45,8 +45,8 @@ struct EnumNames<CliqueSolver> {
 };
 template <>
 struct EnumNames<PoseModel> {
-  static constexpr std::pair<const char*, PoseModel> table[] = {{"se3", PoseModel::se3},
-                                                                {"se2", PoseModel::se2}};
+  static constexpr std::pair<const char*, PoseModel> table[] = {
+      {"se3", PoseModel::se3}, {"se2", PoseModel::se2}, {"four_dof", PoseModel::four_dof}};
 };
 template <>
 struct EnumNames<ScoreKind> {
@@ -126,6 +126,13 @@ void fields_of_verification(V& v, P& p) {
   v("score", p.score);
 }
 template <class V, class P>
+void fields_of_acceptance(V& v, P& p) {
+  v("inlier_distance", p.inlier_distance);
+  v("min_overlap", p.min_overlap);
+  v("min_inliers", p.min_inliers);
+  v("min_margin", p.min_margin);
+}
+template <class V, class P>
 void fields_of_evaluation(V& v, P& p) {
   v("max_translation_error", p.max_translation_error);
   v("max_rotation_error", p.max_rotation_error);
@@ -151,6 +158,7 @@ PAGOR_FIELDS(GraphParams, fields_of_graph)
 PAGOR_FIELDS(CliqueParams, fields_of_clique)
 PAGOR_FIELDS(GncParams, fields_of_gnc)
 PAGOR_FIELDS(VerificationParams, fields_of_verification)
+PAGOR_FIELDS(AcceptanceParams, fields_of_acceptance)
 PAGOR_FIELDS(EvaluationParams, fields_of_evaluation)
 #undef PAGOR_FIELDS
 
@@ -228,6 +236,7 @@ json encode_config(const Config& c) {
               {"clique", encode(c.clique)},
               {"gnc", encode(c.gnc)},
               {"verification", encode(c.verification)},
+              {"acceptance", encode(c.acceptance)},
               {"evaluation", encode(c.evaluation)}};
 }
 
@@ -473,6 +482,12 @@ void validate(const Config& c, const std::string& origin) {
   check(ctx, c.gnc.cost_tolerance > 0, "gnc.cost_tolerance", "must be > 0");
   check(ctx, c.verification.voxel_size >= 0, "verification.voxel_size", "must be >= 0 [m]");
   check(ctx, c.verification.mu > 0, "verification.mu", "must be > 0 [m]");
+  check(ctx, c.acceptance.inlier_distance > 0, "acceptance.inlier_distance", "must be > 0 [m]");
+  check(ctx, c.acceptance.min_overlap >= 0 && c.acceptance.min_overlap <= 1,
+        "acceptance.min_overlap", "must be in [0, 1]");
+  check(ctx, c.acceptance.min_inliers >= 0, "acceptance.min_inliers", "must be >= 0");
+  check(ctx, c.acceptance.min_margin >= 0 && c.acceptance.min_margin <= 1,
+        "acceptance.min_margin", "must be in [0, 1]");
   check(ctx, c.evaluation.max_translation_error > 0, "evaluation.max_translation_error",
         "must be > 0 [m]");
   check(ctx, c.evaluation.max_rotation_error > 0, "evaluation.max_rotation_error",
@@ -506,6 +521,8 @@ Config parse_config(const std::string& json_text, const std::string& origin) {
       decode(ctx, v, key, c.gnc);
     else if (key == "verification")
       decode(ctx, v, key, c.verification);
+    else if (key == "acceptance")
+      decode(ctx, v, key, c.acceptance);
     else if (key == "evaluation")
       decode(ctx, v, key, c.evaluation);
     else

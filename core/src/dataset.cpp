@@ -2,6 +2,7 @@
 
 #include "pagor/errors.hpp"
 #include "pagor/kitti.hpp"
+#include "pagor/pair_set.hpp"
 #include "pagor/synthetic.hpp"
 
 namespace pagor {
@@ -38,6 +39,8 @@ LoadedPair load_pair(const PairSource& src) {
       break;
     }
   }
+  // A ground-truth file replaces what the source knows (e.g. better poses for a KITTI pair).
+  if (!src.ground_truth.empty()) out.T_target_source_gt = read_transform_file(src.ground_truth);
   return out;
 }
 

@@ -30,6 +30,7 @@ double rotation_angle_deg(const Eigen::Matrix3d& R) {
 bool weighted_rigid_transform(const std::vector<Eigen::Vector3d>& src,
                               const std::vector<Eigen::Vector3d>& dst, const std::vector<double>& w,
                               PoseModel model, Transform& T) {
+  // Rotation dimension: SE(3) estimates a 3-D rotation; SE(2) and 4-DoF only a yaw.
   const int dim = model == PoseModel::se3 ? 3 : 2;
   double wsum = 0;
   Eigen::Vector3d ps = Eigen::Vector3d::Zero(), qs = Eigen::Vector3d::Zero();
@@ -72,7 +73,7 @@ bool weighted_rigid_transform(const std::vector<Eigen::Vector3d>& src,
   T = Transform::Identity();
   T.block<3, 3>(0, 0) = R;
   T.block<3, 1>(0, 3) = qs - R * ps;
-  if (dim == 2) T(2, 3) = 0.0;
+  if (model == PoseModel::se2) T(2, 3) = 0.0;  // 4-DoF keeps the height offset
   return true;
 }
 
@@ -86,7 +87,7 @@ PoseEstimate estimate_pose_gnc(const std::vector<Eigen::Vector3d>& src,
   };
   PoseEstimate est;
   const std::size_t n = src.size();
-  const std::size_t needed = p.model == PoseModel::se3 ? 3 : 2;
+  const std::size_t needed = p.model == PoseModel::se3 ? 3 : 2;  // 2 fix a yaw
   if (n < needed || dst.size() != n) {
     est.failure = "needs at least " + std::to_string(needed) + " correspondences, got " +
                   std::to_string(std::min(n, dst.size()));

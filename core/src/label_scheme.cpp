@@ -25,7 +25,7 @@ const std::vector<std::uint32_t>& LabelScheme::ids_of(const std::string& class_n
 }
 
 std::vector<std::string> builtin_label_scheme_names() {
-  return {"semantickitti", "semantickitti-train", "indoor"};
+  return {"semantickitti", "semantickitti-train", "semantickitti-learning", "indoor"};
 }
 
 LabelScheme builtin_label_scheme(const std::string& name) {
@@ -51,14 +51,16 @@ LabelScheme builtin_label_scheme(const std::string& name) {
              {"pole", {80}},
              {"traffic-sign", {81}}}};
   }
-  if (name == "semantickitti-train") {
+  if (name == "semantickitti-train" || name == "semantickitti-learning") {
     static const char* const kNames[] = {"car",           "bicycle", "motorcycle",  "truck",
                                          "other-vehicle", "person",  "bicyclist",   "motorcyclist",
                                          "road",          "parking", "sidewalk",    "other-ground",
                                          "building",      "fence",   "vegetation",  "trunk",
                                          "terrain",       "pole",    "traffic-sign"};
+    // The learning map is the training numbering shifted by one, with 0 for unlabeled.
+    const std::uint32_t first = name == "semantickitti-learning" ? 1 : 0;
     LabelScheme s{name, {}};
-    for (std::uint32_t i = 0; i < 19; ++i) s.classes.push_back({kNames[i], {i}});
+    for (std::uint32_t i = 0; i < 19; ++i) s.classes.push_back({kNames[i], {i + first}});
     return s;
   }
   if (name == "indoor") {

@@ -17,7 +17,8 @@ const std::vector<Stage>& dependents(Stage s) {
       {Stage::pose},             // clique
       {Stage::verification},     // pose
       {Stage::verification},     // verification_prep
-      {Stage::evaluation},       // verification
+      {Stage::acceptance},       // verification
+      {Stage::evaluation},       // acceptance
       {},                        // evaluation
   }};
   return table[static_cast<std::size_t>(s)];
@@ -28,7 +29,7 @@ const std::vector<Stage>& dependents(Stage s) {
 const char* stage_name(Stage stage) {
   static const char* const names[kStageCount] = {
       "landmarks", "correspondences",   "graph",        "clique",
-      "gnc",       "verification_prep", "verification", "evaluation"};
+      "gnc",       "verification_prep", "verification", "acceptance", "evaluation"};
   return names[static_cast<int>(stage)];
 }
 
@@ -75,7 +76,9 @@ void Pipeline::set_config(const Config& config) {
   if (config.verification.voxel_size != config_.verification.voxel_size)
     mark_stale(Stage::verification_prep);
   if (changed("verification")) mark_stale(Stage::verification);
-  if (changed("evaluation")) mark_stale(Stage::evaluation);
+  if (changed("acceptance")) mark_stale(Stage::acceptance);
+  // The criterion also decides which candidates count as distinct for the D margin.
+  if (changed("evaluation")) mark_stale(Stage::acceptance);
   config_ = config;
 }
 
@@ -145,6 +148,10 @@ void Pipeline::run_stage(Stage stage) {
       break;
     case Stage::verification:
       verification_ = verify_candidates(*verifier_, poses_, config_.verification, threads_);
+      break;
+    case Stage::acceptance:
+      acceptance_ = judge_selection(*verifier_, poses_, verification_, config_.verification,
+                                    config_.evaluation, config_.acceptance);
       break;
     case Stage::evaluation:
       level_errors_.clear();

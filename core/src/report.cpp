@@ -78,6 +78,7 @@ std::string registration_report_json(const Pipeline& p, const std::string& sourc
   timings["clique"] = p.time_ms(Stage::clique);
   timings["gnc"] = p.time_ms(Stage::pose);
   timings["verification"] = p.time_ms(Stage::verification_prep) + p.time_ms(Stage::verification);
+  timings["acceptance"] = p.time_ms(Stage::acceptance);
   timings["evaluation"] = p.time_ms(Stage::evaluation);
   timings["total"] = total;
 
@@ -87,6 +88,12 @@ std::string registration_report_json(const Pipeline& p, const std::string& sourc
               {"T_target_source", selected ? matrix_json(*selected) : json()},
               {"selected_level", p.selected_level() >= 0 ? json(p.selected_level()) : json()},
               {"levels", levels},
+              {"acceptance",
+               {{"accepted", p.acceptance().accepted},
+                {"overlap", p.acceptance().overlap},
+                {"inliers", p.acceptance().inliers},
+                {"margin", p.acceptance().margin},
+                {"reason", p.acceptance().reason}}},
               {"ground_truth", gt},
               {"correspondences",
                {{"count", corr.items.size()},

@@ -94,7 +94,8 @@ struct CliqueParams {
 /// The pose model.
 enum class PoseModel {
   se3,  ///< rotation and translation in 3D (outdoor)
-  se2,  ///< yaw and planar translation (planar robots, scan vs floor plan)
+  se2,       ///< yaw and planar translation (planar robots, scan vs floor plan)
+  four_dof,  ///< yaw and 3-D translation, roll and pitch held level (ground vehicles, as Quatro)
 };
 
 /// GNC with a truncated least-squares cost.
@@ -120,6 +121,14 @@ struct VerificationParams {
   ScoreKind score = ScoreKind::truncated;  ///< scoring
 };
 
+/// Whether the selected pose is trusted (see acceptance.hpp).
+struct AcceptanceParams {
+  double inlier_distance = 0.5;  ///< a verification point counts as aligned within this [m]
+  double min_overlap = 0.2;      ///< least fraction of verification points aligned, in [0, 1]
+  int min_inliers = 4;           ///< least GNC inliers of the selected candidate
+  double min_margin = 0.0;       ///< least D margin to a distinct candidate, fraction of mu*points
+};
+
 /// Success criterion against ground truth.
 struct EvaluationParams {
   double max_translation_error = 2.0;  ///< [m]
@@ -135,6 +144,7 @@ struct Config {
   CliqueParams clique;
   GncParams gnc;
   VerificationParams verification;
+  AcceptanceParams acceptance;
   EvaluationParams evaluation;
 };
 
@@ -153,7 +163,7 @@ Config load_config(const std::string& path);
 std::string config_to_json(const Config& config, int indent = 2);
 
 /// One section (`label_scheme`, `landmarks`, `correspondences`, `graph`, `clique`, `gnc`,
-/// `verification`, `evaluation`) as compact JSON; two configs agree on a section iff these are
+/// `verification`, `acceptance`, `evaluation`) as compact JSON; two configs agree on a section iff these are
 /// equal. The pipeline uses it to find what a change invalidates.
 std::string section_json(const Config& config, const std::string& section);
 

@@ -19,6 +19,7 @@ struct PairSource {
   // files
   std::string source, source_labels;  ///< source cloud and optional `.label` file
   std::string target, target_labels;  ///< target cloud and optional `.label` file
+  std::string ground_truth;  ///< optional 4x4 `T_target_source` file; replaces any other truth
   // kitti
   std::string kitti_root;       ///< directory holding `sequences/`
   std::string sequence = "00";  ///< sequence name

@@ -23,14 +23,16 @@ struct PoseEstimate {
 };
 
 /// Weighted least-squares rigid transform (Horn/Umeyama without scale) mapping `src` onto `dst`.
-/// In SE(2) only x, y and yaw are estimated (z translation 0). Returns false when the weighted
-/// points are degenerate (fewer than 3 non-collinear, or 2 distinct in SE(2)).
+/// In SE(2) only x, y and yaw are estimated (z translation 0); in 4-DoF yaw and x, y, z (roll and
+/// pitch held level). Returns false when the weighted points are degenerate (fewer than 3
+/// non-collinear in SE(3); fewer than 2 distinct in the x-y plane for SE(2) and 4-DoF).
 bool weighted_rigid_transform(const std::vector<Eigen::Vector3d>& src,
                               const std::vector<Eigen::Vector3d>& dst,
                               const std::vector<double>& weights, PoseModel model, Transform& T);
 
 /// GNC-TLS. `src` and `dst` have the same length. In SE(2), residuals are measured in the x-y
-/// plane. Fewer than 3 correspondences (2 in SE(2)), or a collinear set, gives an invalid estimate.
+/// plane (in 4-DoF in 3-D). Fewer than 3 correspondences (2 in SE(2) and 4-DoF), or a degenerate
+/// set, gives an invalid estimate.
 PoseEstimate estimate_pose_gnc(const std::vector<Eigen::Vector3d>& src,
                                const std::vector<Eigen::Vector3d>& dst,
                                const GncParams& params = {});

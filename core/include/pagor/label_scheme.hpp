@@ -33,6 +33,8 @@ struct LabelScheme {
 ///   trunk 71, pole 80, traffic-sign 81, ...). Moving-object ids (252-259) belong to no class.
 /// - `semantickitti-train`: the 19-class training numbering starting at 0 (car 0, ..., pole 17,
 ///   traffic-sign 18), as output by segmentation networks and in the shared KITTI data.
+/// - `semantickitti-learning`: SemanticKITTI's learning map, 0 unlabeled, 1 car, ..., 9 road,
+///   13 building, 15 vegetation, 16 trunk, 18 pole, 19 traffic-sign (the training numbering + 1).
 /// - `indoor`: a small scheme for scans against floor plans (wall 1, column 2, door 3, furniture
 /// 4). Throws ConfigError listing the built-in names for an unknown one.
 LabelScheme builtin_label_scheme(const std::string& name);

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "pagor/acceptance.hpp"
 #include "pagor/config.hpp"
 #include "pagor/correspondences.hpp"
 #include "pagor/densest_clique.hpp"
@@ -34,9 +35,10 @@ enum class Stage : int {
   pose,               ///< GNC-TLS pose per level
   verification_prep,  ///< downsampled metric clouds and target kd-tree
   verification,       ///< score D per candidate, selection
+  acceptance,         ///< whether the selected pose is trusted
   evaluation,         ///< errors against ground truth
 };
-constexpr int kStageCount = 8;
+constexpr int kStageCount = 9;
 
 /// Lower-case name of a stage, as in timings.
 const char* stage_name(Stage stage);
@@ -80,6 +82,8 @@ class Pipeline {
   const std::vector<PoseEstimate>& poses() const { return poses_; }
   const Verifier* verifier() const { return verifier_ ? &*verifier_ : nullptr; }
   const VerificationResult& verification() const { return verification_; }
+  /// The acceptance verdict on the selected pose.
+  const Acceptance& acceptance() const { return acceptance_; }
   const std::optional<Transform>& ground_truth() const { return ground_truth_; }
   /// Errors per level (empty without ground truth; nullopt for an invalid candidate).
   const std::vector<std::optional<PoseError>>& level_errors() const { return level_errors_; }
@@ -117,6 +121,7 @@ class Pipeline {
   std::vector<PoseEstimate> poses_;
   std::optional<Verifier> verifier_;
   VerificationResult verification_;
+  Acceptance acceptance_;
   std::vector<std::optional<PoseError>> level_errors_;
 
   std::array<bool, kStageCount> stale_{};

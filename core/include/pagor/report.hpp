@@ -6,6 +6,7 @@
 ///   levels[]          epsilon, vertices, edges, clique (correspondence indices), clique_size,
 ///                     pose_valid, T_target_source, inliers, score_D (null if invalid),
 ///                     and with ground truth translation_error_m, rotation_error_deg, success
+///   acceptance        accepted, overlap, inliers, margin, reason (see acceptance.hpp)
 ///   ground_truth      T_target_source, translation_error_m, rotation_error_deg, success,
 ///                     upper_bound (null without ground truth)
 ///   correspondences   count, candidates, capped, per_class {name: count}
