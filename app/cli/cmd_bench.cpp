@@ -1,6 +1,8 @@
 // pagor bench: every pair of a pairs set (KITTI pairs file or generic manifest), a row per pair,
 // the success rate, the acceptance verdict's precision and recall, and stage times.
 
+#include <unistd.h>
+
 #include <cstdio>
 #include <fstream>
 
@@ -84,9 +86,13 @@ int run_bench(const Args& args) {
   std::printf("%-14s %6s %10s %11s %8s %6s %8s %10s\n", "pair", "level", "t err [m]",
               "r err [deg]", "success", "bound", "verdict", "time [ms]");
   std::vector<PairOutcome> outcomes;
+  const bool progress = isatty(fileno(stderr));  // a progress line only for a person watching
   for (std::size_t k = 0; k < set.pairs.size(); ++k) {
-    std::fprintf(stderr, "[%zu/%zu] %s ...\r", k + 1, set.pairs.size(), set.pairs[k].name.c_str());
-    std::fflush(stderr);
+    if (progress) {
+      std::fprintf(stderr, "[%zu/%zu] %s ...\r", k + 1, set.pairs.size(),
+                   set.pairs[k].name.c_str());
+      std::fflush(stderr);
+    }
     PairOutcome o = run_pair(pipeline, set.pairs[k]);
     if (!o.loaded) {
       warn("pair " + o.name + " skipped: " + o.load_error);
@@ -96,7 +102,7 @@ int run_bench(const Args& args) {
     }
     outcomes.push_back(std::move(o));
   }
-  std::fprintf(stderr, "%40s\r", "");
+  if (progress) std::fprintf(stderr, "%60s\r", "");
   const BenchmarkSummary s = summarize(outcomes);
   if (s.pairs_run == 0) throw InputError(set.origin + ": no pair could be loaded");
   print_summary(s, config);

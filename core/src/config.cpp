@@ -27,6 +27,13 @@ struct EnumNames<LandmarkMethod> {
       {"cluster", LandmarkMethod::cluster}, {"fpfh", LandmarkMethod::fpfh}};
 };
 template <>
+struct EnumNames<FallbackMode> {
+  static constexpr std::pair<const char*, FallbackMode> table[] = {
+      {"automatic", FallbackMode::automatic},
+      {"always", FallbackMode::always},
+      {"never", FallbackMode::never}};
+};
+template <>
 struct EnumNames<TrimKind> {
   static constexpr std::pair<const char*, TrimKind> table[] = {{"difference", TrimKind::difference},
                                                                {"ratio", TrimKind::ratio}};
@@ -74,10 +81,23 @@ void fields_of_class(V& v, P& p) {
   v("max_points", p.max_points);
   v("normal_radius", p.normal_radius);
   v("feature_radius", p.feature_radius);
+  v("max_keypoints", p.max_keypoints);
+}
+template <class V, class P>
+void fields_of_fallback(V& v, P& p) {
+  v("mode", p.mode);
+  v("class_poor_below", p.class_poor_below);
+  v("ground_classes", p.ground_classes);
+  v("ground_height", p.ground_height);
+  v("keypoints", p.keypoints);
 }
 template <class V, class P>
 void fields_of_landmarks(V& v, P& p) {
   v("classes", p.classes);
+  v("adapt_to_spacing", p.adapt_to_spacing);
+  v("tolerance_spacings", p.tolerance_spacings);
+  v("min_cluster_voxels", p.min_cluster_voxels);
+  v("fallback", p.fallback);
 }
 template <class V, class P>
 void fields_of_correspondences(V& v, P& p) {
@@ -152,6 +172,7 @@ struct IsParams : std::false_type {};
     fn(v, p);                                \
   }
 PAGOR_FIELDS(ClassParams, fields_of_class)
+PAGOR_FIELDS(FallbackParams, fields_of_fallback)
 PAGOR_FIELDS(LandmarkParams, fields_of_landmarks)
 PAGOR_FIELDS(CorrespondenceParams, fields_of_correspondences)
 PAGOR_FIELDS(GraphParams, fields_of_graph)
@@ -391,6 +412,9 @@ void check(const Context& ctx, bool ok, const std::string& path, const std::stri
 const char* to_string(LandmarkMethod v) {
   return enum_name(v);
 }
+const char* to_string(FallbackMode v) {
+  return enum_name(v);
+}
 const char* to_string(TrimKind v) {
   return enum_name(v);
 }
@@ -422,11 +446,14 @@ Config default_config() {
   trunk.max_points = 1000;
   ClassParams pole = trunk;
   pole.name = "pole";
+  ClassParams sign = trunk;
+  sign.name = "traffic-sign";
   ClassParams building{"building", LandmarkMethod::fpfh};
   building.voxel_size = 0.6;
   building.normal_radius = 1.2;
   building.feature_radius = 3.0;
-  c.landmarks.classes = {car, trunk, pole, building};
+  c.landmarks.classes = {car, trunk, pole, sign, building};
+  c.gnc.model = PoseModel::four_dof;
   return c;
 }
 
@@ -448,7 +475,19 @@ void validate(const Config& c, const std::string& origin) {
     check(ctx, p.normal_radius > 0, path + ".normal_radius", "must be > 0 [m]");
     check(ctx, p.feature_radius > p.normal_radius, path + ".feature_radius",
           "must be larger than normal_radius [m]");
+    check(ctx, p.max_keypoints >= 1, path + ".max_keypoints", "must be >= 1");
   }
+  check(ctx, c.landmarks.tolerance_spacings > 0, "landmarks.tolerance_spacings", "must be > 0");
+  check(ctx, c.landmarks.min_cluster_voxels >= 1, "landmarks.min_cluster_voxels", "must be >= 1");
+  const FallbackParams& fb = c.landmarks.fallback;
+  check(ctx, fb.class_poor_below >= 0, "landmarks.fallback.class_poor_below", "must be >= 0");
+  check(ctx, fb.ground_height >= 0, "landmarks.fallback.ground_height", "must be >= 0 [m]");
+  check(ctx, fb.keypoints.voxel_size > 0, "landmarks.fallback.keypoints.voxel_size",
+        "must be > 0 [m]");
+  check(ctx, fb.keypoints.normal_radius > 0 && fb.keypoints.feature_radius > fb.keypoints.normal_radius,
+        "landmarks.fallback.keypoints.feature_radius", "radii must be > 0 and feature > normal [m]");
+  check(ctx, fb.keypoints.max_keypoints >= 1, "landmarks.fallback.keypoints.max_keypoints",
+        "must be >= 1");
   check(ctx, c.correspondences.max_correspondences >= 0, "correspondences.max_correspondences",
         "must be >= 0 (0 = no cap)");
   check(ctx, c.correspondences.shape_scale > 0, "correspondences.shape_scale", "must be > 0 [m]");

@@ -51,7 +51,8 @@ int KdTree3f::build(int begin, int end, int leaf_size) {
   return id;
 }
 
-std::pair<int, float> KdTree3f::nearest(const Eigen::Vector3f& q, float max_distance_sq) const {
+std::pair<int, float> KdTree3f::nearest(const Eigen::Vector3f& q, float max_distance_sq,
+                                        int exclude) const {
   int best = -1;
   float best_d2 = max_distance_sq;
   if (nodes_.empty()) return {best, best_d2};
@@ -66,7 +67,7 @@ std::pair<int, float> KdTree3f::nearest(const Eigen::Vector3f& q, float max_dist
     if (n.axis < 0) {
       for (int i = n.a; i < n.b; ++i) {
         const float d2 = (points_[static_cast<std::size_t>(i)] - q).squaredNorm();
-        if (d2 < best_d2) {
+        if (d2 < best_d2 && index_[static_cast<std::size_t>(i)] != exclude) {
           best_d2 = d2;
           best = index_[static_cast<std::size_t>(i)];
         }

@@ -10,9 +10,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <map>
 #include <unordered_set>
 
 #include "pagor/errors.hpp"
+#include "pagor/kdtree.hpp"
 #include "pagor/voxel_grid.hpp"
 
 namespace pagor {
@@ -126,43 +128,201 @@ void add_keypoints(int class_index, const ClassParams& p, const VoxelDownsample&
   }
 }
 
+
+// Landmarks of one class from the points `subset`, appended to `out` with a summary.
+void extract_class(const PointCloud& cloud, const std::vector<int>& subset, int class_index,
+                   const ClassParams& configured, const LandmarkParams& all, LandmarkSet& out) {
+  const auto t0 = Clock::now();
+  ClassParams p = params_for_spacing(configured, out.spacing, all);
+  ClassSummary summary;
+  summary.name = p.name;
+  summary.method = p.method;
+  summary.points = subset.size();
+  const std::size_t before = out.landmarks.size();
+  if (subset.empty()) {
+    out.warnings.push_back("class '" + p.name + "': no points with this label");
+  } else {
+    VoxelDownsample ds = voxel_downsample(cloud.points, p.voxel_size, &subset);
+    // Keypoint budget: a coarser grid, so FPFH time stays bounded on dense or large scenes.
+    while (p.method == LandmarkMethod::fpfh && ds.points.size() > std::size_t(p.max_keypoints)) {
+      p.voxel_size *= 1.25;
+      ds = voxel_downsample(cloud.points, p.voxel_size, &subset);
+    }
+    summary.voxels = ds.points.size();
+    const auto members = members_of_voxels(ds, subset);
+    if (p.method == LandmarkMethod::cluster)
+      add_clusters(class_index, p, ds, members, out);
+    else
+      add_keypoints(class_index, p, ds, members, out);
+    if (out.landmarks.size() == before)
+      out.warnings.push_back("class '" + p.name + "': " + std::to_string(subset.size()) +
+                             " points but no landmark (check its clustering parameters)");
+  }
+  summary.landmarks = out.landmarks.size() - before;
+  summary.voxel_size = p.voxel_size;
+  summary.cluster_tolerance = p.cluster_tolerance;
+  summary.min_points = p.min_points;
+  summary.time_ms = ms_since(t0);
+  out.classes.push_back(summary);
+}
+
+// Lowest dense height layer: the 0.2 m height bin holding the most points among the lowest
+// half of the cloud (the ground under a ground vehicle's sensor). Returns its upper edge [m].
+float ground_level(const std::vector<Eigen::Vector3f>& points) {
+  constexpr float kBin = 0.2f;
+  std::vector<float> z;
+  z.reserve(points.size());
+  for (const auto& p : points) z.push_back(p.z());
+  std::nth_element(z.begin(), z.begin() + static_cast<long>(z.size() / 2), z.end());
+  const float median = z[z.size() / 2];
+  std::map<long, int> bins;
+  for (const auto& p : points)
+    if (p.z() <= median) ++bins[static_cast<long>(std::floor(p.z() / kBin))];
+  long best = 0;
+  int count = -1;
+  for (const auto& [bin, n] : bins)
+    if (n > count) best = bin, count = n;
+  return static_cast<float>(best + 1) * kBin;
+}
+
 }  // namespace
+
+double estimate_spacing(const std::vector<Eigen::Vector3f>& points) {
+  constexpr std::size_t kQueries = 1000, kTreePoints = 16384;
+  if (points.size() < 2) return 0.0;
+  const std::size_t thin = std::max<std::size_t>(1, points.size() / kTreePoints);
+  std::vector<Eigen::Vector3f> sample;
+  sample.reserve(points.size() / thin + 1);
+  for (std::size_t i = 0; i < points.size(); i += thin) sample.push_back(points[i]);
+  if (sample.size() < 2) return 0.0;
+  const KdTree3f tree(sample);
+  const std::size_t stride = std::max<std::size_t>(1, sample.size() / kQueries);
+  std::vector<float> d;
+  for (std::size_t i = 0; i < sample.size(); i += stride) {
+    const auto [index, d2] = tree.nearest(sample[i], HUGE_VALF, static_cast<int>(i));
+    if (index >= 0) d.push_back(std::sqrt(d2));
+  }
+  if (d.empty()) return 0.0;
+  std::nth_element(d.begin(), d.begin() + static_cast<long>(d.size() / 2), d.end());
+  return d[d.size() / 2] / std::sqrt(static_cast<double>(thin));
+}
+
+std::size_t cluster_landmark_count(const LandmarkSet& set) {
+  return static_cast<std::size_t>(
+      std::count_if(set.landmarks.begin(), set.landmarks.end(),
+                    [](const Landmark& l) { return l.kind == LandmarkKind::cluster; }));
+}
+
+ClassParams params_for_spacing(const ClassParams& p, double spacing, const LandmarkParams& all) {
+  if (!all.adapt_to_spacing || spacing <= p.voxel_size) return p;
+  ClassParams q = p;
+  q.voxel_size = spacing;
+  q.cluster_tolerance = std::max(p.cluster_tolerance, all.tolerance_spacings * spacing);
+  // Sizes count voxels of the configured size: keep the object's surface the same, so the count
+  // shrinks with the square of the voxel ratio.
+  const double ratio = p.voxel_size > 0 ? p.voxel_size / spacing : 0.0;
+  const auto rescale = [&](int n) {
+    return std::max(all.min_cluster_voxels, static_cast<int>(std::ceil(n * ratio * ratio)));
+  };
+  q.min_points = std::min(p.min_points, rescale(p.min_points));
+  q.max_points = std::max(q.min_points, rescale(p.max_points));
+  q.normal_radius = std::max(p.normal_radius, 2.0 * spacing);
+  q.feature_radius = std::max(p.feature_radius, 2.0 * q.normal_radius);
+  return q;
+}
+
+std::string label_scheme_mismatch(const PointCloud& cloud, const LabelScheme& scheme,
+                                  const LandmarkParams& params) {
+  if (!cloud.has_labels()) return {};
+  std::map<std::uint32_t, std::size_t> histogram;
+  for (std::uint32_t l : cloud.labels) ++histogram[semantic_id(l)];
+  const auto fit = [&](const LabelScheme& s, bool landmark_classes_only) {
+    std::unordered_set<std::uint32_t> ids;
+    for (const auto& c : s.classes) {
+      if (landmark_classes_only &&
+          std::none_of(params.classes.begin(), params.classes.end(),
+                       [&](const ClassParams& p) { return p.name == c.name; }))
+        continue;
+      ids.insert(c.ids.begin(), c.ids.end());
+    }
+    std::size_t n = 0;
+    for (const auto& [id, count] : histogram) n += ids.count(id) ? count : 0;
+    return static_cast<double>(n) / static_cast<double>(cloud.size());
+  };
+  const double known = fit(scheme, false), landmark = fit(scheme, true);
+  if (landmark > 0 && known >= 0.5) return {};
+  std::string best;
+  double best_fit = known;
+  for (const auto& name : builtin_label_scheme_names()) {
+    const LabelScheme b = builtin_label_scheme(name);
+    const double f = fit(b, false);
+    if (name != scheme.name && f > best_fit + 0.1) best = name, best_fit = f;
+  }
+  char buf[200];
+  std::snprintf(buf, sizeof(buf),
+                "labels do not fit scheme '%s': %.0f %% of points carry its ids, %.1f %% those of "
+                "landmark classes",
+                scheme.name.c_str(), 100 * known, 100 * landmark);
+  std::string msg = buf;
+  if (!best.empty()) msg += "; they look like '" + best + "' (set label_scheme)";
+  return msg;
+}
 
 LandmarkSet extract_landmarks(const PointCloud& cloud, const LabelScheme& scheme,
                               const LandmarkParams& params) {
   const auto t_all = Clock::now();
-  if (!cloud.has_labels())
-    throw InputError("the cloud has no semantic labels; landmarks need a label per point");
   LandmarkSet out;
+  out.spacing = params.adapt_to_spacing ? estimate_spacing(cloud.points) : 0.0;
+  if (!cloud.has_labels()) out.warnings.push_back("no semantic labels: no semantic landmarks");
+  else if (const std::string m = label_scheme_mismatch(cloud, scheme, params); !m.empty())
+    out.warnings.push_back(m);
   for (std::size_t ci = 0; ci < params.classes.size(); ++ci) {
-    const auto t0 = Clock::now();
     const ClassParams& p = params.classes[ci];
-    ClassSummary summary;
-    summary.name = p.name;
-    summary.method = p.method;
-    const std::vector<int> subset = points_of_class(cloud, scheme.ids_of(p.name));
-    summary.points = subset.size();
-    const std::size_t before = out.landmarks.size();
-    if (subset.empty()) {
-      out.warnings.push_back("class '" + p.name + "': no points with this label");
-    } else {
-      const VoxelDownsample ds = voxel_downsample(cloud.points, p.voxel_size, &subset);
-      summary.voxels = ds.points.size();
-      const auto members = members_of_voxels(ds, subset);
-      if (p.method == LandmarkMethod::cluster)
-        add_clusters(static_cast<int>(ci), p, ds, members, out);
-      else
-        add_keypoints(static_cast<int>(ci), p, ds, members, out);
-      if (out.landmarks.size() == before)
-        out.warnings.push_back("class '" + p.name + "': " + std::to_string(subset.size()) +
-                               " points but no landmark (check its clustering parameters)");
-    }
-    summary.landmarks = out.landmarks.size() - before;
-    summary.time_ms = ms_since(t0);
-    out.classes.push_back(summary);
+    const std::vector<int> subset =
+        cloud.has_labels() ? points_of_class(cloud, scheme.ids_of(p.name)) : std::vector<int>{};
+    extract_class(cloud, subset, static_cast<int>(ci), p, params, out);
   }
+  if (!cloud.has_labels())  // one warning for the cloud, not one per class
+    out.warnings.erase(out.warnings.begin() + 1, out.warnings.end());
   out.time_ms = ms_since(t_all);
   return out;
+}
+
+bool needs_fallback(const PointCloud& source, const PointCloud& target, const LandmarkSet& s,
+                    const LandmarkSet& t, const FallbackParams& params) {
+  switch (params.mode) {
+    case FallbackMode::always:
+      return true;
+    case FallbackMode::never:
+      return false;
+    case FallbackMode::automatic:
+      break;
+  }
+  const auto few = [&](const LandmarkSet& set) {
+    return cluster_landmark_count(set) < static_cast<std::size_t>(params.class_poor_below);
+  };
+  return !source.has_labels() || !target.has_labels() || few(s) || few(t);
+}
+
+void add_fallback_landmarks(const PointCloud& cloud, const LabelScheme& scheme,
+                            const LandmarkParams& params, LandmarkSet& set) {
+  const auto t0 = Clock::now();
+  const FallbackParams& fb = params.fallback;
+  std::vector<int> subset;
+  if (cloud.has_labels()) {
+    std::unordered_set<std::uint32_t> ground;
+    for (const auto& name : fb.ground_classes)
+      if (scheme.find(name) >= 0)
+        for (std::uint32_t id : scheme.ids_of(name)) ground.insert(id);
+    for (std::size_t i = 0; i < cloud.size(); ++i)
+      if (!ground.count(semantic_id(cloud.labels[i]))) subset.push_back(static_cast<int>(i));
+  } else if (!cloud.empty()) {
+    const float top = ground_level(cloud.points) + static_cast<float>(fb.ground_height);
+    for (std::size_t i = 0; i < cloud.size(); ++i)
+      if (cloud.points[i].z() > top) subset.push_back(static_cast<int>(i));
+  }
+  extract_class(cloud, subset, static_cast<int>(set.classes.size()), fb.keypoints, params, set);
+  set.time_ms += ms_since(t0);
 }
 
 }  // namespace pagor

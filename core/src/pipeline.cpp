@@ -1,6 +1,8 @@
 #include "pagor/pipeline.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <exception>
 #include <thread>
 
 #include "pagor/errors.hpp"
@@ -99,25 +101,48 @@ void Pipeline::run(const ProgressFn& progress, const std::atomic<bool>* cancel) 
   if (progress) progress(Stage::evaluation, 1.0);
 }
 
+template <class F>
+void Pipeline::both_clouds(const F& f) {
+  if (threads_ <= 1) {
+    f(source_, source_landmarks_);
+    f(target_, target_landmarks_);
+    return;
+  }
+  std::exception_ptr failure;  // the two clouds are independent
+  std::thread other([&] {
+    try {
+      f(target_, target_landmarks_);
+    } catch (...) {
+      failure = std::current_exception();
+    }
+  });
+  try {
+    f(source_, source_landmarks_);
+  } catch (...) {
+    other.join();
+    throw;
+  }
+  other.join();
+  if (failure) std::rethrow_exception(failure);
+}
+
 void Pipeline::run_stage(Stage stage) {
   switch (stage) {
-    case Stage::landmarks:
-      if (threads_ > 1) {  // the two clouds are independent
-        std::thread other([this] {
-          target_landmarks_ = extract_landmarks(target_, config_.label_scheme, config_.landmarks);
-        });
-        try {
-          source_landmarks_ = extract_landmarks(source_, config_.label_scheme, config_.landmarks);
-        } catch (...) {
-          other.join();
-          throw;
-        }
-        other.join();
-      } else {
-        source_landmarks_ = extract_landmarks(source_, config_.label_scheme, config_.landmarks);
-        target_landmarks_ = extract_landmarks(target_, config_.label_scheme, config_.landmarks);
-      }
+    case Stage::landmarks: {
+      const auto extract = [this](const PointCloud& cloud, LandmarkSet& out) {
+        out = extract_landmarks(cloud, config_.label_scheme, config_.landmarks);
+      };
+      const auto fallback = [this](const PointCloud& cloud, LandmarkSet& out) {
+        add_fallback_landmarks(cloud, config_.label_scheme, config_.landmarks, out);
+      };
+      both_clouds(extract);
+      // Class-agnostic landmarks when the pair is unlabelled or class-poor; both clouds get
+      // them, so the class lists stay aligned for matching.
+      if (needs_fallback(source_, target_, source_landmarks_, target_landmarks_,
+                         config_.landmarks.fallback))
+        both_clouds(fallback);
       break;
+    }
     case Stage::correspondences:
       correspondences_ =
           match_landmarks(source_landmarks_, target_landmarks_, config_.correspondences);

@@ -24,11 +24,42 @@ struct ClassParams {
   int max_points = 5000;           ///< cluster: largest cluster kept [voxels]
   double normal_radius = 1.0;      ///< fpfh: radius of the normal estimate [m]
   double feature_radius = 2.5;     ///< fpfh: radius of the FPFH descriptor [m]
+  /// fpfh: budget of keypoints; the voxel grows (x1.25 per step) until at most this many remain
+  int max_keypoints = 1500;
+};
+
+/// Class-agnostic landmarks for class-poor scenes and for clouds without labels: FPFH keypoints on
+/// all non-ground structure, as one extra class `structure`.
+enum class FallbackMode {
+  automatic,  ///< when either cloud has no labels or is class-poor (`class_poor_below`)
+  always,     ///< always add the class-agnostic landmarks
+  never,      ///< never (an unlabelled cloud is then an error)
+};
+struct FallbackParams {
+  FallbackMode mode = FallbackMode::automatic;  ///< when to add class-agnostic landmarks
+  /// automatic: a cloud with fewer cluster landmarks (cars, trunks, poles, ...) than this is
+  /// class-poor. Measured on semreg-dev, where every scene has 0-11.
+  int class_poor_below = 15;
+  /// Classes that count as ground and are left out (ignored when the scheme lacks them). Without
+  /// labels, points within `ground_height` of the lowest dense height layer are left out instead.
+  std::vector<std::string> ground_classes{"road", "parking", "sidewalk", "other-ground",
+                                          "terrain"};
+  double ground_height = 0.4;  ///< unlabelled: thickness of the removed ground layer [m]
+  ClassParams keypoints{"structure", LandmarkMethod::fpfh, 0.6, 0.5, 10, 5000, 1.2, 3.0, 1500};
 };
 
 /// Landmark extraction, one entry per class.
 struct LandmarkParams {
-  std::vector<ClassParams> classes;  ///< defaults: car, trunk, pole (clusters), building (fpfh)
+  /// Defaults: car, trunk, pole, traffic-sign (clusters); building (fpfh).
+  std::vector<ClassParams> classes;
+  /// Estimate each cloud's point spacing s and keep every class's parameters physical on it:
+  /// voxels never finer than s, cluster tolerances at least `tolerance_spacings` * s, and
+  /// minimum/maximum cluster sizes (counted in voxels of the configured size) rescaled to the
+  /// coarser voxel, so a downsampled cloud gives the landmarks of the full-resolution one.
+  bool adapt_to_spacing = true;
+  double tolerance_spacings = 2.5;  ///< least cluster tolerance, in point spacings
+  int min_cluster_voxels = 3;       ///< rescaled minimum sizes never drop below this [voxels]
+  FallbackParams fallback;          ///< class-agnostic landmarks
 };
 
 /// Correspondence generation.
@@ -172,6 +203,7 @@ void validate(const Config& config, const std::string& origin = "config");
 
 /// Names of the enum values, as written in JSON.
 const char* to_string(LandmarkMethod v);
+const char* to_string(FallbackMode v);
 const char* to_string(TrimKind v);
 const char* to_string(AffinityKind v);
 const char* to_string(CliqueSolver v);

@@ -18,10 +18,11 @@ class KdTree3f {
   KdTree3f() = default;
 
   /// Nearest point to `q` strictly closer than sqrt(`max_distance_sq`): its index in the input and
-  /// squared distance; index -1 (and `max_distance_sq`) when there is none.
-  std::pair<int, float> nearest(
-      const Eigen::Vector3f& q,
-      float max_distance_sq = std::numeric_limits<float>::infinity()) const;
+  /// squared distance; index -1 (and `max_distance_sq`) when there is none. The input point with
+  /// index `exclude` (if any) is skipped, so a point of the tree can ask for its neighbour.
+  std::pair<int, float> nearest(const Eigen::Vector3f& q,
+                                float max_distance_sq = std::numeric_limits<float>::infinity(),
+                                int exclude = -1) const;
 
   std::size_t size() const { return points_.size(); }
 

@@ -18,6 +18,9 @@ struct ClassSummary {
   std::size_t points = 0;                           ///< input points of this class
   std::size_t voxels = 0;                           ///< after voxel downsampling
   std::size_t landmarks = 0;                        ///< landmarks made
+  double voxel_size = 0.0;         ///< voxel used, after spacing adaptation and budget [m]
+  double cluster_tolerance = 0.0;  ///< cluster: tolerance used [m]
+  int min_points = 0;              ///< cluster: minimum size used [voxels of `voxel_size`]
   double time_ms = 0.0;                             ///< wall time [ms]
 };
 
@@ -27,15 +30,45 @@ struct LandmarkSet {
   /// FPFH descriptor (33 values) of each landmark; empty for cluster landmarks.
   std::vector<std::vector<float>> descriptors;
   std::vector<ClassSummary> classes;  ///< one per configured class, in configured order
+  double spacing = 0.0;               ///< estimated point spacing of the cloud [m]
   std::vector<std::string> warnings;  ///< e.g. a class with no points
   double time_ms = 0.0;               ///< total wall time [ms]
 };
 
+/// Typical distance between neighbouring points [m]: the median nearest-neighbour distance of an
+/// even sample of queries (0 for fewer than two points). Large clouds are thinned to an even
+/// subsample of about 16k points first and the distance scaled back by the square root of the
+/// thinning factor (surfaces). Clouds voxelised at v give about v.
+double estimate_spacing(const std::vector<Eigen::Vector3f>& points);
+
+/// A class's parameters as used on a cloud of point spacing `spacing` [m] (see
+/// LandmarkParams::adapt_to_spacing); unchanged when adaptation is off or the data is finer.
+ClassParams params_for_spacing(const ClassParams& p, double spacing, const LandmarkParams& all);
+
+/// When the cloud's labels do not fit the scheme (no id of any configured class occurs, or most
+/// labelled points carry ids the scheme does not know), a message naming the built-in scheme whose
+/// ids fit best; empty when they fit.
+std::string label_scheme_mismatch(const PointCloud& cloud, const LabelScheme& scheme,
+                                  const LandmarkParams& params);
+
 /// Extracts the landmarks of every configured class. Centroids and covariances are computed over
 /// the voxel means of a cluster, so that the dense near side of an object does not dominate;
 /// `point_indices` lists every input point covered. A class with no points gives a warning and no
-/// landmarks. Throws InputError when the cloud has no labels.
+/// landmarks. A cloud without labels gives no semantic landmarks and a warning (see the fallback).
 LandmarkSet extract_landmarks(const PointCloud& cloud, const LabelScheme& scheme,
                               const LandmarkParams& params);
+
+/// Number of cluster landmarks (the semantic objects) in a set.
+std::size_t cluster_landmark_count(const LandmarkSet& set);
+
+/// Whether a pair needs the class-agnostic landmarks (LandmarkParams::fallback).
+bool needs_fallback(const PointCloud& source, const PointCloud& target, const LandmarkSet& s,
+                    const LandmarkSet& t, const FallbackParams& params);
+
+/// Appends the class-agnostic `structure` keypoints of `cloud` to `set` as one more class (index
+/// = the number of classes in `set`): FPFH keypoints over every point except the ground (by the
+/// scheme's ground classes when the cloud has labels, else by height).
+void add_fallback_landmarks(const PointCloud& cloud, const LabelScheme& scheme,
+                            const LandmarkParams& params, LandmarkSet& set);
 
 }  // namespace pagor

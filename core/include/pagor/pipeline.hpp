@@ -107,6 +107,9 @@ class Pipeline {
  private:
   void mark_stale(Stage stage);
   void run_stage(Stage stage);
+  /// Calls f(cloud, landmarks) for the source and the target, in parallel with threads > 1.
+  template <class F>
+  void both_clouds(const F& f);
 
   Config config_;
   int threads_ = 1;
