@@ -69,7 +69,8 @@ std::vector<Option> bench_options() {
           {"kitti-root", 1, "DIR", "KITTI root holding sequences/ (with --pairs)"},
           {"sequence", 1, "SEQ", "KITTI sequence (default 00)"},
           {"pairs", 1, "FILE", "KITTI pairs file: 'source target' frame numbers per line"},
-          {"config", 1, "FILE", "configuration JSON (default: built-in outdoor defaults)"},
+          {"config", 1, "FILE", "configuration JSON (absent keys: the preset's values)"},
+          {"preset", 1, "NAME", "base configuration: default or paper (the published one)"},
           {"out", 1, "FILE", "write one JSON line per pair (pagor.register/1 without config)"},
           {"threads", 1, "N", "threads for landmarks, graph and verification (default 1)"}};
 }

@@ -99,7 +99,8 @@ void print_registration(const Pipeline& p) {
 
 std::vector<Option> register_options() {
   std::vector<Option> o = pair_options();
-  o.push_back({"config", 1, "FILE", "configuration JSON (default: built-in outdoor defaults)"});
+  o.push_back({"config", 1, "FILE", "configuration JSON (absent keys: the preset's values)"});
+  o.push_back({"preset", 1, "NAME", "base configuration: default or paper (the published one)"});
   o.push_back({"json", 1, "OUT", "write the result as JSON (schema pagor.register/1)"});
   o.push_back({"threads", 1, "N", "threads for graph construction and verification (default 1)"});
   return o;

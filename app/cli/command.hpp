@@ -37,7 +37,7 @@ int run_demo(const Args& args);
 
 // ---- shared helpers ------------------------------------------------------------------------
 
-/// `--config FILE` if given, else the defaults.
+/// `--config FILE` on top of `--preset NAME` (default: the defaults).
 Config config_from_args(const Args& args);
 
 /// Options selecting one cloud: `--source/--source-labels`, `--kitti-root/--sequence/--frame`,

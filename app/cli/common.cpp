@@ -10,7 +10,8 @@
 namespace pagor::cli {
 
 Config config_from_args(const Args& args) {
-  return args.has("config") ? load_config(args.get("config")) : default_config();
+  const std::string preset = args.get("preset", "default");
+  return args.has("config") ? load_config(args.get("config"), preset) : preset_config(preset);
 }
 
 std::vector<Option> single_cloud_options() {

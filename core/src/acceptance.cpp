@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "pagor/evaluation.hpp"
+#include "pagor/landmarks.hpp"
 
 namespace pagor {
 namespace {
@@ -27,10 +28,20 @@ Acceptance judge_selection(const Verifier& verifier, const std::vector<PoseEstim
   }
   const std::size_t sel = static_cast<std::size_t>(verification.selected);
   const Transform& T = candidates[sel].T_target_source;
-  const std::vector<float> d = verifier.distances(T);
-  std::size_t close = 0;
-  for (float x : d) close += x <= params.inlier_distance;
-  a.overlap = d.empty() ? 0.0 : static_cast<double>(close) / static_cast<double>(d.size());
+  const std::vector<Eigen::Vector3f>& points = verifier.source_points();
+  const std::vector<float> d = verifier.distances(T, static_cast<float>(params.inlier_distance));
+  const float ground = ground_layer_top(points, static_cast<float>(params.ground_thickness));
+  std::size_t structure = 0, close = 0, close_all = 0;
+  for (std::size_t i = 0; i < d.size(); ++i) {
+    const bool aligned = d[i] <= params.inlier_distance;
+    close_all += aligned;
+    if (points[i].z() > ground) ++structure, close += aligned;
+  }
+  // A scene that is all ground (or not a ground vehicle's) is judged on all its points.
+  const bool use_all = structure < std::max<std::size_t>(10, d.size() / 10);
+  a.overlap = d.empty() ? 0.0
+              : use_all ? static_cast<double>(close_all) / static_cast<double>(d.size())
+                        : static_cast<double>(close) / static_cast<double>(structure);
   a.inliers = static_cast<int>(candidates[sel].inliers.size());
 
   // Margin to the best candidate that is a different answer, not the same pose found twice.

@@ -1,6 +1,7 @@
 #include "pagor/config.hpp"
 
 #include <cassert>
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <limits>
@@ -148,6 +149,7 @@ void fields_of_verification(V& v, P& p) {
 template <class V, class P>
 void fields_of_acceptance(V& v, P& p) {
   v("inlier_distance", p.inlier_distance);
+  v("ground_thickness", p.ground_thickness);
   v("min_overlap", p.min_overlap);
   v("min_inliers", p.min_inliers);
   v("min_margin", p.min_margin);
@@ -457,6 +459,30 @@ Config default_config() {
   return c;
 }
 
+std::vector<std::string> preset_names() {
+  return {"default", "paper"};
+}
+
+Config preset_config(const std::string& name) {
+  if (name == "default") return default_config();
+  if (name == "paper") {
+    Config c = default_config();
+    c.landmarks.classes.erase(
+        std::remove_if(c.landmarks.classes.begin(), c.landmarks.classes.end(),
+                       [](const ClassParams& p) { return p.name == "traffic-sign"; }),
+        c.landmarks.classes.end());
+    c.landmarks.adapt_to_spacing = false;
+    c.landmarks.fallback.mode = FallbackMode::never;
+    c.graph = GraphParams{};
+    c.gnc.model = PoseModel::se3;
+    c.verification = VerificationParams{};
+    return c;
+  }
+  std::string known;
+  for (const auto& n : preset_names()) known += (known.empty() ? "" : ", ") + n;
+  throw ConfigError("unknown preset '" + name + "' (presets: " + known + ")");
+}
+
 void validate(const Config& c, const std::string& origin) {
   const Context ctx{origin};
   check(ctx, !c.landmarks.classes.empty(), "landmarks.classes", "needs at least one class");
@@ -522,6 +548,8 @@ void validate(const Config& c, const std::string& origin) {
   check(ctx, c.verification.voxel_size >= 0, "verification.voxel_size", "must be >= 0 [m]");
   check(ctx, c.verification.mu > 0, "verification.mu", "must be > 0 [m]");
   check(ctx, c.acceptance.inlier_distance > 0, "acceptance.inlier_distance", "must be > 0 [m]");
+  check(ctx, c.acceptance.ground_thickness >= 0, "acceptance.ground_thickness",
+        "must be >= 0 [m]");
   check(ctx, c.acceptance.min_overlap >= 0 && c.acceptance.min_overlap <= 1,
         "acceptance.min_overlap", "must be in [0, 1]");
   check(ctx, c.acceptance.min_inliers >= 0, "acceptance.min_inliers", "must be >= 0");
@@ -533,7 +561,8 @@ void validate(const Config& c, const std::string& origin) {
         "must be > 0 [deg]");
 }
 
-Config parse_config(const std::string& json_text, const std::string& origin) {
+Config parse_config(const std::string& json_text, const std::string& origin,
+                    const std::string& base_preset) {
   const Context ctx{origin};
   json j;
   try {
@@ -542,11 +571,20 @@ Config parse_config(const std::string& json_text, const std::string& origin) {
     throw ConfigError(origin + ": not valid JSON (" + e.what() + ")");
   }
   if (!j.is_object()) throw ConfigError(origin + ": expected a JSON object at the top level");
-  Config c = default_config();
+  std::string preset = base_preset;
+  if (const auto it = j.find("preset"); it != j.end()) decode(ctx, *it, "preset", preset);
+  Config c;
+  try {
+    c = preset_config(preset);
+  } catch (const ConfigError& e) {
+    fail(ctx, "preset", e.what());
+  }
   for (const auto& item : j.items()) {
     const std::string& key = item.key();
     const json& v = item.value();
-    if (key == "label_scheme")
+    if (key == "preset")
+      continue;
+    else if (key == "label_scheme")
       decode_scheme(ctx, v, c.label_scheme);
     else if (key == "landmarks")
       decode(ctx, v, key, c.landmarks);
@@ -571,12 +609,12 @@ Config parse_config(const std::string& json_text, const std::string& origin) {
   return c;
 }
 
-Config load_config(const std::string& path) {
+Config load_config(const std::string& path, const std::string& base_preset) {
   std::ifstream in(path);
   if (!in) throw InputError(path + ": cannot open config file");
   std::stringstream ss;
   ss << in.rdbuf();
-  return parse_config(ss.str(), path);
+  return parse_config(ss.str(), path, base_preset);
 }
 
 std::string config_to_json(const Config& config, int indent) {

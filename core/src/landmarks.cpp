@@ -166,25 +166,6 @@ void extract_class(const PointCloud& cloud, const std::vector<int>& subset, int 
   out.classes.push_back(summary);
 }
 
-// Lowest dense height layer: the 0.2 m height bin holding the most points among the lowest
-// half of the cloud (the ground under a ground vehicle's sensor). Returns its upper edge [m].
-float ground_level(const std::vector<Eigen::Vector3f>& points) {
-  constexpr float kBin = 0.2f;
-  std::vector<float> z;
-  z.reserve(points.size());
-  for (const auto& p : points) z.push_back(p.z());
-  std::nth_element(z.begin(), z.begin() + static_cast<long>(z.size() / 2), z.end());
-  const float median = z[z.size() / 2];
-  std::map<long, int> bins;
-  for (const auto& p : points)
-    if (p.z() <= median) ++bins[static_cast<long>(std::floor(p.z() / kBin))];
-  long best = 0;
-  int count = -1;
-  for (const auto& [bin, n] : bins)
-    if (n > count) best = bin, count = n;
-  return static_cast<float>(best + 1) * kBin;
-}
-
 }  // namespace
 
 double estimate_spacing(const std::vector<Eigen::Vector3f>& points) {
@@ -205,6 +186,24 @@ double estimate_spacing(const std::vector<Eigen::Vector3f>& points) {
   if (d.empty()) return 0.0;
   std::nth_element(d.begin(), d.begin() + static_cast<long>(d.size() / 2), d.end());
   return d[d.size() / 2] / std::sqrt(static_cast<double>(thin));
+}
+
+float ground_layer_top(const std::vector<Eigen::Vector3f>& points, float thickness) {
+  constexpr float kBin = 0.2f;  // height resolution of the ground search [m]
+  if (points.empty()) return -HUGE_VALF;
+  std::vector<float> z;
+  z.reserve(points.size());
+  for (const auto& p : points) z.push_back(p.z());
+  std::nth_element(z.begin(), z.begin() + static_cast<long>(z.size() / 2), z.end());
+  const float median = z[z.size() / 2];
+  std::map<long, int> bins;
+  for (const auto& p : points)
+    if (p.z() <= median) ++bins[static_cast<long>(std::floor(p.z() / kBin))];
+  long best = 0;
+  int count = -1;
+  for (const auto& [bin, n] : bins)
+    if (n > count) best = bin, count = n;
+  return static_cast<float>(best + 1) * kBin + thickness;
 }
 
 std::size_t cluster_landmark_count(const LandmarkSet& set) {
@@ -317,7 +316,7 @@ void add_fallback_landmarks(const PointCloud& cloud, const LabelScheme& scheme,
     for (std::size_t i = 0; i < cloud.size(); ++i)
       if (!ground.count(semantic_id(cloud.labels[i]))) subset.push_back(static_cast<int>(i));
   } else if (!cloud.empty()) {
-    const float top = ground_level(cloud.points) + static_cast<float>(fb.ground_height);
+    const float top = ground_layer_top(cloud.points, static_cast<float>(fb.ground_height));
     for (std::size_t i = 0; i < cloud.size(); ++i)
       if (cloud.points[i].z() > top) subset.push_back(static_cast<int>(i));
   }

@@ -52,9 +52,9 @@ double Verifier::build_time_ms() const {
   return impl_->build_ms;
 }
 
-std::vector<float> Verifier::distances(const Transform& T) const {
+std::vector<float> Verifier::distances(const Transform& T, float bound) const {
   std::vector<float> d(impl_->source.size(), HUGE_VALF);
-  if (!impl_->target.empty()) impl_->nearest(T, 0, d.size(), HUGE_VALF, d.data());
+  if (!impl_->target.empty()) impl_->nearest(T, 0, d.size(), bound, d.data());
   return d;
 }
 

@@ -2,9 +2,10 @@
 /// \file acceptance.hpp
 /// Whether the selected pose should be trusted: the verdict a loop-closure user acts on. After
 /// verification has picked the lowest-D candidate, three measures are taken:
-/// - overlap: the fraction of verification source points that lie within `inlier_distance` of a
-///   target point under the selected pose (true overlaps leave a substantial part of the scan
-///   aligned; scans that share nothing leave only ground-like coincidences);
+/// - overlap: the fraction of verification source points above the ground layer that lie within
+///   `inlier_distance` of a target point under the selected pose. True overlaps leave a
+///   substantial part of the structure aligned; any level pose aligns the ground of two scans that
+///   share nothing, so the ground is left out (all points count when it would leave too few);
 /// - inliers: how many correspondences of the selected clique agree with the pose (GNC inliers);
 /// - margin: how much better the selected D is than the best *distinct* candidate (one that
 ///   differs from the selection by more than the success criterion), as a fraction of the largest

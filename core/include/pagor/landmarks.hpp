@@ -61,6 +61,10 @@ LandmarkSet extract_landmarks(const PointCloud& cloud, const LabelScheme& scheme
 /// Number of cluster landmarks (the semantic objects) in a set.
 std::size_t cluster_landmark_count(const LandmarkSet& set);
 
+/// Height [m] of the top of the ground layer: the upper edge of the most populated 0.2 m height
+/// bin among the lower half of the points, plus `thickness` [m]. Assumes z up (ground vehicles).
+float ground_layer_top(const std::vector<Eigen::Vector3f>& points, float thickness);
+
 /// Whether a pair needs the class-agnostic landmarks (LandmarkParams::fallback).
 bool needs_fallback(const PointCloud& source, const PointCloud& target, const LandmarkSet& s,
                     const LandmarkSet& t, const FallbackParams& params);

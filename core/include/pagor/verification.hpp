@@ -6,6 +6,7 @@
 /// and target are voxel-downsampled first; the target's nearest neighbours come from a kd-tree.
 /// The lowest D wins.
 
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -28,8 +29,10 @@ class Verifier {
   /// the points over threads (same result).
   double score(const Transform& T_target_source, double mu, ScoreKind kind, int threads = 1) const;
 
-  /// Distance from each downsampled source point, moved by T, to its nearest target point [m].
-  std::vector<float> distances(const Transform& T_target_source) const;
+  /// Distance from each downsampled source point, moved by T, to its nearest target point [m];
+  /// +infinity where none is closer than `bound` [m] (a smaller bound searches faster).
+  std::vector<float> distances(const Transform& T_target_source,
+                               float bound = std::numeric_limits<float>::infinity()) const;
 
   const std::vector<Eigen::Vector3f>& source_points() const;
   const std::vector<Eigen::Vector3f>& target_points() const;
