@@ -60,23 +60,25 @@ int run_landmarks(const Args& args) {
   const double load_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   for (const auto& w : loaded.warnings) warn(w);
-  if (!loaded.cloud.has_labels())
-    throw InputError(name +
-                     ": no semantic labels (give --source-labels, or a cloud with a label field)");
-
   std::printf("cloud: %s\n", name.c_str());
   std::printf("loaded %zu points in %.1f ms (%zu dropped with NaN/Inf coordinates)\n",
               loaded.cloud.size(), load_ms, loaded.dropped_nonfinite);
-  const LandmarkSet set = extract_landmarks(loaded.cloud, config.label_scheme, config.landmarks);
+  LandmarkSet set = extract_landmarks(loaded.cloud, config.label_scheme, config.landmarks);
+  // One cloud alone: the class-agnostic keypoints as the pipeline would add them to a pair of it.
+  if (needs_fallback(loaded.cloud, loaded.cloud, set, set, config.landmarks.fallback))
+    add_fallback_landmarks(loaded.cloud, config.label_scheme, config.landmarks, set);
   for (const auto& w : set.warnings) warn(name + ": " + w);
+  if (config.landmarks.adapt_to_spacing)
+    std::printf("point spacing: %.3f m (voxels never finer, see landmarks.adapt_to_spacing)\n",
+                set.spacing);
 
-  std::printf("\n%-14s %-8s %9s %9s %10s %10s\n", "class", "method", "points", "voxels",
-              "landmarks", "time [ms]");
+  std::printf("\n%-14s %-8s %9s %9s %9s %10s %10s\n", "class", "method", "points", "voxel [m]",
+              "voxels", "landmarks", "time [ms]");
   for (const auto& c : set.classes)
-    std::printf("%-14s %-8s %9zu %9zu %10zu %10.1f\n", c.name.c_str(), to_string(c.method),
-                c.points, c.voxels, c.landmarks, c.time_ms);
-  std::printf("%-14s %-8s %9s %9s %10zu %10.1f\n", "total", "", "", "", set.landmarks.size(),
-              set.time_ms);
+    std::printf("%-14s %-8s %9zu %9.2f %9zu %10zu %10.1f\n", c.name.c_str(), to_string(c.method),
+                c.points, c.voxel_size, c.voxels, c.landmarks, c.time_ms);
+  std::printf("%-14s %-8s %9s %9s %9s %10zu %10.1f\n", "total", "", "", "", "",
+              set.landmarks.size(), set.time_ms);
 
   if (args.has("json")) {
     write_text_file(args.get("json"),

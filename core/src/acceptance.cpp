@@ -20,7 +20,8 @@ std::string below(const char* what, double value, double threshold) {
 Acceptance judge_selection(const Verifier& verifier, const std::vector<PoseEstimate>& candidates,
                            const VerificationResult& verification,
                            const VerificationParams& verification_params,
-                           const EvaluationParams& distinct, const AcceptanceParams& params) {
+                           const EvaluationParams& distinct, const AcceptanceParams& params,
+                           PoseModel model) {
   Acceptance a;
   if (verification.selected < 0) {
     a.reason = "no valid candidate";
@@ -62,6 +63,9 @@ Acceptance judge_selection(const Verifier& verifier, const std::vector<PoseEstim
     a.reason = below("inliers", a.inliers, params.min_inliers);
   else if (a.margin < params.min_margin)
     a.reason = below("D margin", a.margin, params.min_margin);
+  else if (a.inliers <= (model == PoseModel::se3 ? 3 : 2) &&
+           a.overlap < params.minimal_support_overlap)
+    a.reason = below("overlap with minimal support", a.overlap, params.minimal_support_overlap);
   a.accepted = a.reason.empty();
   return a;
 }

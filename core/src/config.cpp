@@ -152,6 +152,7 @@ void fields_of_acceptance(V& v, P& p) {
   v("ground_thickness", p.ground_thickness);
   v("min_overlap", p.min_overlap);
   v("min_inliers", p.min_inliers);
+  v("minimal_support_overlap", p.minimal_support_overlap);
   v("min_margin", p.min_margin);
 }
 template <class V, class P>
@@ -552,6 +553,8 @@ void validate(const Config& c, const std::string& origin) {
         "must be >= 0 [m]");
   check(ctx, c.acceptance.min_overlap >= 0 && c.acceptance.min_overlap <= 1,
         "acceptance.min_overlap", "must be in [0, 1]");
+  check(ctx, c.acceptance.minimal_support_overlap >= 0 && c.acceptance.minimal_support_overlap <= 1,
+        "acceptance.minimal_support_overlap", "must be in [0, 1]");
   check(ctx, c.acceptance.min_inliers >= 0, "acceptance.min_inliers", "must be >= 0");
   check(ctx, c.acceptance.min_margin >= 0 && c.acceptance.min_margin <= 1,
         "acceptance.min_margin", "must be in [0, 1]");

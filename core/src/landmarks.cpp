@@ -11,6 +11,7 @@
 #include <chrono>
 #include <cmath>
 #include <map>
+#include <numeric>
 #include <unordered_set>
 
 #include "pagor/errors.hpp"
@@ -90,6 +91,35 @@ void add_clusters(int class_index, const ClassParams& p, const VoxelDownsample& 
   }
 }
 
+// At most `budget` of the voxels, spread evenly: the voxel nearest the mean of each cell of a
+// coarser grid, the grid growing until few enough cells remain. All voxels when they fit.
+std::vector<int> spread_keypoints(const VoxelDownsample& ds, double voxel_size, int budget) {
+  std::vector<int> keep;
+  if (ds.points.size() <= static_cast<std::size_t>(budget)) {
+    keep.resize(ds.points.size());
+    std::iota(keep.begin(), keep.end(), 0);
+    return keep;
+  }
+  constexpr double kGrowth = 1.25;
+  double cell = std::max(voxel_size, 1e-3);
+  VoxelDownsample coarse;
+  do {
+    cell *= kGrowth;
+    coarse = voxel_downsample(ds.points, cell);
+  } while (coarse.points.size() > static_cast<std::size_t>(budget));
+  std::vector<int> best(coarse.points.size(), -1);
+  std::vector<float> best_d2(coarse.points.size(), HUGE_VALF);
+  for (std::size_t v = 0; v < ds.points.size(); ++v) {
+    const auto c = static_cast<std::size_t>(coarse.voxel_of[v]);
+    const float d2 = (ds.points[v] - coarse.points[c]).squaredNorm();
+    if (d2 < best_d2[c]) best_d2[c] = d2, best[c] = static_cast<int>(v);
+  }
+  std::sort(best.begin(), best.end());
+  return best;
+}
+
+// FPFH keypoints: normals and descriptors see every voxel of the class (the configured grid),
+// descriptors are computed only at a budget of evenly spread keypoints.
 void add_keypoints(int class_index, const ClassParams& p, const VoxelDownsample& ds,
                    const std::vector<std::vector<int>>& members, LandmarkSet& out) {
   auto cloud = to_pcl(ds.points);
@@ -102,17 +132,21 @@ void add_keypoints(int class_index, const ClassParams& p, const VoxelDownsample&
   ne.setRadiusSearch(p.normal_radius);
   ne.compute(*normals);
 
+  const std::vector<int> keypoints = spread_keypoints(ds, p.voxel_size, p.max_keypoints);
+  pcl::IndicesPtr indices(new std::vector<int>(keypoints));
   pcl::PointCloud<pcl::FPFHSignature33> features;
   pcl::FPFHEstimation<pcl::PointXYZ, pcl::Normal, pcl::FPFHSignature33> fe;
   fe.setInputCloud(cloud);
+  fe.setIndices(indices);
   fe.setInputNormals(normals);
   fe.setSearchMethod(tree);
   fe.setRadiusSearch(p.feature_radius);
   fe.compute(features);
 
-  for (std::size_t v = 0; v < ds.points.size(); ++v) {
+  for (std::size_t k = 0; k < keypoints.size(); ++k) {
+    const auto v = static_cast<std::size_t>(keypoints[k]);
     const auto& n = (*normals)[v];
-    const float* h = features[v].histogram;
+    const float* h = features[k].histogram;
     if (!std::isfinite(n.normal_x) ||
         !std::all_of(h, h + 33, [](float x) { return std::isfinite(x); }))
       continue;  // too few neighbours for a normal or a descriptor
@@ -128,7 +162,6 @@ void add_keypoints(int class_index, const ClassParams& p, const VoxelDownsample&
   }
 }
 
-
 // Landmarks of one class from the points `subset`, appended to `out` with a summary.
 void extract_class(const PointCloud& cloud, const std::vector<int>& subset, int class_index,
                    const ClassParams& configured, const LandmarkParams& all, LandmarkSet& out) {
@@ -142,12 +175,7 @@ void extract_class(const PointCloud& cloud, const std::vector<int>& subset, int 
   if (subset.empty()) {
     out.warnings.push_back("class '" + p.name + "': no points with this label");
   } else {
-    VoxelDownsample ds = voxel_downsample(cloud.points, p.voxel_size, &subset);
-    // Keypoint budget: a coarser grid, so FPFH time stays bounded on dense or large scenes.
-    while (p.method == LandmarkMethod::fpfh && ds.points.size() > std::size_t(p.max_keypoints)) {
-      p.voxel_size *= 1.25;
-      ds = voxel_downsample(cloud.points, p.voxel_size, &subset);
-    }
+    const VoxelDownsample ds = voxel_downsample(cloud.points, p.voxel_size, &subset);
     summary.voxels = ds.points.size();
     const auto members = members_of_voxels(ds, subset);
     if (p.method == LandmarkMethod::cluster)

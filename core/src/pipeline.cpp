@@ -78,7 +78,8 @@ void Pipeline::set_config(const Config& config) {
   if (config.verification.voxel_size != config_.verification.voxel_size)
     mark_stale(Stage::verification_prep);
   if (changed("verification")) mark_stale(Stage::verification);
-  if (changed("acceptance")) mark_stale(Stage::acceptance);
+  if (changed("acceptance") || config.gnc.model != config_.gnc.model)
+    mark_stale(Stage::acceptance);
   // The criterion also decides which candidates count as distinct for the D margin.
   if (changed("evaluation")) mark_stale(Stage::acceptance);
   config_ = config;
@@ -176,7 +177,7 @@ void Pipeline::run_stage(Stage stage) {
       break;
     case Stage::acceptance:
       acceptance_ = judge_selection(*verifier_, poses_, verification_, config_.verification,
-                                    config_.evaluation, config_.acceptance);
+                                    config_.evaluation, config_.acceptance, config_.gnc.model);
       break;
     case Stage::evaluation:
       level_errors_.clear();

@@ -10,7 +10,8 @@
 /// - margin: how much better the selected D is than the best *distinct* candidate (one that
 ///   differs from the selection by more than the success criterion), as a fraction of the largest
 ///   possible D (mu times the number of source points); 1 when there is no distinct candidate.
-/// The pose is accepted when every measure reaches its threshold.
+/// The pose is accepted when every measure reaches its threshold; a pose resting on the minimal
+/// number of inliers for its model must reach the higher `minimal_support_overlap`.
 
 #include <string>
 #include <vector>
@@ -34,6 +35,7 @@ struct Acceptance {
 Acceptance judge_selection(const Verifier& verifier, const std::vector<PoseEstimate>& candidates,
                            const VerificationResult& verification,
                            const VerificationParams& verification_params,
-                           const EvaluationParams& distinct, const AcceptanceParams& params);
+                           const EvaluationParams& distinct, const AcceptanceParams& params,
+                           PoseModel model);
 
 }  // namespace pagor
