@@ -8,10 +8,11 @@ using namespace pagor;
 
 TEST_CASE("the default config has the paper's outdoor classes and survives a JSON round trip") {
   const Config c = default_config();
-  REQUIRE(c.landmarks.classes.size() == 4);
+  REQUIRE(c.landmarks.classes.size() == 5);
   CHECK(c.landmarks.classes[0].name == "car");
-  CHECK(c.landmarks.classes[3].name == "building");
-  CHECK(c.landmarks.classes[3].method == LandmarkMethod::fpfh);
+  CHECK(c.landmarks.classes[3].name == "traffic-sign");
+  CHECK(c.landmarks.classes[4].name == "building");
+  CHECK(c.landmarks.classes[4].method == LandmarkMethod::fpfh);
   CHECK(c.graph.trim == TrimKind::ratio);
   CHECK(c.graph.thresholds.size() == 4);
   const std::string text = config_to_json(c);
@@ -23,7 +24,7 @@ TEST_CASE("absent keys keep their defaults") {
   const Config c = parse_config(R"({"verification": {"mu": 2.5}})");
   CHECK(c.verification.mu == 2.5);
   CHECK(c.verification.voxel_size == default_config().verification.voxel_size);
-  CHECK(c.landmarks.classes.size() == 4);
+  CHECK(c.landmarks.classes.size() == 5);
 }
 
 TEST_CASE("unknown keys, wrong types and bad values name the key path") {

@@ -89,10 +89,12 @@ TEST_CASE("FPFH mutual matches on a scene moved by a known transform are mostly 
   const LandmarkSet s = extract_landmarks(scene.source, config.label_scheme, config.landmarks);
   const LandmarkSet t = extract_landmarks(moved, config.label_scheme, config.landmarks);
   const CorrespondenceSet c = match_landmarks(s, t, config.correspondences);
-  const double voxel = config.landmarks.classes[3].voxel_size;
+  const int building = 4;
+  REQUIRE(config.landmarks.classes[building].name == "building");
+  const double voxel = config.landmarks.classes[building].voxel_size;
   std::size_t matches = 0, correct = 0;
   for (const auto& x : c.items) {
-    if (x.class_index != 3) continue;
+    if (x.class_index != building) continue;
     ++matches;
     const Eigen::Vector3d tp = T.block<3, 3>(0, 0) * x.p + T.block<3, 1>(0, 3);
     correct += (tp - x.q).norm() < 2 * voxel;

@@ -29,7 +29,7 @@ Problem make_problem(int n, double outlier_ratio, PoseModel model, std::uint64_t
   else
     pr.T.block<3, 3>(0, 0) = Eigen::AngleAxisd(-1.2, Eigen::Vector3d::UnitZ()).toRotationMatrix();
   pr.T.block<3, 1>(0, 3) =
-      model == PoseModel::se3 ? Eigen::Vector3d(4, -7, 1.5) : Eigen::Vector3d(4, -7, 0);
+      model == PoseModel::se2 ? Eigen::Vector3d(4, -7, 0) : Eigen::Vector3d(4, -7, 1.5);
   pr.inliers = static_cast<int>(n * (1 - outlier_ratio));
   for (int i = 0; i < n; ++i) {
     const Eigen::Vector3d p(coord(rng), coord(rng), coord(rng) / 4);
@@ -69,6 +69,32 @@ TEST_CASE("GNC-TLS recovers a known pose with 70 % outliers, in SE(3) and SE(2)"
       }
     }
   }
+}
+
+TEST_CASE("4-DoF GNC recovers yaw and a 3-D translation, level, from 2 correspondences up") {
+  for (std::uint64_t seed : {1u, 2u, 3u}) {
+    INFO("seed " << seed);
+    const Problem pr = make_problem(100, 0.7, PoseModel::four_dof, seed);
+    GncParams params;
+    params.model = PoseModel::four_dof;
+    params.noise_bound = 0.1;
+    const PoseEstimate e = estimate_pose_gnc(pr.p, pr.q, params);
+    REQUIRE(e.valid);
+    const PoseError err = pose_error(e.T_target_source, pr.T);
+    CHECK(err.translation < kTranslationTol);
+    CHECK(err.rotation_deg < kRotationTolDeg);
+    CHECK(e.T_target_source(2, 3) == Approx(1.5).margin(kTranslationTol));  // height kept
+    CHECK(e.T_target_source(2, 2) == Approx(1.0));                          // roll, pitch 0
+  }
+  // Two correspondences fix a yaw and a translation; one does not.
+  const Problem two = make_problem(2, 0.0, PoseModel::four_dof, 9);
+  GncParams params;
+  params.model = PoseModel::four_dof;
+  const PoseEstimate e = estimate_pose_gnc(two.p, two.q, params);
+  REQUIRE(e.valid);
+  CHECK(pose_error(e.T_target_source, two.T).translation < kTranslationTol);
+  const std::vector<Eigen::Vector3d> one_p{two.p[0]}, one_q{two.q[0]};
+  CHECK_FALSE(estimate_pose_gnc(one_p, one_q, params).valid);
 }
 
 TEST_CASE("without outliers the least-squares pose is exact") {

@@ -62,7 +62,8 @@ TEST_CASE("a change re-runs only the stages it invalidates") {
     c.verification.mu = 0.5;
     p.set_config(c);
     p.run();
-    CHECK(ran(before, runs(p)) == std::vector<Stage>{Stage::verification, Stage::evaluation});
+    CHECK(ran(before, runs(p)) ==
+          std::vector<Stage>{Stage::verification, Stage::acceptance, Stage::evaluation});
   }
   SECTION("a threshold: graph and everything after it but the metric clouds") {
     Config c = p.config();
@@ -70,7 +71,8 @@ TEST_CASE("a change re-runs only the stages it invalidates") {
     p.set_config(c);
     p.run();
     CHECK(ran(before, runs(p)) == std::vector<Stage>{Stage::graph, Stage::clique, Stage::pose,
-                                                     Stage::verification, Stage::evaluation});
+                                                     Stage::verification, Stage::acceptance,
+                                                     Stage::evaluation});
   }
   SECTION("a clustering parameter: everything but the metric clouds") {
     Config c = p.config();
@@ -79,23 +81,24 @@ TEST_CASE("a change re-runs only the stages it invalidates") {
     p.run();
     CHECK(ran(before, runs(p)) == std::vector<Stage>{Stage::landmarks, Stage::correspondences,
                                                      Stage::graph, Stage::clique, Stage::pose,
-                                                     Stage::verification, Stage::evaluation});
+                                                     Stage::verification, Stage::acceptance,
+                                                     Stage::evaluation});
   }
   SECTION("the verification voxel: metric clouds, scoring and evaluation") {
     Config c = p.config();
     c.verification.voxel_size = 0.7;
     p.set_config(c);
     p.run();
-    CHECK(ran(before, runs(p)) ==
-          std::vector<Stage>{Stage::verification_prep, Stage::verification, Stage::evaluation});
+    CHECK(ran(before, runs(p)) == std::vector<Stage>{Stage::verification_prep, Stage::verification,
+                                                     Stage::acceptance, Stage::evaluation});
   }
   SECTION("GNC parameters: pose and after") {
     Config c = p.config();
     c.gnc.noise_bound = 0.8;
     p.set_config(c);
     p.run();
-    CHECK(ran(before, runs(p)) ==
-          std::vector<Stage>{Stage::pose, Stage::verification, Stage::evaluation});
+    CHECK(ran(before, runs(p)) == std::vector<Stage>{Stage::pose, Stage::verification,
+                                                     Stage::acceptance, Stage::evaluation});
   }
   SECTION("ground truth: evaluation only") {
     p.set_ground_truth(std::nullopt);

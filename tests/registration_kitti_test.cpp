@@ -40,3 +40,22 @@ TEST_CASE("KITTI 0 -> 30 (26.6 m apart) runs and is reported") {
   else
     CHECK_FALSE(p.warnings().empty());
 }
+
+TEST_CASE("an unlabelled KITTI pair runs on class-agnostic keypoints and succeeds") {
+  const KittiSequence seq(test::kitti_root(), "00");
+  PointCloud source = seq.load_frame(20).cloud, target = seq.load_frame(30).cloud;
+  source.labels.clear();
+  target.labels.clear();
+  Pipeline p;
+  p.set_input(std::move(source), std::move(target));
+  p.set_ground_truth(seq.ground_truth(20, 30));
+  p.run();
+  const auto& classes = p.source_landmarks().classes;
+  REQUIRE(!classes.empty());
+  CHECK(classes.back().name == "structure");
+  CHECK(classes.back().landmarks > 100);
+  const auto err = p.selected_error();
+  REQUIRE(err);
+  INFO("errors " << err->translation << " m, " << err->rotation_deg << " deg");
+  CHECK(err->success);
+}

@@ -29,8 +29,8 @@ void print_row(const PairOutcome& o) {
   const char* truth = o.negative ? "neg" : (o.has_ground_truth ? (o.success ? "yes" : "no") : "-");
   if (o.error)
     std::printf("%-14s %6d %10.2f %11.2f %8s %6s %8s %10.1f\n", o.name.c_str(), o.selected_level,
-                o.error->translation, o.error->rotation_deg, truth,
-                o.upper_bound ? "yes" : "no", verdict, o.total_ms);
+                o.error->translation, o.error->rotation_deg, truth, o.upper_bound ? "yes" : "no",
+                verdict, o.total_ms);
   else
     std::printf("%-14s %6s %10s %11s %8s %6s %8s %10.1f\n", o.name.c_str(),
                 o.selected_level >= 0 ? std::to_string(o.selected_level).c_str() : "-", "-", "-",
@@ -49,10 +49,11 @@ void print_summary(const BenchmarkSummary& s, const Config& config) {
     std::printf("upper bound (any level succeeds):       %d/%d = %.1f %%\n", s.upper_bound,
                 s.with_truth, 100.0 * s.upper_bound / s.with_truth);
   }
-  std::printf("verdict: %d accepted; precision %.1f %% (%d right, %d wrong), recall %.1f %% of "
-              "the %d successful pairs; %d known negatives\n",
-              s.accepted, 100.0 * s.precision(), s.true_accepts, s.false_accepts,
-              100.0 * s.recall(), s.successes, s.negatives);
+  std::printf(
+      "verdict: %d accepted; precision %.1f %% (%d right, %d wrong), recall %.1f %% of "
+      "the %d successful pairs; %d known negatives\n",
+      s.accepted, 100.0 * s.precision(), s.true_accepts, s.false_accepts, 100.0 * s.recall(),
+      s.successes, s.negatives);
   std::printf("\n%-18s %10s %12s\n", "stage", "mean [ms]", "median [ms]");
   for (int i = 0; i < kStageCount; ++i)
     std::printf("%-18s %10.2f %12.2f\n", stage_name(static_cast<Stage>(i)),
@@ -84,8 +85,8 @@ int run_bench(const Args& args) {
     if (!out) throw InputError(args.get("out") + ": cannot open for writing");
   }
   Pipeline pipeline(config, args.get_int("threads", 1));
-  std::printf("%-14s %6s %10s %11s %8s %6s %8s %10s\n", "pair", "level", "t err [m]",
-              "r err [deg]", "success", "bound", "verdict", "time [ms]");
+  std::printf("%-14s %6s %10s %11s %8s %6s %8s %10s\n", "pair", "level", "t err [m]", "r err [deg]",
+              "success", "bound", "verdict", "time [ms]");
   std::vector<PairOutcome> outcomes;
   const bool progress = isatty(fileno(stderr));  // a progress line only for a person watching
   for (std::size_t k = 0; k < set.pairs.size(); ++k) {

@@ -68,17 +68,17 @@ int run_landmarks(const Args& args) {
   if (needs_fallback(loaded.cloud, loaded.cloud, set, set, config.landmarks.fallback))
     add_fallback_landmarks(loaded.cloud, config.label_scheme, config.landmarks, set);
   for (const auto& w : set.warnings) warn(name + ": " + w);
-  if (config.landmarks.adapt_to_spacing)
-    std::printf("point spacing: %.3f m (voxels never finer, see landmarks.adapt_to_spacing)\n",
-                set.spacing);
-
-  std::printf("\n%-14s %-8s %9s %9s %9s %10s %10s\n", "class", "method", "points", "voxel [m]",
-              "voxels", "landmarks", "time [ms]");
+  std::printf("\n%-14s %-8s %9s %11s %9s %9s %10s %10s\n", "class", "method", "points",
+              "spacing [m]", "voxel [m]", "voxels", "landmarks", "time [ms]");
   for (const auto& c : set.classes)
-    std::printf("%-14s %-8s %9zu %9.2f %9zu %10zu %10.1f\n", c.name.c_str(), to_string(c.method),
-                c.points, c.voxel_size, c.voxels, c.landmarks, c.time_ms);
-  std::printf("%-14s %-8s %9s %9s %9s %10zu %10.1f\n", "total", "", "", "", "",
+    std::printf("%-14s %-8s %9zu %11.3f %9.2f %9zu %10zu %10.1f\n", c.name.c_str(),
+                to_string(c.method), c.points, c.spacing, c.voxel_size, c.voxels, c.landmarks,
+                c.time_ms);
+  std::printf("%-14s %-8s %9s %11s %9s %9s %10zu %10.1f\n", "total", "", "", "", "", "",
               set.landmarks.size(), set.time_ms);
+  if (config.landmarks.adapt_to_spacing)
+    std::printf(
+        "(voxels are never finer than a class's point spacing: landmarks.adapt_to_spacing)\n");
 
   if (args.has("json")) {
     write_text_file(args.get("json"),

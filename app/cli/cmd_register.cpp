@@ -69,10 +69,11 @@ void print_registration(const Pipeline& p) {
   }
   const Acceptance& a = p.acceptance();
   if (p.selected_level() >= 0)
-    std::printf("verdict: %s (aligned %.0f %% of points within %.2f m, %d inliers, D margin %.3f)%s%s\n",
-                a.accepted ? "ACCEPTED" : "REJECTED", 100.0 * a.overlap,
-                p.config().acceptance.inlier_distance, a.inliers, a.margin,
-                a.accepted ? "" : ": ", a.reason.c_str());
+    std::printf(
+        "verdict: %s (aligned %.0f %% of points within %.2f m, %d inliers, D margin %.3f)%s%s\n",
+        a.accepted ? "ACCEPTED" : "REJECTED", 100.0 * a.overlap,
+        p.config().acceptance.inlier_distance, a.inliers, a.margin, a.accepted ? "" : ": ",
+        a.reason.c_str());
   if (gt) {
     if (const auto e = p.selected_error())
       std::printf(

@@ -53,9 +53,8 @@ Acceptance judge_selection(const Verifier& verifier, const std::vector<PoseEstim
     if (pose_error(candidates[i].T_target_source, T, distinct).success) continue;
     best_other = std::min(best_other, verification.scores[i]);
   }
-  a.margin = std::isfinite(best_other) && full > 0
-                 ? (best_other - verification.scores[sel]) / full
-                 : 1.0;
+  a.margin =
+      std::isfinite(best_other) && full > 0 ? (best_other - verification.scores[sel]) / full : 1.0;
 
   if (a.overlap < params.min_overlap)
     a.reason = below("overlap", a.overlap, params.min_overlap);

@@ -1,7 +1,7 @@
 #include "pagor/config.hpp"
 
-#include <cassert>
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <fstream>
 #include <limits>
@@ -511,8 +511,10 @@ void validate(const Config& c, const std::string& origin) {
   check(ctx, fb.ground_height >= 0, "landmarks.fallback.ground_height", "must be >= 0 [m]");
   check(ctx, fb.keypoints.voxel_size > 0, "landmarks.fallback.keypoints.voxel_size",
         "must be > 0 [m]");
-  check(ctx, fb.keypoints.normal_radius > 0 && fb.keypoints.feature_radius > fb.keypoints.normal_radius,
-        "landmarks.fallback.keypoints.feature_radius", "radii must be > 0 and feature > normal [m]");
+  check(ctx,
+        fb.keypoints.normal_radius > 0 && fb.keypoints.feature_radius > fb.keypoints.normal_radius,
+        "landmarks.fallback.keypoints.feature_radius",
+        "radii must be > 0 and feature > normal [m]");
   check(ctx, fb.keypoints.max_keypoints >= 1, "landmarks.fallback.keypoints.max_keypoints",
         "must be >= 1");
   check(ctx, c.correspondences.max_correspondences >= 0, "correspondences.max_correspondences",
@@ -549,15 +551,14 @@ void validate(const Config& c, const std::string& origin) {
   check(ctx, c.verification.voxel_size >= 0, "verification.voxel_size", "must be >= 0 [m]");
   check(ctx, c.verification.mu > 0, "verification.mu", "must be > 0 [m]");
   check(ctx, c.acceptance.inlier_distance > 0, "acceptance.inlier_distance", "must be > 0 [m]");
-  check(ctx, c.acceptance.ground_thickness >= 0, "acceptance.ground_thickness",
-        "must be >= 0 [m]");
+  check(ctx, c.acceptance.ground_thickness >= 0, "acceptance.ground_thickness", "must be >= 0 [m]");
   check(ctx, c.acceptance.min_overlap >= 0 && c.acceptance.min_overlap <= 1,
         "acceptance.min_overlap", "must be in [0, 1]");
   check(ctx, c.acceptance.minimal_support_overlap >= 0 && c.acceptance.minimal_support_overlap <= 1,
         "acceptance.minimal_support_overlap", "must be in [0, 1]");
   check(ctx, c.acceptance.min_inliers >= 0, "acceptance.min_inliers", "must be >= 0");
-  check(ctx, c.acceptance.min_margin >= 0 && c.acceptance.min_margin <= 1,
-        "acceptance.min_margin", "must be in [0, 1]");
+  check(ctx, c.acceptance.min_margin >= 0 && c.acceptance.min_margin <= 1, "acceptance.min_margin",
+        "must be in [0, 1]");
   check(ctx, c.evaluation.max_translation_error > 0, "evaluation.max_translation_error",
         "must be > 0 [m]");
   check(ctx, c.evaluation.max_rotation_error > 0, "evaluation.max_rotation_error",

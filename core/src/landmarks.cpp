@@ -166,8 +166,9 @@ void add_keypoints(int class_index, const ClassParams& p, const VoxelDownsample&
 void extract_class(const PointCloud& cloud, const std::vector<int>& subset, int class_index,
                    const ClassParams& configured, const LandmarkParams& all, LandmarkSet& out) {
   const auto t0 = Clock::now();
-  ClassParams p = params_for_spacing(configured, out.spacing, all);
   ClassSummary summary;
+  summary.spacing = all.adapt_to_spacing ? estimate_spacing(cloud.points, &subset) : 0.0;
+  const ClassParams p = params_for_spacing(configured, summary.spacing, all);
   summary.name = p.name;
   summary.method = p.method;
   summary.points = subset.size();
@@ -196,13 +197,16 @@ void extract_class(const PointCloud& cloud, const std::vector<int>& subset, int 
 
 }  // namespace
 
-double estimate_spacing(const std::vector<Eigen::Vector3f>& points) {
+double estimate_spacing(const std::vector<Eigen::Vector3f>& points,
+                        const std::vector<int>* subset) {
   constexpr std::size_t kQueries = 1000, kTreePoints = 16384;
-  if (points.size() < 2) return 0.0;
-  const std::size_t thin = std::max<std::size_t>(1, points.size() / kTreePoints);
+  const std::size_t n = subset ? subset->size() : points.size();
+  if (n < 2) return 0.0;
+  const std::size_t thin = std::max<std::size_t>(1, n / kTreePoints);
   std::vector<Eigen::Vector3f> sample;
-  sample.reserve(points.size() / thin + 1);
-  for (std::size_t i = 0; i < points.size(); i += thin) sample.push_back(points[i]);
+  sample.reserve(n / thin + 1);
+  for (std::size_t i = 0; i < n; i += thin)
+    sample.push_back(points[subset ? static_cast<std::size_t>((*subset)[i]) : i]);
   if (sample.size() < 2) return 0.0;
   const KdTree3f tree(sample);
   const std::size_t stride = std::max<std::size_t>(1, sample.size() / kQueries);
@@ -299,8 +303,8 @@ LandmarkSet extract_landmarks(const PointCloud& cloud, const LabelScheme& scheme
                               const LandmarkParams& params) {
   const auto t_all = Clock::now();
   LandmarkSet out;
-  out.spacing = params.adapt_to_spacing ? estimate_spacing(cloud.points) : 0.0;
-  if (!cloud.has_labels()) out.warnings.push_back("no semantic labels: no semantic landmarks");
+  if (!cloud.has_labels())
+    out.warnings.push_back("no semantic labels: no semantic landmarks");
   else if (const std::string m = label_scheme_mismatch(cloud, scheme, params); !m.empty())
     out.warnings.push_back(m);
   for (std::size_t ci = 0; ci < params.classes.size(); ++ci) {

@@ -84,7 +84,8 @@ Transform read_transform_file(const std::string& path) {
     throw InputError(path + ": " + std::to_string(values.size()) +
                      " numbers; expected a 4x4 matrix (16, row-major) or its top 3x4 rows (12)");
   Transform T = Transform::Identity();
-  for (std::size_t i = 0; i < values.size(); ++i) T(static_cast<int>(i / 4), static_cast<int>(i % 4)) = values[i];
+  for (std::size_t i = 0; i < values.size(); ++i)
+    T(static_cast<int>(i / 4), static_cast<int>(i % 4)) = values[i];
   check_rigid(T, path + ":" + std::to_string(last_line));
   return T;
 }
@@ -107,8 +108,9 @@ PairSet read_pair_manifest(const std::string& path) {
     }
     if (words.size() < 2 || words[0].find('=') != std::string::npos ||
         words[1].find('=') != std::string::npos)
-      throw InputError(where + ": expected 'SOURCE TARGET [gt=FILE] [source_labels=FILE] "
-                               "[target_labels=FILE] [name=TEXT] [overlap=no]'");
+      throw InputError(where +
+                       ": expected 'SOURCE TARGET [gt=FILE] [source_labels=FILE] "
+                       "[target_labels=FILE] [name=TEXT] [overlap=no]'");
     PairEntry e;
     e.origin = where;
     e.name = std::to_string(line_no);

@@ -30,8 +30,8 @@ const std::vector<Stage>& dependents(Stage s) {
 
 const char* stage_name(Stage stage) {
   static const char* const names[kStageCount] = {
-      "landmarks", "correspondences",   "graph",        "clique",
-      "gnc",       "verification_prep", "verification", "acceptance", "evaluation"};
+      "landmarks",         "correspondences", "graph",      "clique",    "gnc",
+      "verification_prep", "verification",    "acceptance", "evaluation"};
   return names[static_cast<int>(stage)];
 }
 
@@ -78,8 +78,7 @@ void Pipeline::set_config(const Config& config) {
   if (config.verification.voxel_size != config_.verification.voxel_size)
     mark_stale(Stage::verification_prep);
   if (changed("verification")) mark_stale(Stage::verification);
-  if (changed("acceptance") || config.gnc.model != config_.gnc.model)
-    mark_stale(Stage::acceptance);
+  if (changed("acceptance") || config.gnc.model != config_.gnc.model) mark_stale(Stage::acceptance);
   // The criterion also decides which candidates count as distinct for the D margin.
   if (changed("evaluation")) mark_stale(Stage::acceptance);
   config_ = config;

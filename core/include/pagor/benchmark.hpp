@@ -16,19 +16,19 @@ namespace pagor {
 
 /// What one pair gave.
 struct PairOutcome {
-  std::string name;              ///< the pair's name in its set
-  bool negative = false;         ///< a known non-overlapping pair
-  bool loaded = false;           ///< false: its files could not be read (see `load_error`)
-  std::string load_error;        ///< why it was skipped
+  std::string name;        ///< the pair's name in its set
+  bool negative = false;   ///< a known non-overlapping pair
+  bool loaded = false;     ///< false: its files could not be read (see `load_error`)
+  std::string load_error;  ///< why it was skipped
   bool has_ground_truth = false;
-  int selected_level = -1;       ///< -1: no valid candidate
-  std::optional<PoseError> error;  ///< errors of the selected pose (ground truth known)
-  bool success = false;          ///< selected pose within the criterion
-  bool upper_bound = false;      ///< any level's candidate within the criterion
-  bool accepted = false;         ///< the acceptance verdict on the selected pose
+  int selected_level = -1;                     ///< -1: no valid candidate
+  std::optional<PoseError> error;              ///< errors of the selected pose (ground truth known)
+  bool success = false;                        ///< selected pose within the criterion
+  bool upper_bound = false;                    ///< any level's candidate within the criterion
+  bool accepted = false;                       ///< the acceptance verdict on the selected pose
   std::array<double, kStageCount> stage_ms{};  ///< wall time per stage [ms]
-  double total_ms = 0.0;         ///< sum of the stage times [ms]
-  std::string report_json;       ///< the pagor.register/1 result without its config, one line
+  double total_ms = 0.0;                       ///< sum of the stage times [ms]
+  std::string report_json;  ///< the pagor.register/1 result without its config, one line
 };
 
 /// Loads a pair and runs it through `pipeline` with the pipeline's configuration. A pair whose
@@ -37,15 +37,15 @@ PairOutcome run_pair(Pipeline& pipeline, const PairEntry& entry);
 
 /// Rates and times over a set of outcomes.
 struct BenchmarkSummary {
-  int pairs_run = 0;       ///< pairs that loaded
-  int skipped = 0;         ///< pairs that did not load
-  int with_truth = 0;      ///< loaded positives with ground truth
-  int successes = 0;       ///< of `with_truth`: selected pose within the criterion
-  int upper_bound = 0;     ///< of `with_truth`: any level within the criterion
-  int negatives = 0;       ///< loaded known negatives
-  int true_accepts = 0;    ///< positives accepted and successful
-  int false_accepts = 0;   ///< negatives accepted, or positives accepted with a wrong pose
-  int accepted = 0;        ///< accepted pairs that can be judged (negatives, or with truth)
+  int pairs_run = 0;      ///< pairs that loaded
+  int skipped = 0;        ///< pairs that did not load
+  int with_truth = 0;     ///< loaded positives with ground truth
+  int successes = 0;      ///< of `with_truth`: selected pose within the criterion
+  int upper_bound = 0;    ///< of `with_truth`: any level within the criterion
+  int negatives = 0;      ///< loaded known negatives
+  int true_accepts = 0;   ///< positives accepted and successful
+  int false_accepts = 0;  ///< negatives accepted, or positives accepted with a wrong pose
+  int accepted = 0;       ///< accepted pairs that can be judged (negatives, or with truth)
   /// Verdict precision: true accepts / accepted (1 when nothing was accepted).
   double precision() const { return accepted ? double(true_accepts) / accepted : 1.0; }
   /// Verdict recall: true accepts / positives whose selected pose succeeded (1 when none did).

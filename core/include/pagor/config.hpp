@@ -43,8 +43,7 @@ struct FallbackParams {
   int class_poor_below = 15;
   /// Classes that count as ground and are left out (ignored when the scheme lacks them). Without
   /// labels, points within `ground_height` of the lowest dense height layer are left out instead.
-  std::vector<std::string> ground_classes{"road", "parking", "sidewalk", "other-ground",
-                                          "terrain"};
+  std::vector<std::string> ground_classes{"road", "parking", "sidewalk", "other-ground", "terrain"};
   double ground_height = 0.4;  ///< unlabelled: thickness of the removed ground layer [m]
   /// FPFH on a 0.8 m grid, radii 1.6 / 4.0 m, descriptors at 1000 keypoints: 9/10 of semreg-dev
   /// at voxels 0.4, 0.6 and 0.8 m alike with this budget (bench/README.md).
@@ -127,7 +126,7 @@ struct CliqueParams {
 
 /// The pose model.
 enum class PoseModel {
-  se3,  ///< rotation and translation in 3D (outdoor)
+  se3,       ///< rotation and translation in 3D (outdoor)
   se2,       ///< yaw and planar translation (planar robots, scan vs floor plan)
   four_dof,  ///< yaw and 3-D translation, roll and pitch held level (ground vehicles, as Quatro)
 };
@@ -162,11 +161,11 @@ struct AcceptanceParams {
   /// least fraction of structure points aligned, in [0, 1]; calibrated on the shared data: true
   /// pairs 0.24-0.59, scans that share nothing 0.01-0.18
   double min_overlap = 0.21;
-  int min_inliers = 2;            ///< least GNC inliers of the selected candidate
+  int min_inliers = 2;  ///< least GNC inliers of the selected candidate
   /// least overlap when the pose rests on the minimal number of inliers (2 for 4-DoF and SE(2),
   /// 3 for SE(3)): such a pose has no redundant support, so the clouds must say more
   double minimal_support_overlap = 0.3;
-  double min_margin = 0.0;       ///< least D margin to a distinct candidate, fraction of mu*points
+  double min_margin = 0.0;  ///< least D margin to a distinct candidate, fraction of mu*points
 };
 
 /// Success criterion against ground truth.
@@ -215,8 +214,8 @@ Config load_config(const std::string& path, const std::string& base_preset = "de
 std::string config_to_json(const Config& config, int indent = 2);
 
 /// One section (`label_scheme`, `landmarks`, `correspondences`, `graph`, `clique`, `gnc`,
-/// `verification`, `acceptance`, `evaluation`) as compact JSON; two configs agree on a section iff these are
-/// equal. The pipeline uses it to find what a change invalidates.
+/// `verification`, `acceptance`, `evaluation`) as compact JSON; two configs agree on a section iff
+/// these are equal. The pipeline uses it to find what a change invalidates.
 std::string section_json(const Config& config, const std::string& section);
 
 /// Checks values (ranges, orders, class names). Throws ConfigError naming the key path.

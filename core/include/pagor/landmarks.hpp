@@ -18,10 +18,11 @@ struct ClassSummary {
   std::size_t points = 0;                           ///< input points of this class
   std::size_t voxels = 0;                           ///< after voxel downsampling
   std::size_t landmarks = 0;                        ///< landmarks made
-  double voxel_size = 0.0;         ///< voxel used, after spacing adaptation and budget [m]
+  double spacing = 0.0;            ///< estimated spacing of this class's points [m]
+  double voxel_size = 0.0;         ///< voxel used, after spacing adaptation [m]
   double cluster_tolerance = 0.0;  ///< cluster: tolerance used [m]
   int min_points = 0;              ///< cluster: minimum size used [voxels of `voxel_size`]
-  double time_ms = 0.0;                             ///< wall time [ms]
+  double time_ms = 0.0;            ///< wall time [ms]
 };
 
 /// The landmarks of one cloud.
@@ -30,7 +31,6 @@ struct LandmarkSet {
   /// FPFH descriptor (33 values) of each landmark; empty for cluster landmarks.
   std::vector<std::vector<float>> descriptors;
   std::vector<ClassSummary> classes;  ///< one per configured class, in configured order
-  double spacing = 0.0;               ///< estimated point spacing of the cloud [m]
   std::vector<std::string> warnings;  ///< e.g. a class with no points
   double time_ms = 0.0;               ///< total wall time [ms]
 };
@@ -39,7 +39,9 @@ struct LandmarkSet {
 /// even sample of queries (0 for fewer than two points). Large clouds are thinned to an even
 /// subsample of about 16k points first and the distance scaled back by the square root of the
 /// thinning factor (surfaces). Clouds voxelised at v give about v.
-double estimate_spacing(const std::vector<Eigen::Vector3f>& points);
+/// With `subset`, only the points `points[subset[i]]` count.
+double estimate_spacing(const std::vector<Eigen::Vector3f>& points,
+                        const std::vector<int>* subset = nullptr);
 
 /// A class's parameters as used on a cloud of point spacing `spacing` [m] (see
 /// LandmarkParams::adapt_to_spacing); unchanged when adaptation is off or the data is finer.

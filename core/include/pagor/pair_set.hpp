@@ -21,15 +21,15 @@ namespace pagor {
 
 /// One pair of a set.
 struct PairEntry {
-  std::string name;         ///< shown in tables, e.g. "03" or "0 -> 20"
-  PairSource source;        ///< where its clouds (and ground truth) come from
-  bool negative = false;    ///< a known non-overlapping pair: registration should be rejected
-  std::string origin;       ///< "manifest.txt:7", for messages
+  std::string name;       ///< shown in tables, e.g. "03" or "0 -> 20"
+  PairSource source;      ///< where its clouds (and ground truth) come from
+  bool negative = false;  ///< a known non-overlapping pair: registration should be rejected
+  std::string origin;     ///< "manifest.txt:7", for messages
 };
 
 /// A named list of pairs.
 struct PairSet {
-  std::string origin;             ///< the file it was read from
+  std::string origin;            ///< the file it was read from
   std::vector<PairEntry> pairs;  ///< in file order
 };
 
