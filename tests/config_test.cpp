@@ -83,3 +83,32 @@ TEST_CASE("section_json tells sections apart") {
   CHECK(section_json(a, "verification") != section_json(b, "verification"));
   CHECK(section_json(a, "graph") == section_json(b, "graph"));
 }
+
+TEST_CASE("the paper preset is the published configuration; a document can start from it") {
+  const Config paper = preset_config("paper");
+  REQUIRE(paper.landmarks.classes.size() == 4);  // car, trunk, pole clusters; building FPFH
+  CHECK(paper.landmarks.classes[3].name == "building");
+  CHECK(paper.graph.trim == TrimKind::ratio);
+  CHECK(paper.graph.thresholds == std::vector<double>{0.02, 0.04, 0.08, 0.16});
+  CHECK(paper.gnc.model == PoseModel::se3);
+  CHECK(paper.verification.score == ScoreKind::truncated);
+  CHECK(paper.verification.mu == 1.0);
+  CHECK_FALSE(paper.landmarks.adapt_to_spacing);
+  CHECK(paper.landmarks.fallback.mode == FallbackMode::never);
+  CHECK(preset_config("default").gnc.model == PoseModel::four_dof);
+
+  const Config c = parse_config(R"({"preset": "paper", "gnc": {"noise_bound": 0.5}})");
+  CHECK(c.gnc.model == PoseModel::se3);
+  CHECK(c.gnc.noise_bound == 0.5);
+  CHECK(parse_config("{}", "x", "paper").gnc.model == PoseModel::se3);
+  CHECK_THROWS_WITH(parse_config(R"({"preset": "fast"})", "my.json"),
+                    Catch::Contains("my.json: preset") && Catch::Contains("paper"));
+  CHECK_THROWS_WITH(parse_config(R"({"acceptance": {"min_overlap": 2}})", "my.json"),
+                    Catch::Contains("acceptance.min_overlap"));
+  CHECK_THROWS_WITH(parse_config(R"({"gnc": {"model": "se4"}})", "my.json"),
+                    Catch::Contains("four_dof"));
+  // Every preset survives a JSON round trip.
+  for (const auto& name : preset_names())
+    CHECK(config_to_json(parse_config(config_to_json(preset_config(name)))) ==
+          config_to_json(preset_config(name)));
+}

@@ -110,3 +110,87 @@ TEST_CASE(
   CHECK(set.warnings[0].find("labels do not fit scheme 'semantickitti-train'") !=
         std::string::npos);
 }
+
+TEST_CASE("labels numbered by another scheme are detected and that scheme is named") {
+  const SyntheticScene scene = make_synthetic_scene();  // semantickitti-train labels
+  const Config config = default_config();
+  CHECK(label_scheme_mismatch(scene.source, config.label_scheme, config.landmarks).empty());
+
+  // A class-poor street in the training numbering, as a segmentation network labels it:
+  // vegetation 14, terrain 16, road 8, sidewalk 10, building 12, a few trunks 15 and poles 17.
+  PointCloud street;
+  for (const auto& [id, n] : std::map<std::uint32_t, int>{
+           {14, 6000}, {16, 2500}, {8, 1200}, {10, 300}, {12, 200}, {15, 60}, {17, 50}})
+    for (int i = 0; i < n; ++i) {
+      street.points.emplace_back(0.1f * i, static_cast<float>(id), 0.0f);
+      street.labels.push_back(id);
+    }
+  CHECK(label_scheme_mismatch(street, config.label_scheme, config.landmarks).empty());
+  PointCloud shifted = street;  // the learning map: the same classes, numbered from 1
+  for (auto& l : shifted.labels) l = semantic_id(l) + 1;
+  const std::string m = label_scheme_mismatch(shifted, config.label_scheme, config.landmarks);
+  CHECK_THAT(m, Catch::Contains("do not fit scheme 'semantickitti-train'") &&
+                    Catch::Contains("look like 'semantickitti-learning'"));
+  const LabelScheme learning = builtin_label_scheme("semantickitti-learning");
+  CHECK(label_scheme_mismatch(shifted, learning, config.landmarks).empty());
+  CHECK(learning.ids_of("car") == std::vector<std::uint32_t>{1});
+  CHECK(learning.ids_of("traffic-sign") == std::vector<std::uint32_t>{19});
+
+  PointCloud instances = scene.source;  // raw labels carry an instance id in the upper 16 bits
+  for (auto& l : instances.labels) l |= 7u << 16;
+  CHECK(label_scheme_mismatch(instances, config.label_scheme, config.landmarks).empty());
+}
+
+TEST_CASE("point spacing is estimated and class parameters follow it") {
+  std::vector<Eigen::Vector3f> grid;  // a 0.3 m grid on a plane
+  for (int x = 0; x < 60; ++x)
+    for (int y = 0; y < 60; ++y) grid.emplace_back(0.3f * x, 0.3f * y, 0.0f);
+  CHECK(estimate_spacing(grid) == Approx(0.3).margin(1e-4));
+  CHECK(estimate_spacing({}) == 0.0);
+  const std::vector<int> row{0, 1, 2, 3};  // a subset along one grid line
+  CHECK(estimate_spacing(grid, &row) == Approx(0.3).margin(1e-4));
+
+  LandmarkParams all;
+  ClassParams trunk{"trunk", LandmarkMethod::cluster};
+  trunk.voxel_size = 0.1;
+  trunk.cluster_tolerance = 0.3;
+  trunk.min_points = 8;
+  trunk.max_points = 1000;
+  const ClassParams finer = params_for_spacing(trunk, 0.05, all);  // data finer: unchanged
+  CHECK(finer.voxel_size == trunk.voxel_size);
+  CHECK(finer.min_points == trunk.min_points);
+  const ClassParams coarse = params_for_spacing(trunk, 0.3, all);
+  CHECK(coarse.voxel_size == Approx(0.3));
+  CHECK(coarse.cluster_tolerance == Approx(all.tolerance_spacings * 0.3));
+  CHECK(coarse.min_points == all.min_cluster_voxels);  // 8 * (0.1/0.3)^2 < 3
+  CHECK(coarse.max_points == 112);                     // 1000 * (0.1/0.3)^2, rounded up
+  all.adapt_to_spacing = false;
+  CHECK(params_for_spacing(trunk, 0.3, all).voxel_size == trunk.voxel_size);
+}
+
+TEST_CASE("an unlabelled cloud gets class-agnostic keypoints above the ground") {
+  const SyntheticScene scene = make_synthetic_scene();
+  const Config config = default_config();
+  PointCloud cloud = scene.source;
+  cloud.labels.clear();
+  LandmarkSet set = extract_landmarks(cloud, config.label_scheme, config.landmarks);
+  CHECK(needs_fallback(cloud, cloud, set, set, config.landmarks.fallback));
+  add_fallback_landmarks(cloud, config.label_scheme, config.landmarks, set);
+  REQUIRE(set.classes.size() == config.landmarks.classes.size() + 1);
+  CHECK(set.classes.back().name == "structure");
+  CHECK(set.classes.back().landmarks > 100);
+  CHECK(set.classes.back().landmarks <= 1000u);  // the keypoint budget
+  const float ground = ground_layer_top(cloud.points, 0.0f);
+  for (const auto& lm : set.landmarks) {
+    CHECK(lm.class_index == static_cast<int>(set.classes.size()) - 1);
+    CHECK(lm.centroid.z() > ground);
+  }
+  // A labelled, class-rich scene does not need them; "never" turns them off.
+  const LandmarkSet rich = extract_landmarks(scene.source, config.label_scheme, config.landmarks);
+  FallbackParams never = config.landmarks.fallback;
+  never.mode = FallbackMode::never;
+  CHECK_FALSE(needs_fallback(cloud, cloud, set, set, never));
+  FallbackParams always = never;
+  always.mode = FallbackMode::always;
+  CHECK(needs_fallback(scene.source, scene.source, rich, rich, always));
+}

@@ -128,7 +128,12 @@ int run_register(const Args& args) {
   pipeline.set_input(std::move(pair.source.cloud), std::move(pair.target.cloud));
   pipeline.set_ground_truth(pair.T_target_source_gt);
   pipeline.run();
-  for (const auto& w : pipeline.warnings()) warn(w);
+  for (std::string w : pipeline.warnings()) {  // name the file a cloud's warning is about
+    for (const auto& [side, name] :
+         {std::pair{"source: ", pair.source_name}, std::pair{"target: ", pair.target_name}})
+      if (w.rfind(side, 0) == 0) w = name + ": " + w.substr(std::string(side).size());
+    warn(w);
+  }
   print_registration(pipeline);
   if (args.has("json")) {
     write_text_file(args.get("json"),

@@ -39,8 +39,6 @@ std::optional<PairSource> pair_source_from_args(const Args& args) {
     src.source_frame = parse_int(args.all("pair")[0], "--pair (source frame)");
     src.target_frame = parse_int(args.all("pair")[1], "--pair (target frame)");
   } else {
-    if (args.has("ground-truth"))
-      throw UsageError("--ground-truth goes with --source/--target or --kitti-root");
     src.kind = PairSource::Kind::synthetic;
     src.synthetic_seed =
         static_cast<std::uint64_t>(parse_int(args.get("synthetic"), "--synthetic"));

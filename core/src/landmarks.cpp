@@ -264,36 +264,51 @@ ClassParams params_for_spacing(const ClassParams& p, double spacing, const Landm
 
 std::string label_scheme_mismatch(const PointCloud& cloud, const LabelScheme& scheme,
                                   const LandmarkParams& params) {
-  if (!cloud.has_labels()) return {};
+  if (!cloud.has_labels() || cloud.empty()) return {};
   std::map<std::uint32_t, std::size_t> histogram;
   for (std::uint32_t l : cloud.labels) ++histogram[semantic_id(l)];
-  const auto fit = [&](const LabelScheme& s, bool landmark_classes_only) {
+  // Fraction of the points whose ids belong to the classes `wanted` accepts.
+  const auto share = [&](const LabelScheme& s, const auto& wanted) {
     std::unordered_set<std::uint32_t> ids;
-    for (const auto& c : s.classes) {
-      if (landmark_classes_only &&
-          std::none_of(params.classes.begin(), params.classes.end(),
-                       [&](const ClassParams& p) { return p.name == c.name; }))
-        continue;
-      ids.insert(c.ids.begin(), c.ids.end());
-    }
+    for (const auto& c : s.classes)
+      if (wanted(c.name)) ids.insert(c.ids.begin(), c.ids.end());
     std::size_t n = 0;
     for (const auto& [id, count] : histogram) n += ids.count(id) ? count : 0;
     return static_cast<double>(n) / static_cast<double>(cloud.size());
   };
-  const double known = fit(scheme, false), landmark = fit(scheme, true);
-  if (landmark > 0 && known >= 0.5) return {};
+  const auto any = [](const std::string&) { return true; };
+  const auto landmark = [&](const std::string& name) {
+    return std::any_of(params.classes.begin(), params.classes.end(),
+                       [&](const ClassParams& p) { return p.name == name; });
+  };
+  // A driving scan is mostly ground, vegetation and buildings; a scheme that reads most points
+  // as trunks or poles (a numbering shifted by one does that) does not fit.
+  static const std::unordered_set<std::string> kBulk = {
+      "road", "parking", "sidewalk", "other-ground", "building", "fence", "vegetation", "terrain"};
+  const auto bulk = [&](const std::string& name) { return kBulk.count(name) > 0; };
+  const auto bulk_classes = [&](const LabelScheme& s) {
+    return std::count_if(s.classes.begin(), s.classes.end(),
+                         [&](const SemanticClass& c) { return bulk(c.name); });
+  };
+  const double known = share(scheme, any), in_landmarks = share(scheme, landmark);
+  const bool judge_bulk = bulk_classes(scheme) >= 3;
+  const double bulk_share = judge_bulk ? share(scheme, bulk) : 0.0;
+
   std::string best;
-  double best_fit = known;
+  double best_known = known, best_bulk = bulk_share;
   for (const auto& name : builtin_label_scheme_names()) {
+    if (name == scheme.name) continue;
     const LabelScheme b = builtin_label_scheme(name);
-    const double f = fit(b, false);
-    if (name != scheme.name && f > best_fit + 0.1) best = name, best_fit = f;
+    const double k = share(b, any), g = bulk_classes(b) >= 3 ? share(b, bulk) : 0.0;
+    if (judge_bulk ? (g > best_bulk + 0.3 && k >= 0.5) : (k > best_known + 0.1))
+      best = name, best_known = k, best_bulk = g;
   }
-  char buf[200];
+  if (in_landmarks > 0 && known >= 0.5 && best.empty()) return {};
+  char buf[240];
   std::snprintf(buf, sizeof(buf),
                 "labels do not fit scheme '%s': %.0f %% of points carry its ids, %.1f %% those of "
-                "landmark classes",
-                scheme.name.c_str(), 100 * known, 100 * landmark);
+                "landmark classes, %.0f %% those of ground, vegetation and buildings",
+                scheme.name.c_str(), 100 * known, 100 * in_landmarks, 100 * bulk_share);
   std::string msg = buf;
   if (!best.empty()) msg += "; they look like '" + best + "' (set label_scheme)";
   return msg;
