@@ -1,5 +1,7 @@
 #include "pagor/densest_clique.hpp"
 
+#include "clique_graph.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -32,76 +34,6 @@ struct LevelGraph {
     return std::binary_search(first, last, b);
   }
 };
-
-std::vector<int> degrees(const PyramidGraph& g, int level) {
-  std::vector<int> deg(static_cast<std::size_t>(g.vertices), 0);
-  for (int v = 0; v < g.vertices; ++v)
-    for (auto e = g.offsets[static_cast<std::size_t>(v)];
-         e < g.offsets[static_cast<std::size_t>(v) + 1]; ++e)
-      deg[static_cast<std::size_t>(v)] += g.level[static_cast<std::size_t>(e)] <= level;
-  return deg;
-}
-
-// A clique grown greedily (by degree) from each of the highest-degree vertices: a lower bound.
-std::vector<int> greedy_clique(const PyramidGraph& g, int level, const std::vector<int>& deg) {
-  constexpr int kStarts = 32;  // highest-degree vertices to grow from
-  std::vector<int> order(static_cast<std::size_t>(g.vertices));
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
-    return deg[static_cast<std::size_t>(a)] > deg[static_cast<std::size_t>(b)];
-  });
-  std::vector<int> best;
-  for (int k = 0; k < std::min(kStarts, g.vertices); ++k) {
-    const int v = order[static_cast<std::size_t>(k)];
-    if (static_cast<std::size_t>(deg[static_cast<std::size_t>(v)]) + 1 <= best.size()) break;
-    std::vector<int> cand;
-    for (auto e = g.offsets[static_cast<std::size_t>(v)];
-         e < g.offsets[static_cast<std::size_t>(v) + 1]; ++e)
-      if (g.level[static_cast<std::size_t>(e)] <= level)
-        cand.push_back(g.neighbors[static_cast<std::size_t>(e)]);
-    std::stable_sort(cand.begin(), cand.end(), [&](int a, int b) {
-      return deg[static_cast<std::size_t>(a)] > deg[static_cast<std::size_t>(b)];
-    });
-    std::vector<int> clique{v};
-    for (int c : cand) {
-      bool all = true;
-      for (int w : clique) all = all && g.adjacent(c, w, level);
-      if (all) clique.push_back(c);
-    }
-    if (clique.size() > best.size()) best = clique;
-  }
-  std::sort(best.begin(), best.end());
-  return best;
-}
-
-// Vertices of the (min_degree)-core: what is left after repeatedly removing vertices with fewer
-// than `min_degree` neighbours. A clique of size s lies in the (s-1)-core.
-std::vector<int> core(const PyramidGraph& g, int level, std::vector<int> deg, int min_degree) {
-  std::vector<char> removed(deg.size(), 0);
-  std::vector<int> stack;
-  for (int v = 0; v < g.vertices; ++v)
-    if (deg[static_cast<std::size_t>(v)] < min_degree) {
-      removed[static_cast<std::size_t>(v)] = 1;
-      stack.push_back(v);
-    }
-  while (!stack.empty()) {
-    const int v = stack.back();
-    stack.pop_back();
-    for (auto e = g.offsets[static_cast<std::size_t>(v)];
-         e < g.offsets[static_cast<std::size_t>(v) + 1]; ++e) {
-      if (g.level[static_cast<std::size_t>(e)] > level) continue;
-      const auto w = static_cast<std::size_t>(g.neighbors[static_cast<std::size_t>(e)]);
-      if (!removed[w] && --deg[w] < min_degree) {
-        removed[w] = 1;
-        stack.push_back(static_cast<int>(w));
-      }
-    }
-  }
-  std::vector<int> keep;
-  for (int v = 0; v < g.vertices; ++v)
-    if (!removed[static_cast<std::size_t>(v)]) keep.push_back(v);
-  return keep;
-}
 
 LevelGraph induce(const PyramidGraph& g, int level, const std::vector<int>& keep) {
   LevelGraph s;
@@ -200,23 +132,34 @@ std::vector<int> round_to_clique(const LevelGraph& g, const std::vector<double>&
                       return ua > ub || (ua == ub && a < b);
                     });
   std::vector<int> clique(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(k));
+  // in[v]: position in `clique` + 1, 0 outside. Members' non-neighbours among members, by
+  // walking each member's neighbour list once.
+  std::vector<int> in(u.size(), 0);
   while (clique.size() > 1) {
+    for (std::size_t a = 0; a < clique.size(); ++a)
+      in[static_cast<std::size_t>(clique[a])] = static_cast<int>(a) + 1;
     std::size_t worst = 0;
     int worst_missing = 0;
     for (std::size_t a = 0; a < clique.size(); ++a) {
-      int missing = 0;
-      for (std::size_t b = 0; b < clique.size(); ++b)
-        if (a != b && !g.adjacent(clique[a], clique[b])) ++missing;
+      const auto v = static_cast<std::size_t>(clique[a]);
+      int inside = 0;
+      for (std::size_t e = g.offsets[v]; e < g.offsets[v + 1]; ++e)
+        inside += in[static_cast<std::size_t>(g.neighbors[e])] != 0;
+      const int missing = static_cast<int>(clique.size()) - 1 - inside;
       if (missing > worst_missing) {
         worst_missing = missing;
         worst = a;
       }
     }
+    for (int v : clique) in[static_cast<std::size_t>(v)] = 0;
     if (worst_missing == 0) break;
     clique.erase(clique.begin() + static_cast<std::ptrdiff_t>(worst));
   }
   return clique;
 }
+
+// Greedy cliques grown for the lower bound of the pruning (from the highest cores).
+constexpr int kGreedyStarts = 32;
 
 // Largest gradient step tried; beyond it a step only renormalises max(gradient, 0).
 constexpr double kMaxStep = 1e6;
@@ -332,21 +275,36 @@ CliqueResult solve_clipper(const PyramidGraph& g, int level, const std::vector<d
   r.level = level;
   if (g.vertices == 0) return r;
   const std::size_t n = static_cast<std::size_t>(g.vertices);
+  const detail::LevelCsr csr = detail::level_csr(g, level);
+  detail::Marks marks(g.vertices);
 
   // Which vertices the relaxation works on: all, or the core that can hold a clique at least as
-  // large as a greedy one.
-  const std::vector<int> deg = degrees(g, level);
-  std::vector<int> greedy, keep;
+  // large as a lower bound: the known clique grown to a maximal one, else greedy cliques.
+  std::vector<int> lower, keep;
   if (p.prune) {
-    greedy = greedy_clique(g, level, deg);
-    if (known_clique.size() > greedy.size() && is_clique(g, level, known_clique))
-      greedy = known_clique;
-    keep = core(g, level, deg, static_cast<int>(greedy.size()) - 1);
+    const detail::CoreDecomposition cd = detail::core_decomposition(csr);
+    if (!known_clique.empty() && detail::is_clique(csr, known_clique, marks))
+      lower = detail::extend_clique(csr, known_clique, cd.core,
+                                    static_cast<int>(known_clique.size()), marks);
+    else
+      lower = detail::greedy_clique(csr, cd, kGreedyStarts, marks);
+    const int k = static_cast<int>(lower.size()) - 1;
+    for (int v = 0; v < g.vertices; ++v)
+      if (cd.core[static_cast<std::size_t>(v)] >= k) keep.push_back(v);
   } else {
     keep.resize(n);
     std::iota(keep.begin(), keep.end(), 0);
   }
   const LevelGraph sub = induce(g, level, keep);
+  r.u.assign(n, 0.0);
+  if (p.prune && sub.neighbors.size() == sub.size() * (sub.size() - 1)) {
+    // The core is itself a clique: it is the answer, and the relaxation's optimum is its
+    // indicator vector.
+    r.vertices = keep;
+    for (int v : keep) r.u[static_cast<std::size_t>(v)] = 1.0 / std::sqrt(double(keep.size()));
+    r.time_ms = ms_since(t0);
+    return r;
+  }
 
   // Start vector restricted to the kept vertices; the seeded random start if nothing is left.
   std::vector<double> u(sub.size());
@@ -364,85 +322,12 @@ CliqueResult solve_clipper(const PyramidGraph& g, int level, const std::vector<d
   }
 
   const std::vector<int> local = sub.size() > 0 ? relax(sub, u, d0, p, r) : std::vector<int>{};
-  for (int v : local) r.vertices.push_back(sub.ids[static_cast<std::size_t>(v)]);
-  std::sort(r.vertices.begin(), r.vertices.end());
-  if (greedy.size() > r.vertices.size()) r.vertices = greedy;  // never worse than the lower bound
-  r.u.assign(n, 0.0);
   for (std::size_t i = 0; i < sub.size(); ++i) r.u[static_cast<std::size_t>(sub.ids[i])] = u[i];
-  r.time_ms = ms_since(t0);
-  return r;
-}
-
-namespace {
-
-// Branch and bound for the maximum clique with a greedy colouring bound (Tomita-style).
-struct ExactSearch {
-  const PyramidGraph& g;
-  int level;
-  long budget;
-  long nodes = 0;
-  std::vector<int> best, current;
-
-  void expand(std::vector<int> candidates) {
-    if (++nodes > budget) return;
-    // Greedy colouring of the candidates: colour classes of mutually non-adjacent vertices.
-    std::vector<int> order, colour;
-    std::vector<std::vector<int>> classes;
-    for (int v : candidates) {
-      std::size_t k = 0;
-      for (; k < classes.size(); ++k) {
-        bool fits = true;
-        for (int w : classes[k]) fits = fits && !g.adjacent(v, w, level);
-        if (fits) break;
-      }
-      if (k == classes.size()) classes.emplace_back();
-      classes[k].push_back(v);
-    }
-    for (std::size_t k = 0; k < classes.size(); ++k)
-      for (int v : classes[k]) {
-        order.push_back(v);
-        colour.push_back(static_cast<int>(k) + 1);
-      }
-    // Take vertices from the highest colour down; colour + |current| bounds any clique found.
-    for (int idx = static_cast<int>(order.size()) - 1; idx >= 0; --idx) {
-      if (current.size() + static_cast<std::size_t>(colour[static_cast<std::size_t>(idx)]) <=
-          best.size())
-        return;
-      const int v = order[static_cast<std::size_t>(idx)];
-      current.push_back(v);
-      std::vector<int> next;
-      for (int j = 0; j < idx; ++j)
-        if (g.adjacent(v, order[static_cast<std::size_t>(j)], level))
-          next.push_back(order[static_cast<std::size_t>(j)]);
-      if (next.empty()) {
-        if (current.size() > best.size()) best = current;
-      } else {
-        expand(std::move(next));
-      }
-      current.pop_back();
-      if (nodes > budget) return;
-    }
-  }
-};
-
-}  // namespace
-
-CliqueResult exact_max_clique(const PyramidGraph& g, int level, const CliqueParams& p) {
-  const auto t0 = Clock::now();
-  ExactSearch s{g, level, p.exact_max_nodes, 0, {}, {}};
-  std::vector<int> all(static_cast<std::size_t>(g.vertices));
-  std::iota(all.begin(), all.end(), 0);
-  // Higher degree first tends to find large cliques early.
-  const std::vector<int> degree = degrees(g, level);
-  std::stable_sort(all.begin(), all.end(), [&](int a, int b) {
-    return degree[static_cast<std::size_t>(a)] < degree[static_cast<std::size_t>(b)];
-  });
-  if (!all.empty()) s.expand(all);
-  CliqueResult r;
-  r.level = level;
-  r.vertices = s.best;
-  std::sort(r.vertices.begin(), r.vertices.end());
-  r.optimal = s.nodes <= s.budget;
+  std::vector<int> found;
+  for (int v : local) found.push_back(sub.ids[static_cast<std::size_t>(v)]);
+  // Rounding keeps round(u^T C u) entries; vertices adjacent to all of them join, largest u first.
+  if (!found.empty()) found = detail::extend_clique(csr, found, r.u, 0.0, marks);
+  r.vertices = found.size() >= lower.size() ? found : lower;  // never worse than the lower bound
   r.time_ms = ms_since(t0);
   return r;
 }
