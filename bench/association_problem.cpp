@@ -56,7 +56,11 @@ bool write_association_problem(const std::string& path, const AssociationProblem
                                const std::string& comment) {
   FILE* f = std::fopen(path.c_str(), "w");
   if (!f) return false;
-  std::fprintf(f, "# %s\n# px py pz qx qy qz weight inlier\n", comment.c_str());
+  std::fprintf(f, "# %s\n# ground truth T_target_source, rows 1-3 of 4:", comment.c_str());
+  for (int r = 0; r < 3; ++r)
+    std::fprintf(f, "  %.9g %.9g %.9g %.9g", p.T_target_source(r, 0), p.T_target_source(r, 1),
+                 p.T_target_source(r, 2), p.T_target_source(r, 3));
+  std::fprintf(f, "\n# px py pz qx qy qz weight inlier\n");
   for (std::size_t i = 0; i < p.correspondences.size(); ++i) {
     const auto& c = p.correspondences[i];
     std::fprintf(f, "%.9g %.9g %.9g %.9g %.9g %.9g 1 %d\n", c.p.x(), c.p.y(), c.p.z(), c.q.x(),

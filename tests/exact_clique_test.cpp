@@ -63,11 +63,21 @@ TEST_CASE("core numbers, degeneracy order and k-cores agree with their definitio
         later += cd.position[static_cast<std::size_t>(*w)] > i;
       CHECK(later <= cd.core[static_cast<std::size_t>(v)]);
     }
+    // k-cores peeled on the CSR and on the pyramid graph read in place.
+    std::vector<int> deg;
+    for (int v = 0; v < csr.size(); ++v) deg.push_back(csr.degree(v));
+    CHECK(detail::level_degrees(g, 0) == deg);
     for (int k : {1, 2, 3, 5}) {
       std::vector<int> by_core;
       for (int v = 0; v < csr.size(); ++v)
         if (expected[static_cast<std::size_t>(v)] >= k) by_core.push_back(v);
-      CHECK(detail::k_core(csr, k) == by_core);
+      CHECK(detail::k_core(csr, deg, k) == by_core);
+      CHECK(detail::k_core(detail::PyramidLevel{g, 0}, deg, k) == by_core);
+      // Recounting the survivors first (when their rows are the shorter walk) gives the same.
+      CHECK(detail::k_core(csr, deg, k, [](int) { return std::size_t{1}; }) == by_core);
+      CHECK(detail::k_core(csr, deg, k, [&](int v) {
+              return std::size_t(deg[std::size_t(v)] < k ? 100 : 1);
+            }) == by_core);
     }
   }
 }
@@ -89,11 +99,17 @@ TEST_CASE("greedy and extended cliques are maximal cliques") {
     const detail::LevelCsr csr = detail::level_csr(g, 0);
     const detail::CoreDecomposition cd = detail::core_decomposition(csr);
     detail::Marks marks(g.vertices);
-    for (const auto& c :
-         {detail::greedy_clique(csr, cd, 8, marks),
-          detail::extend_clique(csr, {static_cast<int>(seed)}, cd.core, 0, marks)}) {
+    const detail::PyramidLevel view{g, 0};
+    const std::vector<int> one{static_cast<int>(seed)};
+    const std::vector<std::vector<int>> cliques = {
+        detail::greedy_clique(csr, cd.core, 8, marks),
+        detail::greedy_clique(view, detail::level_degrees(g, 0), 8, marks),
+        detail::extend_clique(csr, one, cd.core, 0, marks),
+        detail::extend_clique(view, one, cd.core, 0, marks)};
+    for (const auto& c : cliques) {
       REQUIRE(is_clique(g, 0, c));
       CHECK(detail::is_clique(csr, c, marks));
+      CHECK(detail::is_clique(view, c, marks));
       CHECK(std::is_sorted(c.begin(), c.end()));
       for (int v = 0; v < g.vertices; ++v) {  // nothing can join
         if (std::binary_search(c.begin(), c.end(), v)) continue;

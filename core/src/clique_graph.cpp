@@ -78,59 +78,15 @@ CoreDecomposition core_decomposition(const LevelCsr& g) {
   return d;
 }
 
-std::vector<int> greedy_clique(const LevelCsr& g, const CoreDecomposition& cores, int starts,
-                               Marks& marks) {
-  std::vector<int> best;
-  const int n = g.size();
-  // The last vertices of the degeneracy order have the largest core numbers.
-  for (int i = n - 1, tried = 0; i >= 0 && tried < starts; --i) {
-    const int v = cores.order[static_cast<std::size_t>(i)];
-    if (cores.core[static_cast<std::size_t>(v)] + 1 <= static_cast<int>(best.size())) break;
-    if (std::binary_search(best.begin(), best.end(), v)) continue;  // would grow much the same
-    ++tried;
-    // Members of a clique larger than `best` have a core number of at least |best|.
-    std::vector<int> c = extend_clique(g, {v}, cores.core, static_cast<int>(best.size()), marks);
-    if (c.size() > best.size()) best = std::move(c);
+std::vector<int> level_degrees(const PyramidGraph& g, int level) {
+  std::vector<int> deg(static_cast<std::size_t>(g.vertices), 0);
+  for (std::size_t v = 0; v < deg.size(); ++v) {
+    int d = 0;
+    const auto last = static_cast<std::size_t>(g.offsets[v + 1]);
+    for (auto e = static_cast<std::size_t>(g.offsets[v]); e < last; ++e) d += g.level[e] <= level;
+    deg[v] = d;
   }
-  return best;
-}
-
-std::vector<int> k_core(const LevelCsr& g, int k) {
-  const int n = g.size();
-  std::vector<int> deg(static_cast<std::size_t>(n));
-  std::vector<char> removed(static_cast<std::size_t>(n), 0);
-  std::vector<int> stack;
-  for (int v = 0; v < n; ++v) {
-    deg[static_cast<std::size_t>(v)] = g.degree(v);
-    if (deg[static_cast<std::size_t>(v)] < k) {
-      removed[static_cast<std::size_t>(v)] = 1;
-      stack.push_back(v);
-    }
-  }
-  while (!stack.empty()) {
-    const int v = stack.back();
-    stack.pop_back();
-    for (const int* p = g.begin(v); p != g.end(v); ++p) {
-      const auto w = static_cast<std::size_t>(*p);
-      if (!removed[w] && --deg[w] < k) {
-        removed[w] = 1;
-        stack.push_back(*p);
-      }
-    }
-  }
-  std::vector<int> keep;
-  for (int v = 0; v < n; ++v)
-    if (!removed[static_cast<std::size_t>(v)]) keep.push_back(v);
-  return keep;
-}
-
-bool is_clique(const LevelCsr& g, const std::vector<int>& vertices, Marks& marks) {
-  for (std::size_t a = 0; a < vertices.size(); ++a) {
-    marks.mark_neighbours(g, vertices[a]);
-    for (std::size_t b = 0; b < vertices.size(); ++b)
-      if (a != b && !marks.has(vertices[b])) return false;
-  }
-  return true;
+  return deg;
 }
 
 }  // namespace pagor::detail

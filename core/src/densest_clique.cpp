@@ -22,19 +22,14 @@ struct LevelGraph {
   std::vector<int> ids;              // local -> global vertex id
   std::vector<std::size_t> offsets;  // CSR over local ids, neighbours sorted
   std::vector<int> neighbors;
-  std::vector<double> weights;
-  bool binary = true;  // all weights 1: M u = C u
+  std::vector<float> weights;  // affinity per edge (TRIM values until set_weights)
+  bool binary = true;          // all weights 1: M u = C u
 
   std::size_t size() const { return ids.size(); }
-  bool adjacent(int a, int b) const {
-    const auto first =
-        neighbors.begin() + static_cast<std::ptrdiff_t>(offsets[static_cast<std::size_t>(a)]);
-    const auto last =
-        neighbors.begin() + static_cast<std::ptrdiff_t>(offsets[static_cast<std::size_t>(a) + 1]);
-    return std::binary_search(first, last, b);
-  }
+  bool complete() const { return neighbors.size() == size() * (size() - 1); }
 };
 
+// The subgraph of level `level` induced by `keep` (sorted), with each edge's TRIM value.
 LevelGraph induce(const PyramidGraph& g, int level, const std::vector<int>& keep) {
   LevelGraph s;
   s.ids = keep;
@@ -43,60 +38,82 @@ LevelGraph induce(const PyramidGraph& g, int level, const std::vector<int>& keep
   for (std::size_t i = 0; i < keep.size(); ++i)
     local[static_cast<std::size_t>(keep[i])] = static_cast<int>(i);
   s.offsets.assign(1, 0);
+  std::size_t rows = 0;  // an upper bound of the edges kept
+  for (int v : keep)
+    rows += static_cast<std::size_t>(g.offsets[static_cast<std::size_t>(v) + 1] -
+                                     g.offsets[static_cast<std::size_t>(v)]);
+  s.neighbors.reserve(rows);
+  if (!s.binary) s.weights.reserve(rows);
   for (int v : keep) {
-    for (auto e = g.offsets[static_cast<std::size_t>(v)];
-         e < g.offsets[static_cast<std::size_t>(v) + 1]; ++e) {
-      const auto se = static_cast<std::size_t>(e);
-      const int w = local[static_cast<std::size_t>(g.neighbors[se])];
-      if (g.level[se] > level || w < 0) continue;
+    const auto last = static_cast<std::size_t>(g.offsets[static_cast<std::size_t>(v) + 1]);
+    for (auto e = static_cast<std::size_t>(g.offsets[static_cast<std::size_t>(v)]); e < last; ++e) {
+      const int w = local[static_cast<std::size_t>(g.neighbors[e])];
+      if (g.level[e] > level || w < 0) continue;
       s.neighbors.push_back(w);  // global ids are sorted, so local ids are too
-      s.weights.push_back(g.weight(se, level));
+      if (!s.binary) s.weights.push_back(g.trim[e]);
     }
     s.offsets.push_back(s.neighbors.size());
   }
   return s;
 }
 
+// TRIM values -> Gaussian affinities of level `level` (as PyramidGraph::weight).
+void set_weights(LevelGraph& s, const PyramidGraph& g, int level) {
+  if (s.binary) return;
+  const double sigma = g.sigma_ratio * g.thresholds[static_cast<std::size_t>(level)];
+  const double scale = -1.0 / (2 * sigma * sigma);
+  for (float& w : s.weights) w = static_cast<float>(std::exp(scale * double(w) * w));
+}
+
 // Products the relaxation needs: Mu = M u (affinities, unit diagonal), Cu = C u (adjacency, unit
-// diagonal). When u has few non-zeros (late in the solve, and after a warm start), the products
-// are scattered from the support instead of gathered over every edge (the graph is symmetric).
+// diagonal), both in one pass over the edges. When u has few non-zeros (late in the solve, and
+// after a warm start), they are scattered from the support instead of gathered over every edge
+// (the graph is symmetric).
 void products(const LevelGraph& g, const std::vector<double>& u, std::vector<double>& Mu,
               std::vector<double>& Cu) {
+  const std::size_t n = g.size();
   std::size_t support = 0;
   for (double x : u) support += x != 0.0;
-  const bool scatter = support * 4 < g.size();
-  if (scatter) {
+  const int* nb = g.neighbors.data();
+  const float* wt = g.weights.data();
+  if (support * 4 < n) {
     std::fill(Cu.begin(), Cu.end(), 0.0);
     if (!g.binary) std::fill(Mu.begin(), Mu.end(), 0.0);
-    for (std::size_t v = 0; v < g.size(); ++v) {
+    for (std::size_t v = 0; v < n; ++v) {
       const double uv = u[v];
       if (uv == 0.0) continue;
       Cu[v] += uv;
-      if (!g.binary) Mu[v] += uv;
-      for (std::size_t e = g.offsets[v]; e < g.offsets[v + 1]; ++e) {
-        const auto w = static_cast<std::size_t>(g.neighbors[e]);
-        Cu[w] += uv;
-        if (!g.binary) Mu[w] += g.weights[e] * uv;
+      if (g.binary) {
+        for (std::size_t e = g.offsets[v]; e < g.offsets[v + 1]; ++e)
+          Cu[static_cast<std::size_t>(nb[e])] += uv;
+      } else {
+        Mu[v] += uv;
+        for (std::size_t e = g.offsets[v]; e < g.offsets[v + 1]; ++e) {
+          const auto w = static_cast<std::size_t>(nb[e]);
+          Cu[w] += uv;
+          Mu[w] += double(wt[e]) * uv;
+        }
       }
     }
     if (g.binary) Mu = Cu;
     return;
   }
-  for (std::size_t v = 0; v < g.size(); ++v) {
+  for (std::size_t v = 0; v < n; ++v) {
     double c = u[v];
-    for (std::size_t e = g.offsets[v]; e < g.offsets[v + 1]; ++e)
-      c += u[static_cast<std::size_t>(g.neighbors[e])];
-    Cu[v] = c;
-  }
-  if (g.binary) {
-    Mu = Cu;
-    return;
-  }
-  for (std::size_t v = 0; v < g.size(); ++v) {
-    double m = u[v];
-    for (std::size_t e = g.offsets[v]; e < g.offsets[v + 1]; ++e)
-      m += g.weights[e] * u[static_cast<std::size_t>(g.neighbors[e])];
-    Mu[v] = m;
+    if (g.binary) {
+      for (std::size_t e = g.offsets[v]; e < g.offsets[v + 1]; ++e)
+        c += u[static_cast<std::size_t>(nb[e])];
+      Cu[v] = Mu[v] = c;
+    } else {
+      double m = u[v];
+      for (std::size_t e = g.offsets[v]; e < g.offsets[v + 1]; ++e) {
+        const double x = u[static_cast<std::size_t>(nb[e])];
+        c += x;
+        m += double(wt[e]) * x;
+      }
+      Cu[v] = c;
+      Mu[v] = m;
+    }
   }
 }
 
@@ -159,7 +176,9 @@ std::vector<int> round_to_clique(const LevelGraph& g, const std::vector<double>&
 }
 
 // Greedy cliques grown for the lower bound of the pruning (from the highest cores).
-constexpr int kGreedyStarts = 32;
+constexpr int kGreedyStarts = 4;
+// Improving swaps (one member out, two vertices in) tried on the rounded clique.
+constexpr int kMaxSwaps = 64;
 
 // Largest gradient step tried; beyond it a step only renormalises max(gradient, 0).
 constexpr double kMaxStep = 1e6;
@@ -275,29 +294,29 @@ CliqueResult solve_clipper(const PyramidGraph& g, int level, const std::vector<d
   r.level = level;
   if (g.vertices == 0) return r;
   const std::size_t n = static_cast<std::size_t>(g.vertices);
-  const detail::LevelCsr csr = detail::level_csr(g, level);
+  const detail::PyramidLevel view{g, level};
   detail::Marks marks(g.vertices);
 
   // Which vertices the relaxation works on: all, or the core that can hold a clique at least as
   // large as a lower bound: the known clique grown to a maximal one, else greedy cliques.
   std::vector<int> lower, keep;
   if (p.prune) {
-    const detail::CoreDecomposition cd = detail::core_decomposition(csr);
-    if (!known_clique.empty() && detail::is_clique(csr, known_clique, marks))
-      lower = detail::extend_clique(csr, known_clique, cd.core,
-                                    static_cast<int>(known_clique.size()), marks);
-    else
-      lower = detail::greedy_clique(csr, cd, kGreedyStarts, marks);
-    const int k = static_cast<int>(lower.size()) - 1;
-    for (int v = 0; v < g.vertices; ++v)
-      if (cd.core[static_cast<std::size_t>(v)] >= k) keep.push_back(v);
+    const std::vector<int> deg = detail::level_degrees(g, level);
+    // The known clique grown to a maximal one, then greedy cliques from the highest degrees that
+    // are not in it (a cheap search when the known clique is already large).
+    if (!known_clique.empty() && detail::is_clique(view, known_clique, marks))
+      lower = detail::extend_clique(view, known_clique, deg, static_cast<int>(known_clique.size()),
+                                    marks);
+    lower = detail::greedy_clique(view, deg, kGreedyStarts, marks, std::move(lower));
+    keep = detail::k_core(view, deg, static_cast<int>(lower.size()) - 1,
+                          [&](int v) { return view.row_length(v); });
   } else {
     keep.resize(n);
     std::iota(keep.begin(), keep.end(), 0);
   }
-  const LevelGraph sub = induce(g, level, keep);
+  LevelGraph sub = induce(g, level, keep);
   r.u.assign(n, 0.0);
-  if (p.prune && sub.neighbors.size() == sub.size() * (sub.size() - 1)) {
+  if (p.prune && sub.complete()) {
     // The core is itself a clique: it is the answer, and the relaxation's optimum is its
     // indicator vector.
     r.vertices = keep;
@@ -305,6 +324,7 @@ CliqueResult solve_clipper(const PyramidGraph& g, int level, const std::vector<d
     r.time_ms = ms_since(t0);
     return r;
   }
+  set_weights(sub, g, level);
 
   // Start vector restricted to the kept vertices; the seeded random start if nothing is left.
   std::vector<double> u(sub.size());
@@ -326,8 +346,9 @@ CliqueResult solve_clipper(const PyramidGraph& g, int level, const std::vector<d
   std::vector<int> found;
   for (int v : local) found.push_back(sub.ids[static_cast<std::size_t>(v)]);
   // Rounding keeps round(u^T C u) entries; vertices adjacent to all of them join, largest u first.
-  if (!found.empty()) found = detail::extend_clique(csr, found, r.u, 0.0, marks);
+  if (!found.empty()) found = detail::extend_clique(view, found, r.u, 0.0, marks);
   r.vertices = found.size() >= lower.size() ? found : lower;  // never worse than the lower bound
+  r.vertices = detail::improve_by_swaps(view, std::move(r.vertices), marks, kMaxSwaps);
   r.time_ms = ms_since(t0);
   return r;
 }

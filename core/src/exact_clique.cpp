@@ -183,7 +183,7 @@ CliqueResult exact_max_clique(const PyramidGraph& g, int level, const CliquePara
     const detail::LevelCsr csr = detail::level_csr(g, level);
     const detail::CoreDecomposition cd = detail::core_decomposition(csr);
     detail::Marks marks(g.vertices);
-    std::vector<int> best = detail::greedy_clique(csr, cd, 32, marks);
+    std::vector<int> best = detail::greedy_clique(csr, cd.core, 32, marks);
     std::vector<int> local(static_cast<std::size_t>(g.vertices), -1);
     long nodes = 0;
     bool complete = true;
