@@ -1,8 +1,8 @@
 // pagor_bench: the benchmark suite. Medians over repeated runs; comparisons are ratios measured in
 // the same run. Never asserts anything about time: the tests do the correctness.
 //
-//   build/bench/pagor_bench [--kitti-root DIR] [--reps N] [--only
-//   graph|clique|gnc|verification|e2e|studio]
+//   build/bench/pagor_bench [--kitti-root DIR] [--reps N] [--write-problems DIR] [--only
+//   graph|clique|gnc|verification|e2e|studio|association|cascade]
 
 #include <Eigen/Geometry>
 #include <cmath>
@@ -12,6 +12,7 @@
 #include <random>
 #include <string>
 
+#include "association_problem.hpp"
 #include "bench_util.hpp"
 #include "pagor/densest_clique.hpp"
 #include "pagor/gnc.hpp"
@@ -270,10 +271,116 @@ void bench_studio(const std::string& root) {
         [&](Config& c) { c.landmarks.classes[0].cluster_tolerance = (++k % 2) ? 0.55 : 0.5; });
 }
 
+// Per level "size (precision/recall)" of cliques against ground-truth flags.
+std::string clique_quality(const std::vector<CliqueResult>& cliques,
+                           const std::vector<char>& inlier) {
+  std::size_t total = 0;
+  for (char f : inlier) total += f != 0;
+  std::string out;
+  for (const auto& c : cliques) {
+    std::size_t hit = 0;
+    for (int v : c.vertices) hit += inlier[static_cast<std::size_t>(v)] != 0;
+    const double precision = c.vertices.empty() ? 0.0 : double(hit) / c.vertices.size();
+    const double recall = total ? double(hit) / total : 0.0;
+    out += (out.empty() ? "" : ", ") + std::to_string(c.vertices.size()) + " (" + fmt(precision) +
+           "/" + fmt(recall) + ")";
+  }
+  return out;
+}
+
+std::string sizes(const std::vector<CliqueResult>& cliques) {
+  std::string out;
+  for (const auto& c : cliques) out += (out.empty() ? "" : ",") + std::to_string(c.vertices.size());
+  return out;
+}
+
+// Issue 11's problem set: random points, 10 % inliers, difference TRIM, 4 levels, Gaussian
+// affinity. The clique step alone (graph built once), cascaded and independent in the same run,
+// and the exact solver on all 4 levels.
+void bench_association(const std::string& write_dir) {
+  std::printf(
+      "\n## 7. Association problems (issue 11): random points in a 10 m cube, 10 %% inliers with "
+      "noise <= 0.02 m,\n##    difference TRIM, eps = 0.03/0.06/0.12/0.24 m, Gaussian affinity "
+      "sigma = eps/2; clique step, 4 levels, 1 thread\n");
+  const std::vector<int> w = {6, 10, 24, 12, 12, 8, 16, 10};
+  row({"m", "graph", "density per level [%]", "cascaded", "independent", "ratio", "exact (4 lev.)",
+       "same size"},
+      w);
+  std::vector<std::string> notes;
+  const GraphParams gp = association_graph_params();
+  for (int m : {100, 500, 1000, 2000, 5000}) {
+    AssociationParams ap;
+    ap.m = m;
+    ap.seed = static_cast<std::uint64_t>(m);
+    const AssociationProblem problem = association_problem(ap);
+    if (!write_dir.empty()) {
+      const std::string path = write_dir + "/association_m" + std::to_string(m) + ".txt";
+      if (!write_association_problem(path, problem,
+                                     "pagor_bench association problem m = " + std::to_string(m) +
+                                         ", seed " + std::to_string(ap.seed)))
+        std::printf("(could not write %s)\n", path.c_str());
+    }
+    PyramidGraph g;
+    const Timing tg = measure([&] { g = build_pyramid_graph(problem.correspondences, gp, 1); },
+                              m >= 2000 ? 3 : 5);
+    std::string density;
+    const double pairs = 0.5 * m * (m - 1.0);
+    for (std::size_t l = 0; l < g.edges_at_level.size(); ++l)
+      density += (l ? "/" : "") + fmt(100.0 * g.edges_at_level[l] / pairs, 2);
+    CliqueParams cascaded, independent, exact;
+    independent.solver = CliqueSolver::independent;
+    exact.solver = CliqueSolver::exact;
+    exact.exact_max_nodes = 1000000;
+    const int reps = m >= 2000 ? std::max(3, g_reps / 3) : g_reps;
+    std::vector<CliqueResult> a, b, e;
+    const Timing ta = measure([&] { a = solve_pyramid(g, cascaded); }, reps);
+    const Timing tb = measure([&] { b = solve_pyramid(g, independent); }, reps);
+    const Timing te = measure([&] { e = solve_pyramid(g, exact); }, m >= 2000 ? 1 : 3, 0);
+    bool optimal = true, same = true;
+    for (std::size_t l = 0; l < e.size(); ++l) {
+      optimal = optimal && e[l].optimal;
+      same = same && a[l].vertices.size() == b[l].vertices.size();
+    }
+    row({std::to_string(m), fmt(tg.median(), 1) + " ms", density, fmt(ta.median(), 3) + " ms",
+         fmt(tb.median(), 3) + " ms", fmt(tb.median() / ta.median()) + "x",
+         fmt(te.median(), 1) + (optimal ? " ms" : " ms (budget)"), same ? "yes" : "no"},
+        w);
+    notes.push_back("m = " + std::to_string(m) + ": cliques (precision/recall) cascaded " +
+                    clique_quality(a, problem.inlier) + "; independent " + sizes(b) + "; exact " +
+                    sizes(e) + (optimal ? "" : " (not proven)"));
+  }
+  for (const auto& n : notes) std::printf("  %s\n", n.c_str());
+}
+
+// The cascade on the real pairs: the clique step of the default pipeline, cascaded vs
+// independent, on the graphs of the shared KITTI pairs.
+void bench_cascade_kitti(const std::string& root) {
+  std::printf("\n## 8. Cascaded vs independent clique step on the KITTI pairs (default config)\n");
+  const std::vector<int> w = {8, 8, 12, 12, 8, 20, 20};
+  row({"pair", "m", "cascaded", "independent", "ratio", "sizes casc.", "sizes indep."}, w);
+  for (const auto& [s, t] : {std::pair{0, 20}, std::pair{20, 30}, std::pair{0, 30}}) {
+    const auto pair = kitti_pair(root, s, t);
+    if (!pair) return;
+    Pipeline p(default_config(), 1);
+    p.set_input(pair->first.cloud, pair->second.cloud);
+    p.run();
+    const PyramidGraph& g = p.graph();
+    CliqueParams cascaded = p.config().clique, independent = p.config().clique;
+    cascaded.solver = CliqueSolver::cascaded;
+    independent.solver = CliqueSolver::independent;
+    std::vector<CliqueResult> a, b;
+    const Timing ta = measure([&] { a = solve_pyramid(g, cascaded); }, g_reps);
+    const Timing tb = measure([&] { b = solve_pyramid(g, independent); }, g_reps);
+    row({std::to_string(s) + "->" + std::to_string(t), std::to_string(g.vertices),
+         fmt(ta.median(), 3) + " ms", fmt(tb.median(), 3) + " ms",
+         fmt(tb.median() / ta.median()) + "x", sizes(a), sizes(b)},
+        w);
+  }
+}
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::string root = PAGOR_DEFAULT_KITTI_DIR, only;
+  std::string root = PAGOR_DEFAULT_KITTI_DIR, only, write_dir;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i];
     if (a == "--kitti-root")
@@ -282,8 +389,12 @@ int main(int argc, char** argv) {
       g_reps = std::max(1, std::atoi(argv[i + 1]));
     else if (a == "--only")
       only = argv[i + 1];
+    else if (a == "--write-problems")
+      write_dir = argv[i + 1];
     else {
-      std::fprintf(stderr, "usage: pagor_bench [--kitti-root DIR] [--reps N] [--only SECTION]\n");
+      std::fprintf(stderr,
+                   "usage: pagor_bench [--kitti-root DIR] [--reps N] [--only SECTION] "
+                   "[--write-problems DIR]\n");
       return 2;
     }
   }
@@ -294,5 +405,7 @@ int main(int argc, char** argv) {
   if (only.empty() || only == "verification") bench_verification(root);
   if (only.empty() || only == "e2e") bench_end_to_end(root);
   if (only.empty() || only == "studio") bench_studio(root);
+  if (only.empty() || only == "association") bench_association(write_dir);
+  if (only.empty() || only == "cascade") bench_cascade_kitti(root);
   return 0;
 }

@@ -104,11 +104,15 @@ std::vector<Option> register_options() {
   o.push_back({"preset", 1, "NAME", "base configuration: default or paper (the published one)"});
   o.push_back({"json", 1, "OUT", "write the result as JSON (schema pagor.register/1)"});
   o.push_back({"threads", 1, "N", "threads for graph construction and verification (default 1)"});
+  o.push_back({"correspondences", 1, "FILE",
+               "register these correspondences (px py pz qx qy qz [weight [inlier 0/1]] per "
+               "line) instead of extracting landmarks; clouds, if given, only verify"});
   return o;
 }
 
 int run_register(const Args& args) {
   const Config config = config_from_args(args);
+  if (args.has("correspondences")) return run_register_correspondences(args, config);
   const auto chosen = pair_source_from_args(args);
   if (!chosen)
     throw UsageError(

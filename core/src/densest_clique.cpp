@@ -1,5 +1,7 @@
 #include "pagor/densest_clique.hpp"
 
+#include "clique_graph.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -20,89 +22,14 @@ struct LevelGraph {
   std::vector<int> ids;              // local -> global vertex id
   std::vector<std::size_t> offsets;  // CSR over local ids, neighbours sorted
   std::vector<int> neighbors;
-  std::vector<double> weights;
-  bool binary = true;  // all weights 1: M u = C u
+  std::vector<float> weights;  // affinity per edge (TRIM values until set_weights)
+  bool binary = true;          // all weights 1: M u = C u
 
   std::size_t size() const { return ids.size(); }
-  bool adjacent(int a, int b) const {
-    const auto first =
-        neighbors.begin() + static_cast<std::ptrdiff_t>(offsets[static_cast<std::size_t>(a)]);
-    const auto last =
-        neighbors.begin() + static_cast<std::ptrdiff_t>(offsets[static_cast<std::size_t>(a) + 1]);
-    return std::binary_search(first, last, b);
-  }
+  bool complete() const { return neighbors.size() == size() * (size() - 1); }
 };
 
-std::vector<int> degrees(const PyramidGraph& g, int level) {
-  std::vector<int> deg(static_cast<std::size_t>(g.vertices), 0);
-  for (int v = 0; v < g.vertices; ++v)
-    for (auto e = g.offsets[static_cast<std::size_t>(v)];
-         e < g.offsets[static_cast<std::size_t>(v) + 1]; ++e)
-      deg[static_cast<std::size_t>(v)] += g.level[static_cast<std::size_t>(e)] <= level;
-  return deg;
-}
-
-// A clique grown greedily (by degree) from each of the highest-degree vertices: a lower bound.
-std::vector<int> greedy_clique(const PyramidGraph& g, int level, const std::vector<int>& deg) {
-  constexpr int kStarts = 32;  // highest-degree vertices to grow from
-  std::vector<int> order(static_cast<std::size_t>(g.vertices));
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
-    return deg[static_cast<std::size_t>(a)] > deg[static_cast<std::size_t>(b)];
-  });
-  std::vector<int> best;
-  for (int k = 0; k < std::min(kStarts, g.vertices); ++k) {
-    const int v = order[static_cast<std::size_t>(k)];
-    if (static_cast<std::size_t>(deg[static_cast<std::size_t>(v)]) + 1 <= best.size()) break;
-    std::vector<int> cand;
-    for (auto e = g.offsets[static_cast<std::size_t>(v)];
-         e < g.offsets[static_cast<std::size_t>(v) + 1]; ++e)
-      if (g.level[static_cast<std::size_t>(e)] <= level)
-        cand.push_back(g.neighbors[static_cast<std::size_t>(e)]);
-    std::stable_sort(cand.begin(), cand.end(), [&](int a, int b) {
-      return deg[static_cast<std::size_t>(a)] > deg[static_cast<std::size_t>(b)];
-    });
-    std::vector<int> clique{v};
-    for (int c : cand) {
-      bool all = true;
-      for (int w : clique) all = all && g.adjacent(c, w, level);
-      if (all) clique.push_back(c);
-    }
-    if (clique.size() > best.size()) best = clique;
-  }
-  std::sort(best.begin(), best.end());
-  return best;
-}
-
-// Vertices of the (min_degree)-core: what is left after repeatedly removing vertices with fewer
-// than `min_degree` neighbours. A clique of size s lies in the (s-1)-core.
-std::vector<int> core(const PyramidGraph& g, int level, std::vector<int> deg, int min_degree) {
-  std::vector<char> removed(deg.size(), 0);
-  std::vector<int> stack;
-  for (int v = 0; v < g.vertices; ++v)
-    if (deg[static_cast<std::size_t>(v)] < min_degree) {
-      removed[static_cast<std::size_t>(v)] = 1;
-      stack.push_back(v);
-    }
-  while (!stack.empty()) {
-    const int v = stack.back();
-    stack.pop_back();
-    for (auto e = g.offsets[static_cast<std::size_t>(v)];
-         e < g.offsets[static_cast<std::size_t>(v) + 1]; ++e) {
-      if (g.level[static_cast<std::size_t>(e)] > level) continue;
-      const auto w = static_cast<std::size_t>(g.neighbors[static_cast<std::size_t>(e)]);
-      if (!removed[w] && --deg[w] < min_degree) {
-        removed[w] = 1;
-        stack.push_back(static_cast<int>(w));
-      }
-    }
-  }
-  std::vector<int> keep;
-  for (int v = 0; v < g.vertices; ++v)
-    if (!removed[static_cast<std::size_t>(v)]) keep.push_back(v);
-  return keep;
-}
-
+// The subgraph of level `level` induced by `keep` (sorted), with each edge's TRIM value.
 LevelGraph induce(const PyramidGraph& g, int level, const std::vector<int>& keep) {
   LevelGraph s;
   s.ids = keep;
@@ -111,60 +38,82 @@ LevelGraph induce(const PyramidGraph& g, int level, const std::vector<int>& keep
   for (std::size_t i = 0; i < keep.size(); ++i)
     local[static_cast<std::size_t>(keep[i])] = static_cast<int>(i);
   s.offsets.assign(1, 0);
+  std::size_t rows = 0;  // an upper bound of the edges kept
+  for (int v : keep)
+    rows += static_cast<std::size_t>(g.offsets[static_cast<std::size_t>(v) + 1] -
+                                     g.offsets[static_cast<std::size_t>(v)]);
+  s.neighbors.reserve(rows);
+  if (!s.binary) s.weights.reserve(rows);
   for (int v : keep) {
-    for (auto e = g.offsets[static_cast<std::size_t>(v)];
-         e < g.offsets[static_cast<std::size_t>(v) + 1]; ++e) {
-      const auto se = static_cast<std::size_t>(e);
-      const int w = local[static_cast<std::size_t>(g.neighbors[se])];
-      if (g.level[se] > level || w < 0) continue;
+    const auto last = static_cast<std::size_t>(g.offsets[static_cast<std::size_t>(v) + 1]);
+    for (auto e = static_cast<std::size_t>(g.offsets[static_cast<std::size_t>(v)]); e < last; ++e) {
+      const int w = local[static_cast<std::size_t>(g.neighbors[e])];
+      if (g.level[e] > level || w < 0) continue;
       s.neighbors.push_back(w);  // global ids are sorted, so local ids are too
-      s.weights.push_back(g.weight(se, level));
+      if (!s.binary) s.weights.push_back(g.trim[e]);
     }
     s.offsets.push_back(s.neighbors.size());
   }
   return s;
 }
 
+// TRIM values -> Gaussian affinities of level `level` (as PyramidGraph::weight).
+void set_weights(LevelGraph& s, const PyramidGraph& g, int level) {
+  if (s.binary) return;
+  const double sigma = g.sigma_ratio * g.thresholds[static_cast<std::size_t>(level)];
+  const double scale = -1.0 / (2 * sigma * sigma);
+  for (float& w : s.weights) w = static_cast<float>(std::exp(scale * double(w) * w));
+}
+
 // Products the relaxation needs: Mu = M u (affinities, unit diagonal), Cu = C u (adjacency, unit
-// diagonal). When u has few non-zeros (late in the solve, and after a warm start), the products
-// are scattered from the support instead of gathered over every edge (the graph is symmetric).
+// diagonal), both in one pass over the edges. When u has few non-zeros (late in the solve, and
+// after a warm start), they are scattered from the support instead of gathered over every edge
+// (the graph is symmetric).
 void products(const LevelGraph& g, const std::vector<double>& u, std::vector<double>& Mu,
               std::vector<double>& Cu) {
+  const std::size_t n = g.size();
   std::size_t support = 0;
   for (double x : u) support += x != 0.0;
-  const bool scatter = support * 4 < g.size();
-  if (scatter) {
+  const int* nb = g.neighbors.data();
+  const float* wt = g.weights.data();
+  if (support * 4 < n) {
     std::fill(Cu.begin(), Cu.end(), 0.0);
     if (!g.binary) std::fill(Mu.begin(), Mu.end(), 0.0);
-    for (std::size_t v = 0; v < g.size(); ++v) {
+    for (std::size_t v = 0; v < n; ++v) {
       const double uv = u[v];
       if (uv == 0.0) continue;
       Cu[v] += uv;
-      if (!g.binary) Mu[v] += uv;
-      for (std::size_t e = g.offsets[v]; e < g.offsets[v + 1]; ++e) {
-        const auto w = static_cast<std::size_t>(g.neighbors[e]);
-        Cu[w] += uv;
-        if (!g.binary) Mu[w] += g.weights[e] * uv;
+      if (g.binary) {
+        for (std::size_t e = g.offsets[v]; e < g.offsets[v + 1]; ++e)
+          Cu[static_cast<std::size_t>(nb[e])] += uv;
+      } else {
+        Mu[v] += uv;
+        for (std::size_t e = g.offsets[v]; e < g.offsets[v + 1]; ++e) {
+          const auto w = static_cast<std::size_t>(nb[e]);
+          Cu[w] += uv;
+          Mu[w] += double(wt[e]) * uv;
+        }
       }
     }
     if (g.binary) Mu = Cu;
     return;
   }
-  for (std::size_t v = 0; v < g.size(); ++v) {
+  for (std::size_t v = 0; v < n; ++v) {
     double c = u[v];
-    for (std::size_t e = g.offsets[v]; e < g.offsets[v + 1]; ++e)
-      c += u[static_cast<std::size_t>(g.neighbors[e])];
-    Cu[v] = c;
-  }
-  if (g.binary) {
-    Mu = Cu;
-    return;
-  }
-  for (std::size_t v = 0; v < g.size(); ++v) {
-    double m = u[v];
-    for (std::size_t e = g.offsets[v]; e < g.offsets[v + 1]; ++e)
-      m += g.weights[e] * u[static_cast<std::size_t>(g.neighbors[e])];
-    Mu[v] = m;
+    if (g.binary) {
+      for (std::size_t e = g.offsets[v]; e < g.offsets[v + 1]; ++e)
+        c += u[static_cast<std::size_t>(nb[e])];
+      Cu[v] = Mu[v] = c;
+    } else {
+      double m = u[v];
+      for (std::size_t e = g.offsets[v]; e < g.offsets[v + 1]; ++e) {
+        const double x = u[static_cast<std::size_t>(nb[e])];
+        c += x;
+        m += double(wt[e]) * x;
+      }
+      Cu[v] = c;
+      Mu[v] = m;
+    }
   }
 }
 
@@ -200,23 +149,36 @@ std::vector<int> round_to_clique(const LevelGraph& g, const std::vector<double>&
                       return ua > ub || (ua == ub && a < b);
                     });
   std::vector<int> clique(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(k));
+  // in[v]: position in `clique` + 1, 0 outside. Members' non-neighbours among members, by
+  // walking each member's neighbour list once.
+  std::vector<int> in(u.size(), 0);
   while (clique.size() > 1) {
+    for (std::size_t a = 0; a < clique.size(); ++a)
+      in[static_cast<std::size_t>(clique[a])] = static_cast<int>(a) + 1;
     std::size_t worst = 0;
     int worst_missing = 0;
     for (std::size_t a = 0; a < clique.size(); ++a) {
-      int missing = 0;
-      for (std::size_t b = 0; b < clique.size(); ++b)
-        if (a != b && !g.adjacent(clique[a], clique[b])) ++missing;
+      const auto v = static_cast<std::size_t>(clique[a]);
+      int inside = 0;
+      for (std::size_t e = g.offsets[v]; e < g.offsets[v + 1]; ++e)
+        inside += in[static_cast<std::size_t>(g.neighbors[e])] != 0;
+      const int missing = static_cast<int>(clique.size()) - 1 - inside;
       if (missing > worst_missing) {
         worst_missing = missing;
         worst = a;
       }
     }
+    for (int v : clique) in[static_cast<std::size_t>(v)] = 0;
     if (worst_missing == 0) break;
     clique.erase(clique.begin() + static_cast<std::ptrdiff_t>(worst));
   }
   return clique;
 }
+
+// Greedy cliques grown for the lower bound of the pruning (from the highest cores).
+constexpr int kGreedyStarts = 4;
+// Improving swaps (one member out, two vertices in) tried on the rounded clique.
+constexpr int kMaxSwaps = 64;
 
 // Largest gradient step tried; beyond it a step only renormalises max(gradient, 0).
 constexpr double kMaxStep = 1e6;
@@ -332,21 +294,37 @@ CliqueResult solve_clipper(const PyramidGraph& g, int level, const std::vector<d
   r.level = level;
   if (g.vertices == 0) return r;
   const std::size_t n = static_cast<std::size_t>(g.vertices);
+  const detail::PyramidLevel view{g, level};
+  detail::Marks marks(g.vertices);
 
   // Which vertices the relaxation works on: all, or the core that can hold a clique at least as
-  // large as a greedy one.
-  const std::vector<int> deg = degrees(g, level);
-  std::vector<int> greedy, keep;
+  // large as a lower bound: the known clique grown to a maximal one, else greedy cliques.
+  std::vector<int> lower, keep;
   if (p.prune) {
-    greedy = greedy_clique(g, level, deg);
-    if (known_clique.size() > greedy.size() && is_clique(g, level, known_clique))
-      greedy = known_clique;
-    keep = core(g, level, deg, static_cast<int>(greedy.size()) - 1);
+    const std::vector<int> deg = detail::level_degrees(g, level);
+    // The known clique grown to a maximal one, then greedy cliques from the highest degrees that
+    // are not in it (a cheap search when the known clique is already large).
+    if (!known_clique.empty() && detail::is_clique(view, known_clique, marks))
+      lower = detail::extend_clique(view, known_clique, deg, static_cast<int>(known_clique.size()),
+                                    marks);
+    lower = detail::greedy_clique(view, deg, kGreedyStarts, marks, std::move(lower));
+    keep = detail::k_core(view, deg, static_cast<int>(lower.size()) - 1,
+                          [&](int v) { return view.row_length(v); });
   } else {
     keep.resize(n);
     std::iota(keep.begin(), keep.end(), 0);
   }
-  const LevelGraph sub = induce(g, level, keep);
+  LevelGraph sub = induce(g, level, keep);
+  r.u.assign(n, 0.0);
+  if (p.prune && sub.complete()) {
+    // The core is itself a clique: it is the answer, and the relaxation's optimum is its
+    // indicator vector.
+    r.vertices = keep;
+    for (int v : keep) r.u[static_cast<std::size_t>(v)] = 1.0 / std::sqrt(double(keep.size()));
+    r.time_ms = ms_since(t0);
+    return r;
+  }
+  set_weights(sub, g, level);
 
   // Start vector restricted to the kept vertices; the seeded random start if nothing is left.
   std::vector<double> u(sub.size());
@@ -364,85 +342,13 @@ CliqueResult solve_clipper(const PyramidGraph& g, int level, const std::vector<d
   }
 
   const std::vector<int> local = sub.size() > 0 ? relax(sub, u, d0, p, r) : std::vector<int>{};
-  for (int v : local) r.vertices.push_back(sub.ids[static_cast<std::size_t>(v)]);
-  std::sort(r.vertices.begin(), r.vertices.end());
-  if (greedy.size() > r.vertices.size()) r.vertices = greedy;  // never worse than the lower bound
-  r.u.assign(n, 0.0);
   for (std::size_t i = 0; i < sub.size(); ++i) r.u[static_cast<std::size_t>(sub.ids[i])] = u[i];
-  r.time_ms = ms_since(t0);
-  return r;
-}
-
-namespace {
-
-// Branch and bound for the maximum clique with a greedy colouring bound (Tomita-style).
-struct ExactSearch {
-  const PyramidGraph& g;
-  int level;
-  long budget;
-  long nodes = 0;
-  std::vector<int> best, current;
-
-  void expand(std::vector<int> candidates) {
-    if (++nodes > budget) return;
-    // Greedy colouring of the candidates: colour classes of mutually non-adjacent vertices.
-    std::vector<int> order, colour;
-    std::vector<std::vector<int>> classes;
-    for (int v : candidates) {
-      std::size_t k = 0;
-      for (; k < classes.size(); ++k) {
-        bool fits = true;
-        for (int w : classes[k]) fits = fits && !g.adjacent(v, w, level);
-        if (fits) break;
-      }
-      if (k == classes.size()) classes.emplace_back();
-      classes[k].push_back(v);
-    }
-    for (std::size_t k = 0; k < classes.size(); ++k)
-      for (int v : classes[k]) {
-        order.push_back(v);
-        colour.push_back(static_cast<int>(k) + 1);
-      }
-    // Take vertices from the highest colour down; colour + |current| bounds any clique found.
-    for (int idx = static_cast<int>(order.size()) - 1; idx >= 0; --idx) {
-      if (current.size() + static_cast<std::size_t>(colour[static_cast<std::size_t>(idx)]) <=
-          best.size())
-        return;
-      const int v = order[static_cast<std::size_t>(idx)];
-      current.push_back(v);
-      std::vector<int> next;
-      for (int j = 0; j < idx; ++j)
-        if (g.adjacent(v, order[static_cast<std::size_t>(j)], level))
-          next.push_back(order[static_cast<std::size_t>(j)]);
-      if (next.empty()) {
-        if (current.size() > best.size()) best = current;
-      } else {
-        expand(std::move(next));
-      }
-      current.pop_back();
-      if (nodes > budget) return;
-    }
-  }
-};
-
-}  // namespace
-
-CliqueResult exact_max_clique(const PyramidGraph& g, int level, const CliqueParams& p) {
-  const auto t0 = Clock::now();
-  ExactSearch s{g, level, p.exact_max_nodes, 0, {}, {}};
-  std::vector<int> all(static_cast<std::size_t>(g.vertices));
-  std::iota(all.begin(), all.end(), 0);
-  // Higher degree first tends to find large cliques early.
-  const std::vector<int> degree = degrees(g, level);
-  std::stable_sort(all.begin(), all.end(), [&](int a, int b) {
-    return degree[static_cast<std::size_t>(a)] < degree[static_cast<std::size_t>(b)];
-  });
-  if (!all.empty()) s.expand(all);
-  CliqueResult r;
-  r.level = level;
-  r.vertices = s.best;
-  std::sort(r.vertices.begin(), r.vertices.end());
-  r.optimal = s.nodes <= s.budget;
+  std::vector<int> found;
+  for (int v : local) found.push_back(sub.ids[static_cast<std::size_t>(v)]);
+  // Rounding keeps round(u^T C u) entries; vertices adjacent to all of them join, largest u first.
+  if (!found.empty()) found = detail::extend_clique(view, found, r.u, 0.0, marks);
+  r.vertices = found.size() >= lower.size() ? found : lower;  // never worse than the lower bound
+  r.vertices = detail::improve_by_swaps(view, std::move(r.vertices), marks, kMaxSwaps);
   r.time_ms = ms_since(t0);
   return r;
 }

@@ -5,7 +5,8 @@
 /// by projected gradient ascent with backtracking, raising the penalty d until the support of u is
 /// a clique, then keeping the round(u^T C u) largest entries. Cascaded (Alg. 1 of the paper): the
 /// sparsest level is solved first and each next level starts from the previous solution.
-/// Also an exact maximum clique by branch and bound, for small graphs and as a test reference.
+/// The rounded clique is grown to a maximal one and improved by swaps (one member out, two
+/// vertices in). Also an exact maximum clique by branch and bound (exact_clique.cpp).
 
 #include <vector>
 
@@ -28,9 +29,10 @@ struct CliqueResult {
 
 /// CLIPPER relaxation on level `level` from `u0` (any non-negative vector of the graph's size; it
 /// is normalised; an all-zero or empty one means the seeded random start). With `params.prune`,
-/// the relaxation runs on the k-core that can hold a clique as large as the larger of a greedy
-/// clique and `known_clique` (if it is a clique on this level), and the answer is never smaller
-/// than that clique.
+/// the relaxation runs on the k-core that can hold a clique as large as a lower bound —
+/// `known_clique` (if it is a clique on this level) grown to a maximal clique, or greedy cliques
+/// from the highest degrees if they are larger — and the answer is never smaller than that
+/// bound; when that core is itself a clique it is the answer and no gradient step is taken.
 /// `d0` is the initial penalty (a warm start may carry part of the previous level's).
 CliqueResult solve_clipper(const PyramidGraph& graph, int level, const std::vector<double>& u0,
                            const CliqueParams& params, const std::vector<int>& known_clique = {},
@@ -39,7 +41,9 @@ CliqueResult solve_clipper(const PyramidGraph& graph, int level, const std::vect
 /// The seeded random start of the relaxation (uniform in (0, 1], normalised).
 std::vector<double> random_start(int size, std::uint64_t seed);
 
-/// Exact maximum clique on level `level` (branch and bound with a greedy-colouring bound).
+/// Exact maximum clique on level `level`: one subproblem per vertex of the core that can hold a
+/// larger clique than the best so far (the vertex and its later neighbours in the degeneracy
+/// order), each solved by branch and bound on bitsets with greedy-colouring bounds.
 /// Stops after `params.exact_max_nodes` search nodes with the best clique so far and
 /// `optimal = false`.
 CliqueResult exact_max_clique(const PyramidGraph& graph, int level, const CliqueParams& params);

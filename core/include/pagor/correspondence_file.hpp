@@ -1,0 +1,49 @@
+#pragma once
+/// \file correspondence_file.hpp
+/// Correspondences from any matcher, as text: one correspondence per line,
+///   px py pz qx qy qz [weight [inlier]]
+/// (source point, target point [m], an optional non-negative weight, an optional ground-truth
+/// inlier flag 0 or 1), separated by blanks or commas. `#` starts a comment; blank lines are
+/// skipped. Every line has the same number of columns (6, 7 or 8). This is the input of
+/// `pagor register --correspondences` and the format the benchmark's association problems are
+/// written in.
+
+#include <string>
+#include <vector>
+
+#include "pagor/types.hpp"
+
+namespace pagor {
+
+/// What a correspondences file holds.
+struct CorrespondenceFile {
+  /// One per data line, in file order. Each has its own source and target landmark index (its
+  /// position), class 0, and `score` = its weight (1 without a weight column).
+  std::vector<Correspondence> items;
+  std::vector<double> weights;  ///< per item; empty without a weight column
+  std::vector<char> inlier;     ///< ground-truth flag per item; empty without a flag column
+  std::vector<int> lines;       ///< 1-based line number of each item in the file
+};
+
+/// Parses the text of a correspondences file. Throws InputError naming `origin` and the line
+/// (`origin:LINE: ...`) for a malformed number, a wrong column count, a negative or non-finite
+/// weight or a flag other than 0/1, and when there is no correspondence at all.
+CorrespondenceFile parse_correspondence_file(const std::string& text,
+                                             const std::string& origin = "correspondences");
+
+/// Reads and parses a file. Throws InputError (unreadable, or as above).
+CorrespondenceFile read_correspondence_file(const std::string& path);
+
+/// Precision and recall of a set of correspondence indices against ground-truth flags.
+struct InlierQuality {
+  std::size_t selected = 0;      ///< indices given
+  std::size_t true_inliers = 0;  ///< of those, flagged inliers
+  std::size_t inliers = 0;       ///< flagged inliers in total
+  double precision = 0.0;        ///< true_inliers / selected (0 when nothing is selected)
+  double recall = 0.0;           ///< true_inliers / inliers (0 when there are no inliers)
+};
+
+/// Precision/recall of `indices` (into `inlier`). Indices out of range throw std::out_of_range.
+InlierQuality inlier_quality(const std::vector<int>& indices, const std::vector<char>& inlier);
+
+}  // namespace pagor

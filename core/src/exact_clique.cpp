@@ -1,0 +1,208 @@
+// Exact maximum clique: branch and bound on bitsets with greedy-colouring bounds (as in MCQ/MCS
+// and San Segundo's BBMC), over subproblems taken in a core-based order (as in PMC).
+//
+// A clique larger than the best one so far lies in the |best|-core, and its vertex that comes
+// first in the degeneracy order has all other members among its later neighbours. So each vertex
+// v of that core is one subproblem: v and its later neighbours, pruned to the local core that can
+// hold a larger clique, solved exactly on a bit-matrix. The degeneracy bounds each subproblem's
+// size, which keeps the bit-matrices small even on large sparse graphs.
+
+#include <algorithm>
+#include <chrono>
+#include <cstdint>
+
+#include "clique_graph.hpp"
+#include "pagor/densest_clique.hpp"
+
+namespace pagor {
+namespace {
+
+using Word = std::uint64_t;
+
+int words_for(int n) {
+  return (n + 63) / 64;
+}
+
+// One subproblem: a local graph as rows of bits, searched by colouring bounds.
+class BitSearch {
+ public:
+  BitSearch(int n, long budget, long& nodes)
+      : n_(n), w_(words_for(n)), budget_(budget), nodes_(nodes) {
+    rows_.assign(static_cast<std::size_t>(n_) * static_cast<std::size_t>(w_), 0);
+  }
+  void connect(int a, int b) {
+    row(a)[b >> 6] |= Word(1) << (b & 63);
+    row(b)[a >> 6] |= Word(1) << (a & 63);
+  }
+  // Largest clique of the local graph if it has more than `lower` vertices; else empty.
+  // Sets `complete` false when the node budget ran out.
+  std::vector<int> solve(int lower, bool& complete) {
+    best_size_ = lower;
+    best_.clear();
+    current_.clear();
+    std::vector<Word> all(static_cast<std::size_t>(w_), 0);
+    for (int v = 0; v < n_; ++v) all[static_cast<std::size_t>(v >> 6)] |= Word(1) << (v & 63);
+    levels_.assign(static_cast<std::size_t>(n_) + 2, {});
+    expand(all, 0);
+    complete = complete && nodes_ <= budget_;
+    return best_;
+  }
+
+ private:
+  Word* row(int v) {
+    return rows_.data() + static_cast<std::size_t>(v) * static_cast<std::size_t>(w_);
+  }
+
+  struct Level {
+    std::vector<Word> P, U, Q;
+    std::vector<int> order, colour;
+  };
+
+  // Candidates P (by value in levels_[depth]); current_ is the clique so far.
+  void expand(const std::vector<Word>& P_in, int depth) {
+    if (++nodes_ > budget_) return;
+    Level& L = levels_[static_cast<std::size_t>(depth)];
+    L.P = P_in;
+    L.U = P_in;
+    L.order.clear();
+    L.colour.clear();
+    // Greedy colouring in vertex order; only colours that could beat the best are branched on.
+    const int need = best_size_ - static_cast<int>(current_.size());  // colours needed to beat
+    int k = 0;
+    for (bool any = true; any;) {
+      any = false;
+      ++k;
+      L.Q = L.U;
+      for (int i = 0; i < w_; ++i) {
+        while (L.Q[static_cast<std::size_t>(i)]) {
+          const int v = i * 64 + __builtin_ctzll(L.Q[static_cast<std::size_t>(i)]);
+          any = true;
+          L.U[static_cast<std::size_t>(i)] &= ~(Word(1) << (v & 63));
+          const Word* nv = row(v);
+          for (int j = i; j < w_; ++j) L.Q[static_cast<std::size_t>(j)] &= ~nv[j];
+          L.Q[static_cast<std::size_t>(i)] &= ~(Word(1) << (v & 63));
+          if (k > need) {
+            L.order.push_back(v);
+            L.colour.push_back(k);
+          }
+        }
+      }
+    }
+    std::vector<Word> next(static_cast<std::size_t>(w_));
+    for (int idx = static_cast<int>(L.order.size()) - 1; idx >= 0; --idx) {
+      if (static_cast<int>(current_.size()) + L.colour[static_cast<std::size_t>(idx)] <= best_size_)
+        return;
+      const int v = L.order[static_cast<std::size_t>(idx)];
+      const Word* nv = row(v);
+      bool empty = true;
+      for (int j = 0; j < w_; ++j) {
+        next[static_cast<std::size_t>(j)] = L.P[static_cast<std::size_t>(j)] & nv[j];
+        empty = empty && next[static_cast<std::size_t>(j)] == 0;
+      }
+      current_.push_back(v);
+      if (empty) {
+        if (static_cast<int>(current_.size()) > best_size_) {
+          best_size_ = static_cast<int>(current_.size());
+          best_ = current_;
+        }
+      } else {
+        expand(next, depth + 1);
+      }
+      current_.pop_back();
+      if (nodes_ > budget_) return;
+      L.P[static_cast<std::size_t>(v >> 6)] &= ~(Word(1) << (v & 63));
+    }
+  }
+
+  int n_, w_;
+  long budget_;
+  long& nodes_;
+  int best_size_ = 0;
+  std::vector<int> best_, current_;
+  std::vector<Word> rows_;
+  std::vector<Level> levels_;
+};
+
+// The subproblem of v: v's later neighbours in the degeneracy order that could be in a clique
+// larger than `best`, pruned to the local (|best| - 1)-core. Returns the clique found (with v),
+// or empty.
+std::vector<int> solve_subproblem(const detail::LevelCsr& g, const detail::CoreDecomposition& cd,
+                                  int v, int best, long budget, long& nodes, bool& complete,
+                                  std::vector<int>& local) {
+  std::vector<int> cand;
+  const int pv = cd.position[static_cast<std::size_t>(v)];
+  for (const int* w = g.begin(v); w != g.end(v); ++w)
+    if (cd.position[static_cast<std::size_t>(*w)] > pv &&
+        cd.core[static_cast<std::size_t>(*w)] >= best)
+      cand.push_back(*w);
+  // A clique with v larger than `best` needs `best` of these, each adjacent to best - 1 others.
+  for (std::size_t before = 0; before != cand.size() && static_cast<int>(cand.size()) >= best;) {
+    before = cand.size();
+    for (std::size_t i = 0; i < cand.size(); ++i) local[static_cast<std::size_t>(cand[i])] = 1;
+    std::vector<int> kept;
+    for (int a : cand) {
+      int d = 0;
+      for (const int* w = g.begin(a); w != g.end(a); ++w)
+        d += local[static_cast<std::size_t>(*w)] == 1;
+      if (d >= best - 1) kept.push_back(a);
+    }
+    for (int a : cand) local[static_cast<std::size_t>(a)] = -1;
+    cand.swap(kept);
+  }
+  if (static_cast<int>(cand.size()) < best) return {};
+  // Local order: by core number, highest first (vertices coloured first get the low colours).
+  std::stable_sort(cand.begin(), cand.end(), [&](int a, int b) {
+    return cd.core[static_cast<std::size_t>(a)] > cd.core[static_cast<std::size_t>(b)];
+  });
+  const int n = static_cast<int>(cand.size());
+  for (int i = 0; i < n; ++i)
+    local[static_cast<std::size_t>(cand[static_cast<std::size_t>(i)])] = i;
+  BitSearch search(n, budget, nodes);
+  for (int i = 0; i < n; ++i)
+    for (const int* w = g.begin(cand[static_cast<std::size_t>(i)]);
+         w != g.end(cand[static_cast<std::size_t>(i)]); ++w) {
+      const int j = local[static_cast<std::size_t>(*w)];
+      if (j > i) search.connect(i, j);
+    }
+  for (int a : cand) local[static_cast<std::size_t>(a)] = -1;
+  const std::vector<int> found = search.solve(best - 1, complete);  // with v: > best
+  if (found.empty()) return {};
+  std::vector<int> clique{v};
+  for (int i : found) clique.push_back(cand[static_cast<std::size_t>(i)]);
+  return clique;
+}
+
+}  // namespace
+
+CliqueResult exact_max_clique(const PyramidGraph& g, int level, const CliqueParams& p) {
+  const auto t0 = std::chrono::steady_clock::now();
+  CliqueResult r;
+  r.level = level;
+  r.optimal = true;
+  if (g.vertices > 0) {
+    const detail::LevelCsr csr = detail::level_csr(g, level);
+    const detail::CoreDecomposition cd = detail::core_decomposition(csr);
+    detail::Marks marks(g.vertices);
+    std::vector<int> best = detail::greedy_clique(csr, cd.core, 32, marks);
+    std::vector<int> local(static_cast<std::size_t>(g.vertices), -1);
+    long nodes = 0;
+    bool complete = true;
+    // From the end of the degeneracy order: the densest part first, where large cliques are.
+    for (int i = g.vertices - 1; i >= 0 && complete; --i) {
+      const int v = cd.order[static_cast<std::size_t>(i)];
+      const int size = static_cast<int>(best.size());
+      if (cd.core[static_cast<std::size_t>(v)] < size) continue;  // in no clique larger than best
+      std::vector<int> c =
+          solve_subproblem(csr, cd, v, size, p.exact_max_nodes, nodes, complete, local);
+      if (c.size() > best.size()) best = std::move(c);
+    }
+    std::sort(best.begin(), best.end());
+    r.vertices = std::move(best);
+    r.optimal = complete;
+  }
+  r.time_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  return r;
+}
+
+}  // namespace pagor

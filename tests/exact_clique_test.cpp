@@ -1,0 +1,192 @@
+#include <algorithm>
+#include <catch2/catch.hpp>
+#include <numeric>
+#include <random>
+
+#include "clique_graph.hpp"
+#include "clique_reference.hpp"
+#include "pagor/densest_clique.hpp"
+
+using namespace pagor;
+using test::random_graph;
+
+namespace {
+
+// Core numbers from the definition: the largest k such that v is in the k-core, each k-core
+// found by peeling vertices of degree < k until none is left.
+std::vector<int> core_numbers_by_definition(const detail::LevelCsr& g) {
+  const int n = g.size();
+  std::vector<int> core(static_cast<std::size_t>(n), 0);
+  for (int k = 1; k <= n; ++k) {
+    std::vector<char> in(static_cast<std::size_t>(n), 1);
+    for (bool changed = true; changed;) {
+      changed = false;
+      for (int v = 0; v < n; ++v) {
+        if (!in[static_cast<std::size_t>(v)]) continue;
+        int d = 0;
+        for (const int* w = g.begin(v); w != g.end(v); ++w) d += in[static_cast<std::size_t>(*w)];
+        if (d < k) {
+          in[static_cast<std::size_t>(v)] = 0;
+          changed = true;
+        }
+      }
+    }
+    bool any = false;
+    for (int v = 0; v < n; ++v)
+      if (in[static_cast<std::size_t>(v)]) {
+        core[static_cast<std::size_t>(v)] = k;
+        any = true;
+      }
+    if (!any) break;
+  }
+  return core;
+}
+
+}  // namespace
+
+TEST_CASE("core numbers, degeneracy order and k-cores agree with their definitions") {
+  for (std::uint64_t seed = 0; seed < 10; ++seed) {
+    const PyramidGraph g =
+        random_graph(70, 0.04 * static_cast<double>(seed % 5 + 1), static_cast<int>(seed), seed);
+    const detail::LevelCsr csr = detail::level_csr(g, 0);
+    const detail::CoreDecomposition cd = detail::core_decomposition(csr);
+    const std::vector<int> expected = core_numbers_by_definition(csr);
+    CHECK(cd.core == expected);
+    CHECK(cd.degeneracy == *std::max_element(expected.begin(), expected.end()));
+    // In the degeneracy order each vertex has at most `degeneracy` later neighbours, and the
+    // position map is the order's inverse.
+    for (int i = 0; i < csr.size(); ++i) {
+      const int v = cd.order[static_cast<std::size_t>(i)];
+      CHECK(cd.position[static_cast<std::size_t>(v)] == i);
+      int later = 0;
+      for (const int* w = csr.begin(v); w != csr.end(v); ++w)
+        later += cd.position[static_cast<std::size_t>(*w)] > i;
+      CHECK(later <= cd.core[static_cast<std::size_t>(v)]);
+    }
+    // k-cores peeled on the CSR and on the pyramid graph read in place.
+    std::vector<int> deg;
+    for (int v = 0; v < csr.size(); ++v) deg.push_back(csr.degree(v));
+    CHECK(detail::level_degrees(g, 0) == deg);
+    for (int k : {1, 2, 3, 5}) {
+      std::vector<int> by_core;
+      for (int v = 0; v < csr.size(); ++v)
+        if (expected[static_cast<std::size_t>(v)] >= k) by_core.push_back(v);
+      CHECK(detail::k_core(csr, deg, k) == by_core);
+      CHECK(detail::k_core(detail::PyramidLevel{g, 0}, deg, k) == by_core);
+      // Recounting the survivors first (when their rows are the shorter walk) gives the same.
+      CHECK(detail::k_core(csr, deg, k, [](int) { return std::size_t{1}; }) == by_core);
+      CHECK(detail::k_core(csr, deg, k, [&](int v) {
+              return std::size_t(deg[std::size_t(v)] < k ? 100 : 1);
+            }) == by_core);
+    }
+  }
+}
+
+TEST_CASE("a level's CSR holds exactly the edges of that level") {
+  const auto c = test::association(150, 15, 3);
+  const PyramidGraph g = build_pyramid_graph(c, test::association_params());
+  for (int l = 0; l < g.levels(); ++l) {
+    const detail::LevelCsr csr = detail::level_csr(g, l);
+    CHECK(csr.neighbors.size() == 2 * g.edges_at_level[static_cast<std::size_t>(l)]);
+    for (int v = 0; v < g.vertices; ++v)
+      for (const int* w = csr.begin(v); w != csr.end(v); ++w) CHECK(g.adjacent(v, *w, l));
+  }
+}
+
+TEST_CASE("greedy and extended cliques are maximal cliques") {
+  for (std::uint64_t seed = 0; seed < 8; ++seed) {
+    const PyramidGraph g = random_graph(120, 0.2, 10, seed);
+    const detail::LevelCsr csr = detail::level_csr(g, 0);
+    const detail::CoreDecomposition cd = detail::core_decomposition(csr);
+    detail::Marks marks(g.vertices);
+    const detail::PyramidLevel view{g, 0};
+    const std::vector<int> one{static_cast<int>(seed)};
+    const std::vector<std::vector<int>> cliques = {
+        detail::greedy_clique(csr, cd.core, 8, marks),
+        detail::greedy_clique(view, detail::level_degrees(g, 0), 8, marks),
+        detail::extend_clique(csr, one, cd.core, 0, marks),
+        detail::extend_clique(view, one, cd.core, 0, marks)};
+    for (const auto& c : cliques) {
+      REQUIRE(is_clique(g, 0, c));
+      CHECK(detail::is_clique(csr, c, marks));
+      CHECK(detail::is_clique(view, c, marks));
+      CHECK(std::is_sorted(c.begin(), c.end()));
+      for (int v = 0; v < g.vertices; ++v) {  // nothing can join
+        if (std::binary_search(c.begin(), c.end(), v)) continue;
+        std::vector<int> bigger = c;
+        bigger.push_back(v);
+        std::sort(bigger.begin(), bigger.end());
+        CHECK_FALSE(is_clique(g, 0, bigger));
+      }
+    }
+  }
+}
+
+TEST_CASE("the exact solver agrees with brute force on small graphs") {
+  CliqueParams cp;
+  for (std::uint64_t seed = 0; seed < 40; ++seed) {
+    const int n = 8 + static_cast<int>(seed % 10);
+    const double p = 0.2 + 0.15 * static_cast<double>(seed % 5);
+    const PyramidGraph g = random_graph(n, p, static_cast<int>(seed % 4), seed);
+    INFO("seed " << seed << ", n " << n << ", p " << p);
+    const CliqueResult r = exact_max_clique(g, 0, cp);
+    CHECK(r.optimal);
+    CHECK(is_clique(g, 0, r.vertices));
+    CHECK(r.vertices.size() == test::brute_force_clique(g));
+  }
+}
+
+TEST_CASE("the exact solver agrees with plain branch and bound on larger graphs") {
+  // Subproblems of more than 64 vertices use several words per bit row.
+  CliqueParams cp;
+  for (std::uint64_t seed = 0; seed < 12; ++seed) {
+    const int n = 60 + 20 * static_cast<int>(seed % 5);
+    const double p = 0.1 + 0.1 * static_cast<double>(seed % 4);
+    const PyramidGraph g = random_graph(n, p, 5 + static_cast<int>(seed % 7) * 3, seed);
+    INFO("seed " << seed << ", n " << n << ", p " << p);
+    const CliqueResult r = exact_max_clique(g, 0, cp);
+    CHECK(r.optimal);
+    CHECK(is_clique(g, 0, r.vertices));
+    CHECK(r.vertices.size() == test::plain_max_clique(g, 0));
+  }
+  // A complete graph of 130 vertices: one subproblem of 129 vertices, three words per row.
+  const PyramidGraph complete = random_graph(130, 0.0, 130, 1);
+  CHECK(exact_max_clique(complete, 0, cp).vertices.size() == 130);
+}
+
+TEST_CASE("the exact solver agrees with plain branch and bound on association problems") {
+  CliqueParams cp;
+  const GraphParams gp = test::association_params();
+  for (std::uint64_t seed : {1u, 2u, 3u}) {
+    const auto c = test::association(250, 25, seed);
+    const PyramidGraph g = build_pyramid_graph(c, gp);
+    for (int l = 0; l < g.levels(); ++l) {
+      INFO("seed " << seed << ", level " << l);
+      const CliqueResult r = exact_max_clique(g, l, cp);
+      CHECK(r.optimal);
+      CHECK(is_clique(g, l, r.vertices));
+      CHECK(r.vertices.size() == test::plain_max_clique(g, l));
+    }
+  }
+}
+
+TEST_CASE("the exact solver stops at its node budget and says so") {
+  CliqueParams cp;
+  cp.exact_max_nodes = 5;
+  const PyramidGraph g = random_graph(200, 0.5, 0, 1);
+  const CliqueResult r = exact_max_clique(g, 0, cp);
+  CHECK_FALSE(r.optimal);
+  CHECK(is_clique(g, 0, r.vertices));
+  CHECK_FALSE(r.vertices.empty());
+}
+
+TEST_CASE("the exact solver on graphs without vertices or edges") {
+  CliqueParams cp;
+  const PyramidGraph empty = test::graph_from_lists({});
+  CHECK(exact_max_clique(empty, 0, cp).vertices.empty());
+  CHECK(exact_max_clique(empty, 0, cp).optimal);
+  const PyramidGraph lonely = random_graph(4, 0.0, 0, 1);
+  const CliqueResult r = exact_max_clique(lonely, 0, cp);
+  CHECK(r.vertices.size() == 1);
+  CHECK(r.optimal);
+}
