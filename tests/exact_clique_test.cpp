@@ -190,3 +190,29 @@ TEST_CASE("the exact solver on graphs without vertices or edges") {
   CHECK(r.vertices.size() == 1);
   CHECK(r.optimal);
 }
+
+TEST_CASE(
+    "near-complete subproblems (solved on the complement) agree with plain branch and bound") {
+  CliqueParams cp;
+  for (std::uint64_t seed = 0; seed < 16; ++seed) {
+    const int n = 34 + 2 * static_cast<int>(seed % 8);
+    const double p = 0.9 + 0.02 * static_cast<double>(seed % 4);
+    const PyramidGraph g = random_graph(n, p, static_cast<int>(seed % 3) * 5, seed);
+    INFO("seed " << seed << ", n " << n << ", p " << p);
+    const CliqueResult r = exact_max_clique(g, 0, cp);
+    CHECK(r.optimal);
+    CHECK(is_clique(g, 0, r.vertices));
+    CHECK(r.vertices.size() == test::plain_max_clique(g, 0));
+  }
+  // Issue 11's problems with more inliers: level 0's inliers are near-complete.
+  const GraphParams gp = test::association_params();
+  for (std::uint64_t seed : {5u, 6u}) {
+    const auto c = test::association(160, 80, seed);
+    const PyramidGraph g = build_pyramid_graph(c, gp);
+    INFO("association, seed " << seed);
+    const CliqueResult r = exact_max_clique(g, 0, cp);
+    CHECK(r.optimal);
+    CHECK(is_clique(g, 0, r.vertices));
+    CHECK(r.vertices.size() == test::plain_max_clique(g, 0));
+  }
+}

@@ -19,6 +19,11 @@ namespace {
 
 using Word = std::uint64_t;
 
+// Subproblems of at least this many vertices and this edge density are solved as maximum
+// independent set on the complement.
+constexpr int kDenseMinSize = 32;
+constexpr double kDenseFraction = 0.9;
+
 int words_for(int n) {
   return (n + 63) / 64;
 }
@@ -123,6 +128,120 @@ class BitSearch {
   std::vector<Level> levels_;
 };
 
+// Maximum independent set on bit rows, for the complement of a near-complete subproblem (a clique
+// of the subproblem is an independent set of its sparse complement). Vertices without neighbours
+// are taken, a vertex with one neighbour is taken and its neighbour dropped; the bound is the
+// remaining count minus a greedy matching (each matched edge keeps at most one end); branching
+// takes or drops a vertex of largest degree.
+class MisSearch {
+ public:
+  MisSearch(int n, long budget, long& nodes)
+      : n_(n), w_(words_for(n)), budget_(budget), nodes_(nodes) {
+    rows_.assign(static_cast<std::size_t>(n_) * static_cast<std::size_t>(w_), 0);
+  }
+  void connect(int a, int b) {
+    row(a)[b >> 6] |= Word(1) << (b & 63);
+    row(b)[a >> 6] |= Word(1) << (a & 63);
+  }
+  // Largest independent set if it has more than `lower` vertices; else empty.
+  std::vector<int> solve(int lower, bool& complete) {
+    best_size_ = lower;
+    std::vector<Word> all(static_cast<std::size_t>(w_), 0);
+    for (int v = 0; v < n_; ++v) all[static_cast<std::size_t>(v >> 6)] |= Word(1) << (v & 63);
+    search(all);
+    complete = complete && nodes_ <= budget_;
+    return best_;
+  }
+
+ private:
+  Word* row(int v) {
+    return rows_.data() + static_cast<std::size_t>(v) * static_cast<std::size_t>(w_);
+  }
+  int degree(int v, const std::vector<Word>& P) {
+    const Word* r = row(v);
+    int d = 0;
+    for (int i = 0; i < w_; ++i) d += __builtin_popcountll(r[i] & P[static_cast<std::size_t>(i)]);
+    return d;
+  }
+  static void drop(std::vector<Word>& P, int v) {
+    P[static_cast<std::size_t>(v >> 6)] &= ~(Word(1) << (v & 63));
+  }
+  static bool has(const std::vector<Word>& P, int v) {
+    return (P[static_cast<std::size_t>(v >> 6)] >> (v & 63)) & 1;
+  }
+  template <typename F>
+  void for_each(const std::vector<Word>& P, F&& f) {
+    for (int i = 0; i < w_; ++i)
+      for (Word x = P[static_cast<std::size_t>(i)]; x; x &= x - 1) f(i * 64 + __builtin_ctzll(x));
+  }
+  int first_neighbour(int v, const std::vector<Word>& P) {
+    const Word* r = row(v);
+    for (int i = 0; i < w_; ++i)
+      if (const Word x = r[i] & P[static_cast<std::size_t>(i)]) return i * 64 + __builtin_ctzll(x);
+    return -1;
+  }
+
+  void search(std::vector<Word> P) {
+    if (++nodes_ > budget_) return;
+    const std::size_t mark = current_.size();
+    for (bool changed = true; changed;) {  // degree-0 and degree-1 reductions
+      changed = false;
+      for_each(P, [&](int v) {
+        if (!has(P, v)) return;
+        const int d = degree(v, P);
+        if (d > 1) return;
+        if (d == 1) drop(P, first_neighbour(v, P));
+        drop(P, v);
+        current_.push_back(v);
+        changed = true;
+      });
+    }
+    int remaining = 0, matched = 0, pick = -1, pick_degree = -1;
+    std::vector<Word> Q = P;
+    for_each(P, [&](int v) {
+      ++remaining;
+      const int d = degree(v, P);
+      if (d > pick_degree) {
+        pick_degree = d;
+        pick = v;
+      }
+      if (!has(Q, v)) return;
+      drop(Q, v);
+      const int u = first_neighbour(v, Q);
+      if (u >= 0) {
+        drop(Q, u);
+        ++matched;
+      }
+    });
+    const int size = static_cast<int>(current_.size());
+    if (remaining == 0) {
+      if (size > best_size_) {
+        best_size_ = size;
+        best_ = current_;
+      }
+    } else if (size + remaining - matched > best_size_) {
+      std::vector<Word> without = P;
+      drop(without, pick);
+      // Take `pick`: its neighbours go.
+      const Word* r = row(pick);
+      for (int i = 0; i < w_; ++i) P[static_cast<std::size_t>(i)] &= ~r[i];
+      drop(P, pick);
+      current_.push_back(pick);
+      search(std::move(P));
+      current_.pop_back();
+      if (nodes_ <= budget_) search(std::move(without));
+    }
+    current_.resize(mark);
+  }
+
+  int n_, w_;
+  long budget_;
+  long& nodes_;
+  int best_size_ = 0;
+  std::vector<int> best_, current_;
+  std::vector<Word> rows_;
+};
+
 // The subproblem of v: v's later neighbours in the degeneracy order that could be in a clique
 // larger than `best`, pruned to the local (|best| - 1)-core. Returns the clique found (with v),
 // or empty.
@@ -157,15 +276,40 @@ std::vector<int> solve_subproblem(const detail::LevelCsr& g, const detail::CoreD
   const int n = static_cast<int>(cand.size());
   for (int i = 0; i < n; ++i)
     local[static_cast<std::size_t>(cand[static_cast<std::size_t>(i)])] = i;
-  BitSearch search(n, budget, nodes);
+  // Local edges; a near-complete subproblem is solved on its sparse complement.
+  std::size_t edges = 0;
   for (int i = 0; i < n; ++i)
     for (const int* w = g.begin(cand[static_cast<std::size_t>(i)]);
-         w != g.end(cand[static_cast<std::size_t>(i)]); ++w) {
-      const int j = local[static_cast<std::size_t>(*w)];
-      if (j > i) search.connect(i, j);
+         w != g.end(cand[static_cast<std::size_t>(i)]); ++w)
+      edges += local[static_cast<std::size_t>(*w)] > i;
+  const bool dense = n >= kDenseMinSize && edges >= kDenseFraction * 0.5 * n * (n - 1.0);
+  std::vector<int> found;
+  if (dense) {
+    MisSearch search(n, budget, nodes);
+    std::vector<char> row(static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i) {
+      std::fill(row.begin(), row.end(), 0);
+      for (const int* w = g.begin(cand[static_cast<std::size_t>(i)]);
+           w != g.end(cand[static_cast<std::size_t>(i)]); ++w) {
+        const int j = local[static_cast<std::size_t>(*w)];
+        if (j >= 0) row[static_cast<std::size_t>(j)] = 1;
+      }
+      for (int j = i + 1; j < n; ++j)
+        if (!row[static_cast<std::size_t>(j)]) search.connect(i, j);
     }
-  for (int a : cand) local[static_cast<std::size_t>(a)] = -1;
-  const std::vector<int> found = search.solve(best - 1, complete);  // with v: > best
+    for (int a : cand) local[static_cast<std::size_t>(a)] = -1;
+    found = search.solve(best - 1, complete);  // with v: > best
+  } else {
+    BitSearch search(n, budget, nodes);
+    for (int i = 0; i < n; ++i)
+      for (const int* w = g.begin(cand[static_cast<std::size_t>(i)]);
+           w != g.end(cand[static_cast<std::size_t>(i)]); ++w) {
+        const int j = local[static_cast<std::size_t>(*w)];
+        if (j > i) search.connect(i, j);
+      }
+    for (int a : cand) local[static_cast<std::size_t>(a)] = -1;
+    found = search.solve(best - 1, complete);  // with v: > best
+  }
   if (found.empty()) return {};
   std::vector<int> clique{v};
   for (int i : found) clique.push_back(cand[static_cast<std::size_t>(i)]);

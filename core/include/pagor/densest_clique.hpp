@@ -43,7 +43,8 @@ std::vector<double> random_start(int size, std::uint64_t seed);
 
 /// Exact maximum clique on level `level`: one subproblem per vertex of the core that can hold a
 /// larger clique than the best so far (the vertex and its later neighbours in the degeneracy
-/// order), each solved by branch and bound on bitsets with greedy-colouring bounds.
+/// order), each solved by branch and bound on bitsets with greedy-colouring bounds, or, when it is
+/// near-complete, as a maximum independent set of its sparse complement.
 /// Stops after `params.exact_max_nodes` search nodes with the best clique so far and
 /// `optimal = false`.
 CliqueResult exact_max_clique(const PyramidGraph& graph, int level, const CliqueParams& params);
