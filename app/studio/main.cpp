@@ -157,9 +157,20 @@ int run_window(AppState state) {
   std::string error;
   if (!gl.load(glfw_proc, error)) throw Error(error);
   ImGui::CreateContext();
+  // Shortcut keys are queued from GLFW's callback (installed first, so that ImGui's backend
+  // chains to it): a tap shorter than a frame still counts.
+  static Studio* g_studio = nullptr;
+  glfwSetKeyCallback(window, [](GLFWwindow*, int key, int, int action, int mods) {
+    if (g_studio && action == GLFW_PRESS)
+      g_studio->queue_key(key, (mods & GLFW_MOD_CONTROL) != 0, (mods & GLFW_MOD_SHIFT) != 0);
+  });
   ImGui_ImplGlfw_InitForOpenGL(window, true);  // platform only: input, time, cursor
   {
     Studio studio(gl, std::move(state));
+    g_studio = &studio;
+    struct Reset {
+      ~Reset() { g_studio = nullptr; }
+    } reset;
     if (!studio.init(error)) throw Error(error);
     studio.submit_data();
     while (!glfwWindowShouldClose(window)) {

@@ -18,6 +18,7 @@ namespace pagor::studio {
 namespace {
 
 constexpr int kMaxFrame = 999999, kMaxLevels = 32;
+constexpr int kMaxCap = 5000;  // correspondences: ~2 s for the graph and clique stages
 const ImVec4 kRed(1.0f, 0.4f, 0.4f, 1.0f);
 
 void set_message(AppState& s, const std::string& text, bool error) {
@@ -45,6 +46,10 @@ bool normalise_levels(AppState& s) {
   const auto [lo, hi] = epsilon_range(s.config.graph.trim);
   const std::vector<double> before = th;
   for (double& e : th) e = std::clamp(e, lo, hi);
+  if (th != before)
+    set_message(s, "\xce\xb5 clamped into [" + std::to_string(lo) + ", " + std::to_string(hi) +
+                       "], the range of TRIM '" + to_string(s.config.graph.trim) + "'",
+                false);
   std::sort(th.begin(), th.end());
   th.erase(std::unique(th.begin(), th.end()), th.end());
   if (th.size() < before.size())
@@ -229,16 +234,24 @@ void parameters_panel(UiContext& ui) {
                             "or the trimmed / plain sums (ablations).");
 
   section("landmarks");
-  changed |= ui::input_int("corr. cap", &c.correspondences.max_correspondences, 0, 1000000, 100,
+  changed |= ui::input_int("corr. cap", &c.correspondences.max_correspondences, 1, kMaxCap, 100,
                            true,
                            "At most this many correspondences (the most promising are kept); "
-                           "0 means no cap. Enter applies.");
+                           "Enter applies. Up to 5000 here: a run cannot be interrupted inside a "
+                           "stage and larger graphs take minutes (0, no cap, only from a config "
+                           "file).");
   for (ClassParams& p : c.landmarks.classes) {
     ImGui::PushID(p.name.c_str());
     const std::string text = p.name + " (" + to_string(p.method) + ")";
     if (ui::tree_node("##class", text.c_str())) {
-      changed |= ui::slider_double("voxel [m]", &p.voxel_size, 0.02, 2.0, "%.2f m", true,
-                                   "Downsampling voxel of this class before clustering or FPFH.");
+      // Lower bounds keep one run to seconds on a KITTI scan (a run cannot be interrupted
+      // inside a stage): FPFH at a 0.02 m voxel took over 100 s, at 0.3 m 6 s.
+      const bool fpfh = p.method == LandmarkMethod::fpfh;
+      changed |= ui::slider_double("voxel [m]", &p.voxel_size, fpfh ? 0.3 : 0.05, 2.0, "%.2f m",
+                                   true,
+                                   fpfh ? "Downsampling voxel of this class before FPFH (at least "
+                                          "0.3 m here: finer takes minutes on a KITTI scan)."
+                                        : "Downsampling voxel of this class before clustering.");
       if (p.method == LandmarkMethod::cluster) {
         changed |= ui::slider_double("tolerance [m]", &p.cluster_tolerance, 0.05, 3.0, "%.2f m",
                                      true, "Largest gap between two points of one cluster.");
@@ -251,13 +264,13 @@ void parameters_panel(UiContext& ui) {
           changed = true;
         }
       } else {
-        changed |= ui::slider_double("normal r [m]", &p.normal_radius, 0.1, 5.0, "%.2f m", true,
+        changed |= ui::slider_double("normal r [m]", &p.normal_radius, 0.1, 3.0, "%.2f m", true,
                                      "Radius of the normal estimate for FPFH.");
-        changed |= ui::slider_double("feature r [m]", &p.feature_radius, 0.1, 10.0, "%.2f m", true,
-                                     "Radius of the FPFH descriptor; larger than the normal "
+        changed |= ui::slider_double("feature r [m]", &p.feature_radius, 0.15, 5.0, "%.2f m", true,
+                                     "Radius of the FPFH descriptor; kept larger than the normal "
                                      "radius.");
         if (p.feature_radius <= p.normal_radius) {
-          p.feature_radius = std::min(10.0, shortest(static_cast<float>(p.normal_radius * 1.25)));
+          p.feature_radius = shortest(static_cast<float>(p.normal_radius * 1.25));
           changed = true;
         }
       }

@@ -27,8 +27,9 @@ void bar_chart(const Snapshot& s, int shown, const RunChanges& changes) {
     if (l.pose.valid && std::isfinite(l.score)) top = std::max(top, l.score);
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   const float width = ImGui::GetContentRegionAvail().x, label_h = 16.0f;
-  const float height = std::max(50.0f, ImGui::GetContentRegionAvail().y - label_h -
-                                           2 * ImGui::GetTextLineHeightWithSpacing() - 4.0f);
+  const float height = std::clamp(
+      ImGui::GetContentRegionAvail().y * 0.55f - label_h - ImGui::GetTextLineHeightWithSpacing(),
+      40.0f, 220.0f);
   ImDrawList* dl = ImGui::GetWindowDrawList();
   dl->AddRectFilled(origin, ImVec2(origin.x + width, origin.y + height + label_h),
                     IM_COL32(30, 32, 38, 255));
@@ -64,9 +65,9 @@ void bar_chart(const Snapshot& s, int shown, const RunChanges& changes) {
   }
   ImGui::Dummy(ImVec2(width, height + label_h));
   if (const auto m = score_margin(s))
-    ImGui::Text("margin: L%d D %.0f vs L%d D %.0f: %.0f m (%.1f %%)", m->best_level, m->best,
-                m->second_level, m->second, m->second - m->best,
-                m->best > 0 ? 100.0 * (m->second - m->best) / m->best : 0.0);
+    ImGui::Text("margin %.0f m (%.1f %%): L%d %.0f vs L%d %.0f", m->second - m->best,
+                m->best > 0 ? 100.0 * (m->second - m->best) / m->best : 0.0, m->best_level,
+                m->best, m->second_level, m->second);
   else
     ImGui::TextDisabled("margin: fewer than two valid levels");
 }
@@ -185,6 +186,7 @@ void pyramid_panel(UiContext& ui) {
   ImGui::EndChild();
   ImGui::SameLine();
   ImGui::BeginChild("chart", ImVec2(0, 0));
+  bar_chart(*s, shown, changes);
   if (shown >= 0) {
     const LevelView& l = s->levels[static_cast<std::size_t>(shown)];
     ImGui::Spacing();
@@ -211,7 +213,6 @@ void pyramid_panel(UiContext& ui) {
     ImGui::SameLine();
     ImGui::TextDisabled("bound: %s", s->upper_bound ? "yes" : "no");
   }
-  bar_chart(*s, shown, changes);
   ImGui::EndChild();
   ImGui::PopStyleVar();
 }

@@ -42,10 +42,6 @@ void place(float x, float y, float w, float h) {
   ImGui::SetNextWindowSize(ImVec2(std::max(w, 1.0f), std::max(h, 1.0f)));
 }
 
-bool pressed(int code) {
-  return ImGui::IsKeyPressed(code, false);
-}
-
 }  // namespace
 
 const std::vector<Shortcut>& shortcuts() {
@@ -161,34 +157,48 @@ void Studio::load_session_now() {
   }
 }
 
+void Studio::queue_key(int key, bool ctrl, bool shift) {
+  keys_.push_back({key, ctrl, shift});
+}
+
 void Studio::handle_shortcuts(UiContext& ui) {
   const ImGuiIO& io = ImGui::GetIO();
+  std::vector<KeyPress> keys;
+  keys.swap(keys_);
   if (io.WantTextInput) return;  // keys go to the field being edited
   ViewState& v = state_.view;
-  if (io.KeyCtrl) {
-    if (pressed(key::Z) && io.KeyShift) redo();
-    else if (pressed(key::Z)) undo();
-    if (pressed(key::Y)) redo();
-    if (pressed(key::S)) save_session_now();
-    if (pressed(key::O)) load_session_now();
-    return;
+  for (const KeyPress& k : keys) {
+    if (k.ctrl) {
+      if (k.key == key::Z && k.shift) redo();
+      else if (k.key == key::Z) undo();
+      else if (k.key == key::Y) redo();
+      else if (k.key == key::S) save_session_now();
+      else if (k.key == key::O) load_session_now();
+      continue;
+    }
+    switch (k.key) {
+      case key::F: state_.camera_fitted = false; break;
+      case key::R: {
+        const bool top_down = state_.camera.top_down;
+        state_.camera = Camera{};
+        state_.camera.top_down = top_down;
+        state_.camera_fitted = false;
+        break;
+      }
+      case key::T:
+        state_.camera.top_down = !state_.camera.top_down;
+        state_.camera_fitted = false;
+        break;
+      case key::S: state_.want_screenshot = true; break;
+      case key::Left: step_pair(ui, state_.pair_index < 0 ? 0 : -1); break;
+      case key::Right: step_pair(ui, 1); break;
+      case key::F1:
+      case key::H: state_.show_help = !state_.show_help; break;
+      case key::Escape: state_.show_help = false; break;
+      default: break;
+    }
   }
-  if (pressed(key::F)) state_.camera_fitted = false;
-  if (pressed(key::R)) {
-    const bool top_down = state_.camera.top_down;
-    state_.camera = Camera{};
-    state_.camera.top_down = top_down;
-    state_.camera_fitted = false;
-  }
-  if (pressed(key::T)) {
-    state_.camera.top_down = !state_.camera.top_down;
-    state_.camera_fitted = false;
-  }
-  if (pressed(key::S)) state_.want_screenshot = true;
-  if (pressed(key::Left)) step_pair(ui, state_.pair_index < 0 ? 0 : -1);
-  if (pressed(key::Right)) step_pair(ui, 1);
-  if (pressed(key::F1) || pressed(key::H)) state_.show_help = !state_.show_help;
-  if (pressed(key::Escape)) state_.show_help = false;
+  // + and - as characters: the same on every keyboard layout and on the keypad.
   for (ImWchar c : io.InputQueueCharacters) {
     if (c == '+' || c == '=') v.point_size += 0.5f;
     if (c == '-') v.point_size -= 0.5f;

@@ -43,6 +43,10 @@ class Studio {
   void save_session_now();
   void load_session_now();
 
+  /// A key press (GLFW key code) for the shortcuts, queued until the next frame so that a press
+  /// and release between two frames still counts (ImGui 1.86 only sees keys held at a frame).
+  void queue_key(int key, bool ctrl, bool shift);
+
   /// Builds and draws one frame of width x height pixels into the default framebuffer, and writes
   /// the screenshot the user asked for.
   void frame(int width, int height);
@@ -75,6 +79,11 @@ class Studio {
   ParamHistory params_;
   RunHistory runs_;
   std::string config_error_, stale_reason_;
+  struct KeyPress {
+    int key;
+    bool ctrl, shift;
+  };
+  std::vector<KeyPress> keys_;
   double frame_ms_ = 0.0;
 };
 

@@ -201,9 +201,13 @@ bool input_int(const char* label, int* v, int lo, int hi, int step, bool on_ente
   int value = *v;
   const bool r = ImGui::InputInt(label, &value, step, step * 10,
                                  on_enter ? ImGuiInputTextFlags_EnterReturnsTrue : 0);
-  const int clamped = std::clamp(value, lo, hi);
-  const bool changed = clamped != *v && (r || value != *v);
-  *v = clamped;
+  // Written back only when the user edited it: a value loaded from a file is not changed silently.
+  bool changed = false;
+  if (r || value != *v) {
+    const int clamped = std::clamp(value, lo, hi);
+    changed = clamped != *v;
+    *v = clamped;
+  }
   WidgetRecord& rec = record_last(WidgetKind::input_int, label, id, frame_w);
   rec.lo = static_cast<float>(lo);
   rec.hi = static_cast<float>(hi);

@@ -118,12 +118,14 @@ void UiDriver::frames(int n) {
 }
 
 void UiDriver::settle(double timeout_s) {
+  set_context("waiting for the worker after: " + action_);
   const auto t0 = std::chrono::steady_clock::now();
   for (;;) {
     const studio::WorkerStatus st = studio_->worker().status();
     if (!st.busy && st.submitted == st.finished) break;
     if (std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() > timeout_s)
-      FAIL("the worker did not finish within " << timeout_s << " s after: " << action_);
+      FAIL("the worker did not finish within " << timeout_s << " s after: " << action_
+                                                << " (still " << st.activity << ")");
     studio_->worker().wait_idle(0.05);
     frame();
   }
@@ -191,6 +193,7 @@ void UiDriver::drag(ImVec2 from, ImVec2 to, int b, int steps) {
 
 void UiDriver::press_key(int code, bool ctrl, bool shift) {
   set_modifiers(ctrl, shift);
+  studio_->queue_key(code, ctrl, shift);  // as the window's GLFW key callback does
   key(code, true);
   frame();
   key(code, false);

@@ -45,7 +45,7 @@ class UiDriver {
   void frame();
   void frames(int n);
   /// Frames until the worker has nothing pending (fails after `timeout_s`).
-  void settle(double timeout_s = 120);
+  void settle(double timeout_s = 240);
   void resize(int width, int height);
   int width() const { return width_; }
   int height() const { return height_; }
