@@ -51,13 +51,20 @@ RunChanges compare_runs(const Snapshot& before, const Snapshot& after) {
   c.comparable = before.data_generation == after.data_generation;
   c.selected_before = before.selected;
   c.selected_after = after.selected;
+  if (before.selected >= 0 && before.selected < static_cast<int>(before.levels.size()))
+    c.selected_eps_before = before.levels[static_cast<std::size_t>(before.selected)].epsilon;
+  if (after.selected >= 0 && after.selected < static_cast<int>(after.levels.size()))
+    c.selected_eps_after = after.levels[static_cast<std::size_t>(after.selected)].epsilon;
   for (std::size_t i = 0; i < after.levels.size(); ++i) {
     LevelChange l;
     const LevelView& a = after.levels[i];
-    if (i >= before.levels.size()) {
+    const LevelView* match = nullptr;
+    for (const LevelView& b : before.levels)
+      if (b.epsilon == a.epsilon) match = &b;
+    if (!match) {
       l.added = true;
     } else {
-      const LevelView& b = before.levels[i];
+      const LevelView& b = *match;
       if (b.pose.valid && a.pose.valid && std::isfinite(a.score) && std::isfinite(b.score))
         l.d_delta = a.score - b.score;
       l.validity_flipped = b.pose.valid != a.pose.valid;
@@ -103,9 +110,9 @@ RunRecord summarize(const Snapshot& s, const RunChanges& changes) {
   if (!changes.comparable) {
     r.change = "new data";
   } else if (changes.selected_changed()) {
-    char text[64];
-    std::snprintf(text, sizeof(text), "selected level %d -> %d", changes.selected_before,
-                  changes.selected_after);
+    char text[96];
+    std::snprintf(text, sizeof(text), "selected \xce\xb5 %.3g -> %.3g", changes.selected_eps_before,
+                  changes.selected_eps_after);
     r.change = text;
   } else {
     int flips = 0, moved = 0;

@@ -38,20 +38,26 @@ class ParamHistory {
   std::string current_;
 };
 
-/// What changed for one level between two runs on the same data.
+/// What changed for one level between two runs on the same data; levels are matched by their ε
+/// (inserting a level does not make every later level "change").
 struct LevelChange {
   std::optional<double> d_delta;  ///< D after - D before [m] (both valid)
   bool validity_flipped = false;  ///< became valid or invalid
   bool success_flipped = false;   ///< success against ground truth changed
-  bool added = false;             ///< no such level before
+  bool added = false;             ///< no level with this ε before
 };
 
 /// What changed between two runs.
 struct RunChanges {
   bool comparable = false;  ///< same data, so a comparison means something
-  int selected_before = -1, selected_after = -1;
+  int selected_before = -1, selected_after = -1;  ///< level indices in their own runs
+  double selected_eps_before = 0, selected_eps_after = 0;
   std::vector<LevelChange> levels;  ///< one per level of the new run
-  bool selected_changed() const { return comparable && selected_before != selected_after; }
+  /// The selection moved to another ε (or to / from no valid level).
+  bool selected_changed() const {
+    return comparable && ((selected_before < 0) != (selected_after < 0) ||
+                          selected_eps_before != selected_eps_after);
+  }
   bool any() const;
 };
 

@@ -56,6 +56,8 @@ void bar_chart(const Snapshot& s, int shown, const RunChanges& changes) {
         std::snprintf(text, sizeof(text), "%.0f (%+.0f)", l.score, *changes.levels[k].d_delta);
       else
         std::snprintf(text, sizeof(text), "%.0f", l.score);
+      if (ImGui::CalcTextSize(text).x > slot * 0.95f)  // too narrow for the delta
+        std::snprintf(text, sizeof(text), "%.0f", l.score);
       dl->AddText(ImVec2(x0, base - h - 15.0f), IM_COL32(220, 220, 220, 255), text);
     } else {
       dl->AddText(ImVec2(x0, base - 16.0f), IM_COL32(255, 110, 110, 255), "invalid");
@@ -65,7 +67,7 @@ void bar_chart(const Snapshot& s, int shown, const RunChanges& changes) {
   }
   ImGui::Dummy(ImVec2(width, height + label_h));
   if (const auto m = score_margin(s))
-    ImGui::Text("margin %.0f m (%.1f %%): L%d %.0f vs L%d %.0f", m->second - m->best,
+    ImGui::Text("margin %.0f m (%.2g %%): L%d %.0f vs L%d %.0f", m->second - m->best,
                 m->best > 0 ? 100.0 * (m->second - m->best) / m->best : 0.0, m->best_level,
                 m->best, m->second_level, m->second);
   else
@@ -90,8 +92,9 @@ void pyramid_panel(UiContext& ui) {
     ImGui::PopStyleColor();
   } else if (changes.selected_changed()) {
     ImGui::TextColored(ImVec4(1.0f, 0.85f, 0.3f, 1.0f),
-                       "last run changed the selected level: %d -> %d", changes.selected_before,
-                       changes.selected_after);
+                       "last run changed the selection: \xce\xb5 %.3g (L%d) -> \xce\xb5 %.3g (L%d)",
+                       changes.selected_eps_before, changes.selected_before,
+                       changes.selected_eps_after, changes.selected_after);
   }
   ImGui::PushStyleVar(ImGuiStyleVar_Alpha, ui.stale_reason.empty() ? 1.0f : 0.55f);
   ImGui::Text("%s", s->description.c_str());
@@ -132,7 +135,8 @@ void pyramid_panel(UiContext& ui) {
       const bool flipped = changes.comparable && change &&
                            (change->success_flipped || change->validity_flipped ||
                             (changes.selected_changed() &&
-                             (i == changes.selected_before || i == changes.selected_after)));
+                             (l.epsilon == changes.selected_eps_before ||
+                              i == changes.selected_after)));
       if (flipped) ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg1, IM_COL32(120, 95, 20, 160));
       ImGui::TableNextColumn();
       char label[32];

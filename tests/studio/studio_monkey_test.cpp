@@ -18,7 +18,7 @@ namespace {
 
 int monkey_events() {
   const char* env = std::getenv("PAGOR_MONKEY_EVENTS");
-  return env ? std::max(100, std::atoi(env)) : 4000;
+  return env ? std::max(100, std::atoi(env)) : 3000;
 }
 
 // Changes the working directory for the test's lifetime (typed relative paths land in it).

@@ -1,7 +1,10 @@
 // Driven-UI tests: the real studio, headless, driven through ImGui's input like a user would.
 
+#include <imgui_internal.h>
+
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 
 #include "panels.hpp"
@@ -291,3 +294,85 @@ TEST_CASE("an ImGui assertion fails the test with its message", "[.assert-demo]"
   ImGui::End();  // IM_ASSERT inside ImGui: the handler prints it and exits non-zero
 }
 
+
+#ifdef PAGOR_HAVE_KITTI
+TEST_CASE("every parameter and view widget explains itself in a tooltip") {
+  TempDir tmp;
+  UiDriver d(kitti_state(tmp), 900, 700);
+  d.settle();
+  for (const char* header : {"History", "Session"}) REQUIRE(d.click_widget(header));
+  // Open every class's tree node.
+  std::vector<ImGuiID> nodes;
+  for (const auto& w : d.widgets())
+    if (w.kind == WidgetKind::tree_node) nodes.push_back(w.id);
+  REQUIRE(nodes.size() == d.state().config.landmarks.classes.size());
+  for (ImGuiID id : nodes) REQUIRE(d.click_id(id));
+  int explained = 0;
+  for (const auto& w : d.widgets()) {
+    if (w.window != "Pagor Studio" || w.kind == WidgetKind::header ||
+        w.kind == WidgetKind::tree_node)
+      continue;
+    INFO(to_string(w.kind) << " '" << w.label << "'");
+    CHECK(w.has_tooltip);
+    explained += w.has_tooltip;
+  }
+  CHECK(explained >= 50);
+  // Hovering shows it.
+  const auto* mu = d.find("\xce\xbc [m]", "Pagor Studio");
+  REQUIRE(mu);
+  REQUIRE(d.reveal(mu->id));
+  const auto m = *d.find_id(mu->id);
+  d.move(ImVec2((m.min.x + m.max.x) / 2, (m.min.y + m.max.y) / 2));
+  d.frames(2);
+  bool tooltip_window = false;
+  for (ImGuiWindow* w : GImGui->Windows)
+    tooltip_window = tooltip_window || (w->Active && std::string(w->Name).rfind("##Tooltip", 0) == 0);
+  CHECK(tooltip_window);
+}
+#endif
+
+#ifdef PAGOR_HAVE_KITTI
+// Pictures of the changed views for a human to look at (not run by ctest):
+//   PAGOR_SHOTS_DIR=/tmp/studio-shots build/tests/studio_ui_test "[.shots]"
+TEST_CASE("screenshots of the changed views", "[.shots]") {
+  const char* dir = std::getenv("PAGOR_SHOTS_DIR");
+  REQUIRE(dir);
+  TempDir tmp;
+  studio::AppState s = kitti_state(tmp);
+  s.view.layers.source = s.view.layers.target = true;
+  UiDriver d(s, 1280, 720);
+  d.settle();
+  std::string error;
+  const auto shot = [&](const std::string& name, int frames = 2) {
+    d.frames(frames);
+    REQUIRE(d.studio().screenshot(std::string(dir) + "/" + name, d.width(), d.height(), error));
+  };
+  // A clustering change re-runs everything: meanwhile the results are marked stale.
+  d.state().config.landmarks.classes[0].cluster_tolerance = 0.6;
+  d.studio().submit_config();
+  shot("driven_stale_pending.png", 1);
+  d.settle();
+  // Without the selected level (0.08) the selection moves, and the changes are highlighted.
+  d.state().config.graph.thresholds = {0.01, 0.02, 0.04, 0.16, 0.32};
+  d.studio().submit_config();
+  d.settle();
+  shot("driven_after_rerun_changes.png");
+  // The source where its sensor saw it, with every correspondence in class colours.
+  d.state().view.layers.all_correspondences = true;
+  d.state().view.pose = studio::PoseShown::identity;
+  d.state().camera_fitted = false;
+  d.frames(2);
+  shot("driven_identity_all_corr.png");
+  d.state().view.pose = studio::PoseShown::selected;
+  d.state().view.layers.all_correspondences = false;
+  d.resize(640, 480);
+  d.frames(3);
+  shot("driven_640x480.png");
+  d.resize(320, 240);
+  d.frames(3);
+  shot("driven_320x240.png");
+  d.resize(1280, 720);
+  d.press_key('H');
+  shot("driven_help.png");
+}
+#endif
