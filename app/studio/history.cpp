@@ -49,6 +49,7 @@ bool RunChanges::any() const {
 RunChanges compare_runs(const Snapshot& before, const Snapshot& after) {
   RunChanges c;
   c.comparable = before.data_generation == after.data_generation;
+  if (!c.comparable) return c;  // other data: nothing to compare level by level
   c.selected_before = before.selected;
   c.selected_after = after.selected;
   if (before.selected >= 0 && before.selected < static_cast<int>(before.levels.size()))

@@ -115,7 +115,7 @@ void scene_window(UiContext& ui) {
   if (state.view.grid) draw_grid_axes_scale(dl, rect, state.camera, ui.scene.ground_z(*s));
   const int shown = shown_level(state.view, s->selected, static_cast<int>(s->levels.size()));
   draw_correspondence_lines(dl, rect, *s, state.view, pose, shown, ui.scene.class_colors());
-  if (state.view.legend)
+  if (state.view.legend && w >= 360 && h >= 220)  // a small view keeps its picture
     draw_legend(dl, ImVec2(origin.x + 10, origin.y + 10), *s, state.view, ui.scene.class_colors());
   dl->PopClipRect();
   if (!hovered) return;

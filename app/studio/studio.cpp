@@ -20,6 +20,7 @@ namespace {
 
 constexpr float kFontSize = 15.0f;  // [px]
 constexpr float kStatusHeight = 28.0f, kSplitter = 6.0f, kMinPane = 80.0f;  // [px]
+constexpr float kMaxLeftShare = 0.45f;  // of the window width: the view keeps the larger part
 constexpr ImGuiWindowFlags kPanelFlags =
     ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus;
@@ -227,7 +228,7 @@ void Studio::update_staleness(const WorkerStatus& status) {
 void Studio::layout_windows(UiContext& ui, float W, float H) {
   LayoutState& layout = state_.layout;
   const float left = std::clamp(layout.left_width, ViewLimits::min_left_width,
-                                std::max(ViewLimits::min_left_width, 0.6f * W));
+                                std::max(ViewLimits::min_left_width, kMaxLeftShare * W));
   place(0, 0, left, H);
   if (ImGui::Begin("Pagor Studio", nullptr, kPanelFlags)) {
     ImGui::PushItemWidth(-std::min(130.0f, left * 0.42f));  // room for the labels
@@ -253,7 +254,7 @@ void Studio::layout_windows(UiContext& ui, float W, float H) {
     const ImVec2 d = ui::splitter("##left_splitter", ImVec2(kSplitter, H), true);
     layout.left_width = std::clamp(left + d.x, ViewLimits::min_left_width,
                                    std::min(ViewLimits::max_left_width, std::max(
-                                       ViewLimits::min_left_width, 0.6f * W)));
+                                       ViewLimits::min_left_width, kMaxLeftShare * W)));
   }
   ImGui::End();
   const float x = left + kSplitter, w = std::max(1.0f, W - x);

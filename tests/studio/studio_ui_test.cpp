@@ -129,8 +129,8 @@ TEST_CASE("window sizes from 320x240 to 2560x1440 keep the layout inside the win
     REQUIRE(d.scene_rect(a, b));
     CHECK(b.x <= w + 0.5f);
     CHECK(b.y <= h + 0.5f);
-    CHECK(a.x >= std::min(left, 0.6f * w) - 0.5f);
-    CHECK(b.x - a.x >= 0.35f * w);
+    CHECK(a.x >= std::min(left, std::max(180.0f, 0.45f * w)) - 0.5f);
+    CHECK(b.x - a.x >= std::min(0.5f * w, w - 186.0f) - 1.0f);
     const auto* split = d.find("##left_splitter");
     REQUIRE(split);
     CHECK(split->max.x <= w);
