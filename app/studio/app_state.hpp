@@ -45,7 +45,7 @@ struct LayoutState {
 
 /// Limits of the view settings (widgets and the session reader enforce them).
 struct ViewLimits {
-  static constexpr float min_point_size = 1.0f, max_point_size = 10.0f;       ///< [px]
+  static constexpr float min_point_size = 1.0f, max_point_size = 10.0f;        ///< [px]
   static constexpr float min_landmark_size = 3.0f, max_landmark_size = 30.0f;  ///< [px]
   static constexpr float min_line_width = 1.0f, max_line_width = 8.0f;         ///< [px]
   static constexpr float min_left_width = 180.0f, max_left_width = 1200.0f;    ///< [px]
@@ -71,7 +71,7 @@ struct AppState {
   std::string message;  ///< last message for the user
   bool message_is_error = false;
   bool want_screenshot = false;
-  bool show_help = false;  ///< the shortcut overlay (F1 or H)
+  bool show_help = false;          ///< the shortcut overlay (F1 or H)
   int width = 1280, height = 720;  ///< window or image size [px]
 };
 

@@ -1,7 +1,7 @@
 #include "headless.hpp"
 
-#include "gl.hpp"
 #include <dlfcn.h>
+#include "gl.hpp"
 
 #include <string>
 
@@ -30,11 +30,9 @@ const OsMesa& osmesa() {
   static const OsMesa lib = [] {
     OsMesa m;
     m.lib = dlopen("libOSMesa.so.8", RTLD_NOW | RTLD_LOCAL);
-    if (!m.lib)
-      throw Error(std::string("cannot load OSMesa (install libosmesa6): ") + dlerror());
+    if (!m.lib) throw Error(std::string("cannot load OSMesa (install libosmesa6): ") + dlerror());
     m.create = reinterpret_cast<decltype(m.create)>(dlsym(m.lib, "OSMesaCreateContextAttribs"));
-    m.make_current =
-        reinterpret_cast<decltype(m.make_current)>(dlsym(m.lib, "OSMesaMakeCurrent"));
+    m.make_current = reinterpret_cast<decltype(m.make_current)>(dlsym(m.lib, "OSMesaMakeCurrent"));
     m.destroy = reinterpret_cast<decltype(m.destroy)>(dlsym(m.lib, "OSMesaDestroyContext"));
     m.get_proc = reinterpret_cast<decltype(m.get_proc)>(dlsym(m.lib, "OSMesaGetProcAddress"));
     if (!m.create || !m.make_current || !m.destroy || !m.get_proc)
@@ -56,8 +54,17 @@ void check_size(int width, int height) {
 HeadlessContext::HeadlessContext(int width, int height) {
   check_size(width, height);
   const OsMesa& m = osmesa();
-  const int attribs[] = {kOsmesaFormat, kOsmesaRgba, kOsmesaDepthBits, 24, kOsmesaProfile,
-                         kOsmesaCoreProfile, kOsmesaMajor, 3, kOsmesaMinor, 3, 0};
+  const int attribs[] = {kOsmesaFormat,
+                         kOsmesaRgba,
+                         kOsmesaDepthBits,
+                         24,
+                         kOsmesaProfile,
+                         kOsmesaCoreProfile,
+                         kOsmesaMajor,
+                         3,
+                         kOsmesaMinor,
+                         3,
+                         0};
   ctx_ = m.create(attribs, nullptr);
   if (!ctx_) throw Error("OSMesa could not create an OpenGL 3.3 core context");
   resize(width, height);

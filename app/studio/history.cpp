@@ -69,8 +69,8 @@ RunChanges compare_runs(const Snapshot& before, const Snapshot& after) {
       if (b.pose.valid && a.pose.valid && std::isfinite(a.score) && std::isfinite(b.score))
         l.d_delta = a.score - b.score;
       l.validity_flipped = b.pose.valid != a.pose.valid;
-      l.success_flipped = b.error.has_value() && a.error.has_value() &&
-                          b.error->success != a.error->success;
+      l.success_flipped =
+          b.error.has_value() && a.error.has_value() && b.error->success != a.error->success;
     }
     c.levels.push_back(l);
   }
@@ -121,7 +121,7 @@ RunRecord summarize(const Snapshot& s, const RunChanges& changes) {
       flips += l.success_flipped || l.validity_flipped;
       moved += l.d_delta && std::abs(*l.d_delta) > 1e-9;
     }
-    r.change = flips ? std::to_string(flips) + " level(s) flipped"
+    r.change = flips   ? std::to_string(flips) + " level(s) flipped"
                : moved ? "D changed on " + std::to_string(moved) + " level(s)"
                        : "same result";
   }

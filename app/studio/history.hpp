@@ -49,7 +49,7 @@ struct LevelChange {
 
 /// What changed between two runs.
 struct RunChanges {
-  bool comparable = false;  ///< same data, so a comparison means something
+  bool comparable = false;                        ///< same data, so a comparison means something
   int selected_before = -1, selected_after = -1;  ///< level indices in their own runs
   double selected_eps_before = 0, selected_eps_after = 0;
   std::vector<LevelChange> levels;  ///< one per level of the new run
@@ -73,7 +73,7 @@ std::optional<ScoreMargin> score_margin(const Snapshot& s);
 /// One finished run, as the history lists it.
 struct RunRecord {
   std::uint64_t request = 0;
-  std::string data;              ///< description of the data
+  std::string data;  ///< description of the data
   int levels = 0, selected = -1;
   double best_d = 0;             ///< D of the selected level [m]
   std::optional<double> margin;  ///< second-best D - best D [m]

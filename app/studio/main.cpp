@@ -12,9 +12,9 @@
 
 #include "common/args.hpp"
 #include "common/pair_args.hpp"
+#include "headless.hpp"
 #include "pagor/errors.hpp"
 #include "pagor/kitti.hpp"
-#include "headless.hpp"
 #include "studio.hpp"
 
 namespace pagor::studio {

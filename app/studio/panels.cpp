@@ -47,8 +47,9 @@ bool normalise_levels(AppState& s) {
   const std::vector<double> before = th;
   for (double& e : th) e = std::clamp(e, lo, hi);
   if (th != before)
-    set_message(s, "\xce\xb5 clamped into [" + std::to_string(lo) + ", " + std::to_string(hi) +
-                       "], the range of TRIM '" + to_string(s.config.graph.trim) + "'",
+    set_message(s,
+                "\xce\xb5 clamped into [" + std::to_string(lo) + ", " + std::to_string(hi) +
+                    "], the range of TRIM '" + to_string(s.config.graph.trim) + "'",
                 false);
   std::sort(th.begin(), th.end());
   th.erase(std::unique(th.begin(), th.end()), th.end());
@@ -60,7 +61,8 @@ bool normalise_levels(AppState& s) {
 void kitti_fields(UiContext& ui) {
   AppState& s = ui.state;
   PairSource& d = s.data;
-  ui::input_text("root", &d.kitti_root, "Directory holding sequences/NN/ (velodyne, labels, poses).");
+  ui::input_text("root", &d.kitti_root,
+                 "Directory holding sequences/NN/ (velodyne, labels, poses).");
   ui::input_text("sequence", &d.sequence, "KITTI sequence number, two digits (00 to 21).");
   bool reopen = ui::input_int("source frame", &d.source_frame, 0, kMaxFrame, 1, true,
                               "Frame of the source scan; Enter or +/- opens it.");
@@ -234,12 +236,12 @@ void parameters_panel(UiContext& ui) {
                             "or the trimmed / plain sums (ablations).");
 
   section("landmarks");
-  changed |= ui::input_int("corr. cap", &c.correspondences.max_correspondences, 1, kMaxCap, 100,
-                           true,
-                           "At most this many correspondences (the most promising are kept); "
-                           "Enter applies. Up to 5000 here: a run cannot be interrupted inside a "
-                           "stage and larger graphs take minutes (0, no cap, only from a config "
-                           "file).");
+  changed |=
+      ui::input_int("corr. cap", &c.correspondences.max_correspondences, 1, kMaxCap, 100, true,
+                    "At most this many correspondences (the most promising are kept); "
+                    "Enter applies. Up to 5000 here: a run cannot be interrupted inside a "
+                    "stage and larger graphs take minutes (0, no cap, only from a config "
+                    "file).");
   for (ClassParams& p : c.landmarks.classes) {
     ImGui::PushID(p.name.c_str());
     const std::string text = p.name + " (" + to_string(p.method) + ")";
@@ -247,11 +249,11 @@ void parameters_panel(UiContext& ui) {
       // Lower bounds keep one run to seconds on a KITTI scan (a run cannot be interrupted
       // inside a stage): FPFH at a 0.02 m voxel took over 100 s, at 0.3 m 6 s.
       const bool fpfh = p.method == LandmarkMethod::fpfh;
-      changed |= ui::slider_double("voxel [m]", &p.voxel_size, fpfh ? 0.3 : 0.05, 2.0, "%.2f m",
-                                   true,
-                                   fpfh ? "Downsampling voxel of this class before FPFH (at least "
-                                          "0.3 m here: finer takes minutes on a KITTI scan)."
-                                        : "Downsampling voxel of this class before clustering.");
+      changed |=
+          ui::slider_double("voxel [m]", &p.voxel_size, fpfh ? 0.3 : 0.05, 2.0, "%.2f m", true,
+                            fpfh ? "Downsampling voxel of this class before FPFH (at least "
+                                   "0.3 m here: finer takes minutes on a KITTI scan)."
+                                 : "Downsampling voxel of this class before clustering.");
       if (p.method == LandmarkMethod::cluster) {
         changed |= ui::slider_double("tolerance [m]", &p.cluster_tolerance, 0.05, 3.0, "%.2f m",
                                      true, "Largest gap between two points of one cluster.");
@@ -279,11 +281,11 @@ void parameters_panel(UiContext& ui) {
     ImGui::PopID();
   }
   section("success criterion");
-  changed |= ui::slider_double("max t err [m]", &c.evaluation.max_translation_error, 0.1, 10.0,
-                               "%.1f m", false,
-                               "A pose succeeds when its translation error is below this.");
-  changed |= ui::slider_double("max r err [\xc2\xb0]", &c.evaluation.max_rotation_error, 0.5,
-                               30.0, "%.1f\xc2\xb0", false,
+  changed |=
+      ui::slider_double("max t err [m]", &c.evaluation.max_translation_error, 0.1, 10.0, "%.1f m",
+                        false, "A pose succeeds when its translation error is below this.");
+  changed |= ui::slider_double("max r err [\xc2\xb0]", &c.evaluation.max_rotation_error, 0.5, 30.0,
+                               "%.1f\xc2\xb0", false,
                                "A pose succeeds when its rotation error is below this.");
   ImGui::BeginDisabled(!ui.params || !ui.params->can_undo());
   if (ui::button("undo", ImVec2(0, 0), "Undo the last parameter change (Ctrl+Z).")) ui.undo();
@@ -314,7 +316,8 @@ void view_panel(UiContext& ui) {
   ImGui::SameLine();
   ui::checkbox("all corr.", &l.all_correspondences,
                "Also show every correspondence outside the clique, faint, in class colours.");
-  ui::checkbox("grid, axes, scale", &v.grid, "Ground grid, XYZ axes at the origin and a scale bar.");
+  ui::checkbox("grid, axes, scale", &v.grid,
+               "Ground grid, XYZ axes at the origin and a scale bar.");
   ImGui::SameLine();
   ui::checkbox("legend", &v.legend, "Colour legend in the 3D view.");
   ui::slider_float("point size [px]", &v.point_size, L::min_point_size, L::max_point_size, "%.1f",
@@ -344,7 +347,8 @@ void view_panel(UiContext& ui) {
             "Leave the source where its sensor saw it.");
   v.pose = static_cast<PoseShown>(pose);
   Camera& cam = ui.state.camera;
-  if (ui::button("fit", ImVec2(0, 0), "Frame everything shown (F).")) ui.state.camera_fitted = false;
+  if (ui::button("fit", ImVec2(0, 0), "Frame everything shown (F)."))
+    ui.state.camera_fitted = false;
   ImGui::SameLine();
   if (ui::button("reset", ImVec2(0, 0), "Reset the camera (R).")) {
     const bool top = cam.top_down;

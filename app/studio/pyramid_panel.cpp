@@ -43,7 +43,7 @@ void bar_chart(const Snapshot& s, int shown, const RunChanges& changes) {
     char text[48];
     if (l.pose.valid && std::isfinite(l.score) && top > 0) {
       const float h = static_cast<float>(l.score / top) * (height - 18.0f);
-      const ImU32 color = !l.error             ? IM_COL32(90, 130, 200, 255)
+      const ImU32 color = !l.error           ? IM_COL32(90, 130, 200, 255)
                           : l.error->success ? IM_COL32(80, 200, 110, 255)
                                              : IM_COL32(215, 80, 80, 255);
       dl->AddRectFilled(ImVec2(x0, base - h), ImVec2(x1, base), color);
@@ -68,8 +68,8 @@ void bar_chart(const Snapshot& s, int shown, const RunChanges& changes) {
   ImGui::Dummy(ImVec2(width, height + label_h));
   if (const auto m = score_margin(s))
     ImGui::Text("margin %.0f m (%.2g %%): L%d %.0f vs L%d %.0f", m->second - m->best,
-                m->best > 0 ? 100.0 * (m->second - m->best) / m->best : 0.0, m->best_level,
-                m->best, m->second_level, m->second);
+                m->best > 0 ? 100.0 * (m->second - m->best) / m->best : 0.0, m->best_level, m->best,
+                m->second_level, m->second);
   else
     ImGui::TextDisabled("margin: fewer than two valid levels");
 }
@@ -116,7 +116,9 @@ void pyramid_panel(UiContext& ui) {
       ImGui::GetTextLineHeightWithSpacing() * (static_cast<float>(s->levels.size()) + 2.4f);
   if (ImGui::BeginTable("pyramid", columns, flags, ImVec2(0, table_h))) {
     ImGui::TableSetupScrollFreeze(1, 1);
-    for (const char* h : {"level", "\xce\xb5", "verts", "edges", "clique", "D [m]", "\xce\x94" "D"})
+    for (const char* h : {"level", "\xce\xb5", "verts", "edges", "clique", "D [m]",
+                          "\xce\x94"
+                          "D"})
       ImGui::TableSetupColumn(h);
     if (gt) {
       ImGui::TableSetupColumn("t err [m]");
@@ -132,11 +134,11 @@ void pyramid_panel(UiContext& ui) {
                                       ? &changes.levels[static_cast<std::size_t>(i)]
                                       : nullptr;
       ImGui::TableNextRow();
-      const bool flipped = changes.comparable && change &&
-                           (change->success_flipped || change->validity_flipped ||
-                            (changes.selected_changed() &&
-                             (l.epsilon == changes.selected_eps_before ||
-                              i == changes.selected_after)));
+      const bool flipped =
+          changes.comparable && change &&
+          (change->success_flipped || change->validity_flipped ||
+           (changes.selected_changed() &&
+            (l.epsilon == changes.selected_eps_before || i == changes.selected_after)));
       if (flipped) ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg1, IM_COL32(120, 95, 20, 160));
       ImGui::TableNextColumn();
       char label[32];

@@ -109,8 +109,7 @@ bool shown_bounds(const Snapshot& s, const ViewState& view, const Transform& pos
   return (lo.array() <= hi.array()).all();
 }
 
-void draw_grid_axes_scale(ImDrawList* dl, const ViewRect& r, const Camera& camera,
-                          float ground_z) {
+void draw_grid_axes_scale(ImDrawList* dl, const ViewRect& r, const Camera& camera, float ground_z) {
   const float step = nice_length(camera.distance / 6.0f);
   const int half = 12;
   const float cx = std::round(camera.target.x() / step) * step,
@@ -151,8 +150,7 @@ int draw_correspondence_lines(ImDrawList* dl, const ViewRect& r, const Snapshot&
   int drawn = 0;
   const auto line = [&](const Correspondence& c, ImU32 color, float width, bool outline) {
     ImVec2 a, b;
-    if (!to_screen(r, transform_point(pose, c.p), a) || !to_screen(r, c.q.cast<float>(), b))
-      return;
+    if (!to_screen(r, transform_point(pose, c.p), a) || !to_screen(r, c.q.cast<float>(), b)) return;
     if (outline) dl->AddLine(a, b, IM_COL32(0, 0, 0, 200), width + 2.0f);
     dl->AddLine(a, b, color, width);
     ++drawn;
@@ -180,7 +178,8 @@ void draw_legend(ImDrawList* dl, ImVec2 at, const Snapshot& s, const ViewState& 
   if (view.color == ColorMode::by_cloud) {
     points = {{col(Palette::source), "source"}, {col(Palette::target), "target"}};
   } else {
-    for (const auto& c : s.config.landmarks.classes) points.push_back({col(colors.of(c.name)), c.name});
+    for (const auto& c : s.config.landmarks.classes)
+      points.push_back({col(colors.of(c.name)), c.name});
     points.push_back({IM_COL32(120, 120, 120, 255), "other labels"});
   }
   const int lines = 1 + (gt ? 1 : 0) + (view.layers.all_correspondences ? 1 : 0);

@@ -79,8 +79,8 @@ bool SceneView::init(const Gl& gl, std::string& error) {
   u_use_uniform_ = gl.GetUniformLocation(program_, "u_use_uniform_color");
   u_color_ = gl.GetUniformLocation(program_, "u_color");
   u_round_ = gl.GetUniformLocation(program_, "u_round");
-  for (Buffer* b : {&source_, &target_, &landmarks_src_, &landmarks_tgt_, &keypoints_src_,
-                    &keypoints_tgt_}) {
+  for (Buffer* b :
+       {&source_, &target_, &landmarks_src_, &landmarks_tgt_, &keypoints_src_, &keypoints_tgt_}) {
     gl.GenVertexArrays(1, &b->vao);
     gl.GenBuffers(1, &b->vbo);
     gl.BindVertexArray(b->vao);
@@ -97,8 +97,8 @@ bool SceneView::init(const Gl& gl, std::string& error) {
 
 void SceneView::shutdown() {
   if (!gl_) return;
-  for (Buffer* b : {&source_, &target_, &landmarks_src_, &landmarks_tgt_, &keypoints_src_,
-                    &keypoints_tgt_}) {
+  for (Buffer* b :
+       {&source_, &target_, &landmarks_src_, &landmarks_tgt_, &keypoints_src_, &keypoints_tgt_}) {
     gl_->DeleteBuffers(1, &b->vbo);
     gl_->DeleteVertexArrays(1, &b->vao);
   }
@@ -172,7 +172,6 @@ void SceneView::update(const Snapshot& s, const ViewState& view, const Transform
          landmark_vertices(s.source_landmarks, used_src, true, LandmarkKind::keypoint));
   upload(keypoints_tgt_,
          landmark_vertices(s.target_landmarks, used_tgt, false, LandmarkKind::keypoint));
-
 }
 
 float SceneView::ground_z(const Snapshot& s) {

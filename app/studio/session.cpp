@@ -16,9 +16,9 @@ namespace {
 
 using json = nlohmann::json;
 
-constexpr long long kMaxFrame = 999999;              // KITTI frame numbers have six digits
-constexpr long long kMaxSeed = 9007199254740991;     // 2^53 - 1: exact in every JSON reader
-constexpr double kMaxCoordinate = 1e7;               // [m]
+constexpr long long kMaxFrame = 999999;           // KITTI frame numbers have six digits
+constexpr long long kMaxSeed = 9007199254740991;  // 2^53 - 1: exact in every JSON reader
+constexpr double kMaxCoordinate = 1e7;            // [m]
 constexpr float kMinDistance = 0.5f, kMaxDistance = 5000.0f;  // as Camera::zoom clamps [m]
 
 const char* color_name(ColorMode c) {
@@ -49,7 +49,8 @@ json data_json(const PairSource& d) {
   return {};
 }
 
-// Typed readers: each names the file and key path of a wrong value, and never converts out of range.
+// Typed readers: each names the file and key path of a wrong value, and never converts out of
+// range.
 std::string key_path(const std::string& where, const char* key) {
   return where + "." + key;
 }
@@ -83,8 +84,8 @@ long long integer_value(const json& v, const std::string& path, long long lo, lo
     throw InputError(path + ": expected an integer in " + range + ", got " + v.dump());
   if (v.is_number_unsigned() && v.get<std::uint64_t>() > static_cast<std::uint64_t>(hi))
     throw InputError(path + ": " + v.dump() + " is outside " + range);
-  const long long x = v.is_number_unsigned() ? static_cast<long long>(v.get<std::uint64_t>())
-                                             : v.get<long long>();
+  const long long x =
+      v.is_number_unsigned() ? static_cast<long long>(v.get<std::uint64_t>()) : v.get<long long>();
   if (x < lo || x > hi) throw InputError(path + ": " + v.dump() + " is outside " + range);
   return x;
 }
@@ -95,8 +96,8 @@ int get_int(const json& j, const char* key, const std::string& where, int fallba
   return v ? static_cast<int>(integer_value(*v, key_path(where, key), lo, hi)) : fallback;
 }
 
-float get_float(const json& j, const char* key, const std::string& where, float fallback,
-                float lo, float hi) {
+float get_float(const json& j, const char* key, const std::string& where, float fallback, float lo,
+                float hi) {
   const json* v = find(j, key);
   if (!v) return fallback;
   const std::string path = key_path(where, key);
@@ -214,7 +215,8 @@ void read_view(const json& v, const std::string& where, ViewState& view) {
   view.color = color == "cloud" ? ColorMode::by_cloud : ColorMode::by_class;
   const std::string pose = get_string(v, "pose", where, "selected");
   if (pose != "selected" && pose != "ground_truth" && pose != "identity")
-    throw InputError(where + ".pose: expected \"selected\", \"ground_truth\" or \"identity\", got \"" +
+    throw InputError(where +
+                     ".pose: expected \"selected\", \"ground_truth\" or \"identity\", got \"" +
                      pose + "\"");
   view.pose = pose == "ground_truth" ? PoseShown::ground_truth
               : pose == "identity"   ? PoseShown::identity

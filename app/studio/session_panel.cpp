@@ -56,7 +56,8 @@ void session_panel(UiContext& ui) {
   AppState& s = ui.state;
   ui::input_text("session", &s.session_path,
                  "Session file: data, parameters, camera, layers, level and layout.");
-  if (ui::button("save session", ImVec2(0, 0), "Writes the session file (Ctrl+S).")) ui.save_session();
+  if (ui::button("save session", ImVec2(0, 0), "Writes the session file (Ctrl+S)."))
+    ui.save_session();
   ImGui::SameLine();
   if (ui::button("load session", ImVec2(0, 0), "Reads the session file (Ctrl+O)."))
     ui.load_session();

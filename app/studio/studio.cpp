@@ -18,7 +18,7 @@
 namespace pagor::studio {
 namespace {
 
-constexpr float kFontSize = 15.0f;  // [px]
+constexpr float kFontSize = 15.0f;                                          // [px]
 constexpr float kStatusHeight = 28.0f, kSplitter = 6.0f, kMinPane = 80.0f;  // [px]
 constexpr float kMaxLeftShare = 0.45f;  // of the window width: the view keeps the larger part
 constexpr ImGuiWindowFlags kPanelFlags =
@@ -76,14 +76,17 @@ bool Studio::init(std::string& error) {
   if (io.KeyMap[ImGuiKey_Tab] < 0) {
     // No platform backend (headless): map ImGui's named keys to the same codes GLFW uses.
     const std::pair<ImGuiKey_, int> keys[] = {
-        {ImGuiKey_Tab, 258},       {ImGuiKey_LeftArrow, 263}, {ImGuiKey_RightArrow, 262},
-        {ImGuiKey_UpArrow, 265},   {ImGuiKey_DownArrow, 264}, {ImGuiKey_PageUp, 266},
-        {ImGuiKey_PageDown, 267},  {ImGuiKey_Home, 268},      {ImGuiKey_End, 269},
-        {ImGuiKey_Insert, 260},    {ImGuiKey_Delete, 261},    {ImGuiKey_Backspace, 259},
-        {ImGuiKey_Space, 32},      {ImGuiKey_Enter, 257},     {ImGuiKey_Escape, 256},
-        {ImGuiKey_KeyPadEnter, 335}, {ImGuiKey_A, 'A'},       {ImGuiKey_C, 'C'},
-        {ImGuiKey_V, 'V'},         {ImGuiKey_X, 'X'},         {ImGuiKey_Y, 'Y'},
-        {ImGuiKey_Z, 'Z'}};
+        {ImGuiKey_Tab, 258},        {ImGuiKey_LeftArrow, 263},
+        {ImGuiKey_RightArrow, 262}, {ImGuiKey_UpArrow, 265},
+        {ImGuiKey_DownArrow, 264},  {ImGuiKey_PageUp, 266},
+        {ImGuiKey_PageDown, 267},   {ImGuiKey_Home, 268},
+        {ImGuiKey_End, 269},        {ImGuiKey_Insert, 260},
+        {ImGuiKey_Delete, 261},     {ImGuiKey_Backspace, 259},
+        {ImGuiKey_Space, 32},       {ImGuiKey_Enter, 257},
+        {ImGuiKey_Escape, 256},     {ImGuiKey_KeyPadEnter, 335},
+        {ImGuiKey_A, 'A'},          {ImGuiKey_C, 'C'},
+        {ImGuiKey_V, 'V'},          {ImGuiKey_X, 'X'},
+        {ImGuiKey_Y, 'Y'},          {ImGuiKey_Z, 'Z'}};
     for (const auto& [k, code] : keys) io.KeyMap[k] = code;
   }
   const Resource font = resource("ui_font.ttf");
@@ -170,15 +173,22 @@ void Studio::handle_shortcuts(UiContext& ui) {
   ViewState& v = state_.view;
   for (const KeyPress& k : keys) {
     if (k.ctrl) {
-      if (k.key == key::Z && k.shift) redo();
-      else if (k.key == key::Z) undo();
-      else if (k.key == key::Y) redo();
-      else if (k.key == key::S) save_session_now();
-      else if (k.key == key::O) load_session_now();
+      if (k.key == key::Z && k.shift)
+        redo();
+      else if (k.key == key::Z)
+        undo();
+      else if (k.key == key::Y)
+        redo();
+      else if (k.key == key::S)
+        save_session_now();
+      else if (k.key == key::O)
+        load_session_now();
       continue;
     }
     switch (k.key) {
-      case key::F: state_.camera_fitted = false; break;
+      case key::F:
+        state_.camera_fitted = false;
+        break;
       case key::R: {
         const bool top_down = state_.camera.top_down;
         state_.camera = Camera{};
@@ -190,13 +200,24 @@ void Studio::handle_shortcuts(UiContext& ui) {
         state_.camera.top_down = !state_.camera.top_down;
         state_.camera_fitted = false;
         break;
-      case key::S: state_.want_screenshot = true; break;
-      case key::Left: step_pair(ui, state_.pair_index < 0 ? 0 : -1); break;
-      case key::Right: step_pair(ui, 1); break;
+      case key::S:
+        state_.want_screenshot = true;
+        break;
+      case key::Left:
+        step_pair(ui, state_.pair_index < 0 ? 0 : -1);
+        break;
+      case key::Right:
+        step_pair(ui, 1);
+        break;
       case key::F1:
-      case key::H: state_.show_help = !state_.show_help; break;
-      case key::Escape: state_.show_help = false; break;
-      default: break;
+      case key::H:
+        state_.show_help = !state_.show_help;
+        break;
+      case key::Escape:
+        state_.show_help = false;
+        break;
+      default:
+        break;
     }
   }
   // + and - as characters: the same on every keyboard layout and on the keypad.
@@ -252,9 +273,10 @@ void Studio::layout_windows(UiContext& ui, float W, float H) {
   place(left, 0, kSplitter, H);
   if (ImGui::Begin("##vsplit", nullptr, kBarFlags)) {
     const ImVec2 d = ui::splitter("##left_splitter", ImVec2(kSplitter, H), true);
-    layout.left_width = std::clamp(left + d.x, ViewLimits::min_left_width,
-                                   std::min(ViewLimits::max_left_width, std::max(
-                                       ViewLimits::min_left_width, kMaxLeftShare * W)));
+    layout.left_width =
+        std::clamp(left + d.x, ViewLimits::min_left_width,
+                   std::min(ViewLimits::max_left_width,
+                            std::max(ViewLimits::min_left_width, kMaxLeftShare * W)));
   }
   ImGui::End();
   const float x = left + kSplitter, w = std::max(1.0f, W - x);
@@ -264,8 +286,8 @@ void Studio::layout_windows(UiContext& ui, float W, float H) {
   if (ImGui::Begin("##hsplit", nullptr, kBarFlags)) {
     const ImVec2 d = ui::splitter("##scene_splitter", ImVec2(w, kSplitter), false);
     if (d.y != 0)
-      layout.scene_share = std::clamp((scene_h + d.y) / H, ViewLimits::min_scene_share,
-                                      ViewLimits::max_scene_share);
+      layout.scene_share =
+          std::clamp((scene_h + d.y) / H, ViewLimits::min_scene_share, ViewLimits::max_scene_share);
   }
   ImGui::End();
 

@@ -29,17 +29,28 @@ void maybe_tip(const char* tip) {
 
 const char* to_string(WidgetKind kind) {
   switch (kind) {
-    case WidgetKind::button: return "button";
-    case WidgetKind::checkbox: return "checkbox";
-    case WidgetKind::radio: return "radio";
-    case WidgetKind::slider: return "slider";
-    case WidgetKind::input_text: return "input_text";
-    case WidgetKind::input_int: return "input_int";
-    case WidgetKind::combo: return "combo";
-    case WidgetKind::selectable: return "selectable";
-    case WidgetKind::tree_node: return "tree_node";
-    case WidgetKind::header: return "header";
-    case WidgetKind::splitter: return "splitter";
+    case WidgetKind::button:
+      return "button";
+    case WidgetKind::checkbox:
+      return "checkbox";
+    case WidgetKind::radio:
+      return "radio";
+    case WidgetKind::slider:
+      return "slider";
+    case WidgetKind::input_text:
+      return "input_text";
+    case WidgetKind::input_int:
+      return "input_int";
+    case WidgetKind::combo:
+      return "combo";
+    case WidgetKind::selectable:
+      return "selectable";
+    case WidgetKind::tree_node:
+      return "tree_node";
+    case WidgetKind::header:
+      return "header";
+    case WidgetKind::splitter:
+      return "splitter";
   }
   return "?";
 }
@@ -179,8 +190,8 @@ bool slider_int(const char* label, int* v, int lo, int hi, bool log, const char*
 bool slider_double(const char* label, double* v, double lo, double hi, const char* fmt, bool log,
                    const char* tip) {
   float f = static_cast<float>(std::clamp(*v, lo, hi));
-  const bool changed = slider_float(label, &f, static_cast<float>(lo), static_cast<float>(hi), fmt,
-                                    log, tip);
+  const bool changed =
+      slider_float(label, &f, static_cast<float>(lo), static_cast<float>(hi), fmt, log, tip);
   if (changed) *v = std::clamp(shortest(f), lo, hi);
   return changed;
 }

@@ -36,13 +36,13 @@ struct WidgetRecord {
   std::string label;   ///< as passed to ImGui (with any ## suffix)
   std::string window;  ///< name of the ImGui window it is in
   WidgetKind kind = WidgetKind::button;
-  ImVec2 min, max;              ///< screen rectangle [px]
-  ImVec2 clip_min, clip_max;    ///< visible part of its window [px]
-  bool visible = false;         ///< inside its window's visible part
-  bool has_tooltip = false;     ///< a sentence explains it on hover
-  bool enabled = true;          ///< false when drawn disabled
-  float lo = 0, hi = 0;         ///< slider / input range (0, 0 when none)
-  float frame_w = 0;            ///< width of the frame (sliders, fields: without the label) [px]
+  ImVec2 min, max;            ///< screen rectangle [px]
+  ImVec2 clip_min, clip_max;  ///< visible part of its window [px]
+  bool visible = false;       ///< inside its window's visible part
+  bool has_tooltip = false;   ///< a sentence explains it on hover
+  bool enabled = true;        ///< false when drawn disabled
+  float lo = 0, hi = 0;       ///< slider / input range (0, 0 when none)
+  float frame_w = 0;          ///< width of the frame (sliders, fields: without the label) [px]
 };
 
 /// Two widgets of one frame with the same ImGui ID.

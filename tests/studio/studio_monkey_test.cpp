@@ -36,11 +36,13 @@ void run_monkey(UiDriver& d, std::uint32_t seed, int events) {
     return std::uniform_real_distribution<float>(a, b)(rng);
   };
   const auto pick = [&](int n) { return std::uniform_int_distribution<int>(0, n - 1)(rng); };
-  const int key_codes[] = {'F', 'R', 'T', 'S', 'H', 'Z', 'Y', 'A', 'O', keys::Left, keys::Right,
-                           keys::Enter, keys::Escape, keys::Backspace, keys::Tab, keys::F1};
-  const char32_t text[] = {U'0', U'1', U'5', U'9', U'.', U'-', U'+', U'e', U'x', U'a', U'/',
-                           U' ', U'\u00e9', U'\u03b5', U'='};
-  const std::pair<int, int> sizes[] = {{640, 480}, {800, 600}, {1024, 768}, {320, 240},
+  const int key_codes[] = {
+      'F',       'R',     'T',        'S',         'H',         'Z',          'Y',
+      'A',       'O',     keys::Left, keys::Right, keys::Enter, keys::Escape, keys::Backspace,
+      keys::Tab, keys::F1};
+  const char32_t text[] = {U'0', U'1', U'5', U'9', U'.',      U'-',      U'+', U'e',
+                           U'x', U'a', U'/', U' ', U'\u00e9', U'\u03b5', U'='};
+  const std::pair<int, int> sizes[] = {{640, 480},  {800, 600},   {1024, 768}, {320, 240},
                                        {1280, 720}, {2560, 1440}, {1920, 1080}};
   const int start = d.events();
   int n = 0;
@@ -71,7 +73,8 @@ void run_monkey(UiDriver& d, std::uint32_t seed, int events) {
                   pick(8) == 0);
     } else if (what < 90) {  // characters (fields take them; + and - are shortcuts)
       std::u32string s;
-      for (int i = 0, k = 1 + pick(6); i < k; ++i) s += text[pick(static_cast<int>(std::size(text)))];
+      for (int i = 0, k = 1 + pick(6); i < k; ++i)
+        s += text[pick(static_cast<int>(std::size(text)))];
       d.chars(s);
       d.frame();
     } else if (what < 92) {  // a window resize

@@ -118,8 +118,13 @@ TEST_CASE("window sizes from 320x240 to 2560x1440 keep the layout inside the win
   TempDir tmp;
   UiDriver d(synthetic_state(tmp), 800, 600);
   d.settle();
-  for (auto [w, h] : {std::pair{640, 480}, {2560, 1440}, {800, 600}, {1920, 1080}, {320, 240},
-                      {1280, 720}, {1024, 768}}) {
+  for (auto [w, h] : {std::pair{640, 480},
+                      {2560, 1440},
+                      {800, 600},
+                      {1920, 1080},
+                      {320, 240},
+                      {1280, 720},
+                      {1024, 768}}) {
     d.resize(w, h);
     d.frames(3);
     const float left = d.state().layout.left_width;
@@ -216,7 +221,10 @@ TEST_CASE("epsilon editing: clamped at the widget - insert and delete anywhere -
   REQUIRE(start.size() == 4);
 
   // Typed values out of range are clamped to the fixed range, never kept.
-  const auto* e1 = d.find("\xce\xb5" "1", "Pagor Studio");
+  const auto* e1 = d.find(
+      "\xce\xb5"
+      "1",
+      "Pagor Studio");
   REQUIRE(e1);
   const ImGuiID e1_id = e1->id;
   REQUIRE(d.type_into_slider(e1_id, U"0"));
@@ -228,8 +236,14 @@ TEST_CASE("epsilon editing: clamped at the widget - insert and delete anywhere -
   CHECK(th.back() == hi);
   CHECK(std::adjacent_find(th.begin(), th.end()) == th.end());
   // The range is fixed: it does not follow the neighbours.
-  REQUIRE(d.find("\xce\xb5" "2", "Pagor Studio"));
-  const studio::ui::WidgetRecord e2v = *d.find("\xce\xb5" "2", "Pagor Studio");
+  REQUIRE(
+      d.find("\xce\xb5"
+             "2",
+             "Pagor Studio"));
+  const studio::ui::WidgetRecord e2v = *d.find(
+      "\xce\xb5"
+      "2",
+      "Pagor Studio");
   const auto* e2 = &e2v;
   CHECK(e2->lo == Approx(lo));
   CHECK(e2->hi == Approx(hi));
@@ -294,7 +308,6 @@ TEST_CASE("an ImGui assertion fails the test with its message", "[.assert-demo]"
   ImGui::End();  // IM_ASSERT inside ImGui: the handler prints it and exits non-zero
 }
 
-
 #ifdef PAGOR_HAVE_KITTI
 TEST_CASE("every parameter and view widget explains itself in a tooltip") {
   TempDir tmp;
@@ -326,7 +339,8 @@ TEST_CASE("every parameter and view widget explains itself in a tooltip") {
   d.frames(2);
   bool tooltip_window = false;
   for (ImGuiWindow* w : GImGui->Windows)
-    tooltip_window = tooltip_window || (w->Active && std::string(w->Name).rfind("##Tooltip", 0) == 0);
+    tooltip_window =
+        tooltip_window || (w->Active && std::string(w->Name).rfind("##Tooltip", 0) == 0);
   CHECK(tooltip_window);
 }
 #endif

@@ -9,8 +9,8 @@
 #include <cstdio>
 #include <cstdlib>
 
-#include "panels.hpp"
 #include "pagor/errors.hpp"
+#include "panels.hpp"
 
 namespace pagor::test {
 namespace {
@@ -61,17 +61,15 @@ void set_context(const std::string& what) {
 // action the driver was performing, instead of a bare abort.
 extern "C" void __assert_fail(const char* assertion, const char* file, unsigned int line,
                               const char* function) noexcept {
-  std::fprintf(stderr,
-               "\nFAILED: assertion failed: %s\n  at %s:%u (%s)\n  while: %s\n", assertion, file,
-               line, function ? function : "?", pagor::test::g_context.c_str());
+  std::fprintf(stderr, "\nFAILED: assertion failed: %s\n  at %s:%u (%s)\n  while: %s\n", assertion,
+               file, line, function ? function : "?", pagor::test::g_context.c_str());
   std::fflush(stderr);
   std::_Exit(86);
 }
 
 namespace pagor::test {
 
-UiDriver::UiDriver(studio::AppState state, int width, int height)
-    : width_(width), height_(height) {
+UiDriver::UiDriver(studio::AppState state, int width, int height) : width_(width), height_(height) {
   context_ = std::make_unique<studio::HeadlessContext>(width, height);
   std::string error;
   if (!gl_.load(studio::HeadlessContext::proc, error)) FAIL(error);
@@ -124,8 +122,8 @@ void UiDriver::settle(double timeout_s) {
     const studio::WorkerStatus st = studio_->worker().status();
     if (!st.busy && st.submitted == st.finished) break;
     if (std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() > timeout_s)
-      FAIL("the worker did not finish within " << timeout_s << " s after: " << action_
-                                                << " (still " << st.activity << ")");
+      FAIL("the worker did not finish within " << timeout_s << " s after: " << action_ << " (still "
+                                               << st.activity << ")");
     studio_->worker().wait_idle(0.05);
     frame();
   }
@@ -288,8 +286,7 @@ bool UiDriver::scene_rect(ImVec2& min, ImVec2& max) const {
 
 void UiDriver::check_invariants() {
   const auto fail = [this](const std::string& what) {
-    FAIL(what << "\n  after: " << action_ << " (event " << events_ << ", frame " << frames_
-              << ")");
+    FAIL(what << "\n  after: " << action_ << " (event " << events_ << ", frame " << frames_ << ")");
   };
   for (const auto& d : studio::ui::registry().duplicates()) fail(d.describe());
   const studio::AppState& s = studio_->state();

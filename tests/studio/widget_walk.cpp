@@ -140,18 +140,28 @@ int exercise_every_widget(UiDriver& d, const std::function<void()>& keep, int ma
     if (!next) break;
     const WidgetRecord w = *next;
     if (std::getenv("PAGOR_UI_TRACE"))
-      std::fprintf(stderr, "act %d: %s '%s' in '%s' (%zu widgets)\n", actions,
-                   to_string(w.kind), w.label.c_str(), w.window.c_str(), d.widgets().size());
+      std::fprintf(stderr, "act %d: %s '%s' in '%s' (%zu widgets)\n", actions, to_string(w.kind),
+                   w.label.c_str(), w.window.c_str(), d.widgets().size());
     done.insert(w.id);
     ++actions;
     const std::string config_before = config_to_json(d.state().config, -1);
     const std::size_t undo_before = d.studio().param_history().undo_steps();
     switch (w.kind) {
-      case WidgetKind::slider: act_on_slider(d, w); break;
-      case WidgetKind::input_text: act_on_text(d, w); break;
-      case WidgetKind::input_int: act_on_int(d, w); break;
-      case WidgetKind::combo: act_on_combo(d, w); break;
-      case WidgetKind::splitter: act_on_splitter(d, w); break;
+      case WidgetKind::slider:
+        act_on_slider(d, w);
+        break;
+      case WidgetKind::input_text:
+        act_on_text(d, w);
+        break;
+      case WidgetKind::input_int:
+        act_on_int(d, w);
+        break;
+      case WidgetKind::combo:
+        act_on_combo(d, w);
+        break;
+      case WidgetKind::splitter:
+        act_on_splitter(d, w);
+        break;
       case WidgetKind::header:
       case WidgetKind::tree_node:  // closed and opened again, so that what it holds is walked too
         // Both transitions, ending open: fewer widgets after a click means it closed.
@@ -162,7 +172,9 @@ int exercise_every_widget(UiDriver& d, const std::function<void()>& keep, int ma
           if (i >= 1 && d.widgets().size() > before) break;
         }
         break;
-      default: d.click_id(w.id); break;
+      default:
+        d.click_id(w.id);
+        break;
     }
     // Parameter changes are undone with Ctrl+Z, which must give back exactly the configuration
     // before the action (and keeps the walk from piling up slow settings).
