@@ -29,9 +29,27 @@ struct ViewState {
   Layers layers;
   float point_size = 2.0f;      ///< dense clouds [px]
   float landmark_size = 11.0f;  ///< landmarks [px]
+  float line_width = 2.5f;      ///< correspondence lines [px]
+  bool grid = true;             ///< ground grid, axes and scale bar
+  bool legend = true;           ///< colour legend
   ColorMode color = ColorMode::by_class;
   PoseShown pose = PoseShown::selected;  ///< how the source cloud is placed
   int level = -1;                        ///< pyramid level shown; -1 follows the selected one
+};
+
+/// Where the splitters are; kept in the session.
+struct LayoutState {
+  float left_width = 330.0f;  ///< left panel [px] (clamped to the window)
+  float scene_share = 0.6f;   ///< share of the height right of the panel taken by the 3D view
+};
+
+/// Limits of the view settings (widgets and the session reader enforce them).
+struct ViewLimits {
+  static constexpr float min_point_size = 1.0f, max_point_size = 10.0f;        ///< [px]
+  static constexpr float min_landmark_size = 3.0f, max_landmark_size = 30.0f;  ///< [px]
+  static constexpr float min_line_width = 1.0f, max_line_width = 8.0f;         ///< [px]
+  static constexpr float min_left_width = 180.0f, max_left_width = 1200.0f;    ///< [px]
+  static constexpr float min_scene_share = 0.2f, max_scene_share = 0.9f;
 };
 
 struct AppState {
@@ -44,6 +62,7 @@ struct AppState {
 
   Config config = default_config();
   ViewState view;
+  LayoutState layout;
   Camera camera;
   bool camera_fitted = false;  ///< false: fit to the data when it arrives
 
@@ -52,6 +71,7 @@ struct AppState {
   std::string message;  ///< last message for the user
   bool message_is_error = false;
   bool want_screenshot = false;
+  bool show_help = false;          ///< the shortcut overlay (F1 or H)
   int width = 1280, height = 720;  ///< window or image size [px]
 };
 

@@ -2,7 +2,6 @@
 
 #include <GLFW/glfw3.h>
 #include <backends/imgui_impl_glfw.h>
-#include <dlfcn.h>
 #include <imgui.h>
 
 #include <algorithm>
@@ -13,6 +12,7 @@
 
 #include "common/args.hpp"
 #include "common/pair_args.hpp"
+#include "headless.hpp"
 #include "pagor/errors.hpp"
 #include "pagor/kitti.hpp"
 #include "studio.hpp"
@@ -20,27 +20,6 @@
 namespace pagor::studio {
 namespace {
 
-// OSMesa, opened at run time so that the window build never loads it (its gl* symbols would
-// otherwise sit beside GLX's in one process).
-constexpr int kOsmesaFormat = 0x22;       // OSMESA_FORMAT
-constexpr int kOsmesaRgba = 0x1908;       // OSMESA_RGBA (GL_RGBA)
-constexpr int kOsmesaDepthBits = 0x30;    // OSMESA_DEPTH_BITS
-constexpr int kOsmesaProfile = 0x33;      // OSMESA_PROFILE
-constexpr int kOsmesaCoreProfile = 0x34;  // OSMESA_CORE_PROFILE
-constexpr int kOsmesaMajor = 0x36;        // OSMESA_CONTEXT_MAJOR_VERSION
-constexpr int kOsmesaMinor = 0x37;        // OSMESA_CONTEXT_MINOR_VERSION
-
-struct OsMesa {
-  void* lib = nullptr;
-  void* (*create)(const int*, void*) = nullptr;
-  unsigned char (*make_current)(void*, void*, unsigned int, int, int) = nullptr;
-  void (*destroy)(void*) = nullptr;
-  void* (*get_proc)(const char*) = nullptr;
-};
-OsMesa g_osmesa;
-void* osmesa_proc(const char* name) {
-  return g_osmesa.get_proc(name);
-}
 void* glfw_proc(const char* name) {
   return reinterpret_cast<void*>(glfwGetProcAddress(name));
 }
@@ -91,10 +70,12 @@ AppState state_from_args(const cli::Args& args) {
   }
   if (args.has("size")) {
     int w = 0, h = 0;
-    if (std::sscanf(args.get("size").c_str(), "%dx%d", &w, &h) != 2 || w < 320 || h < 240 ||
-        w > 8192 || h > 8192)
-      throw cli::UsageError("--size: expected WxH between 320x240 and 8192x8192, got '" +
-                            args.get("size") + "'");
+    char rest = 0;
+    if (std::sscanf(args.get("size").c_str(), "%dx%d%c", &w, &h, &rest) != 2 || w < kMinWidth ||
+        h < kMinHeight || w > kMaxSide || h > kMaxSide)
+      throw cli::UsageError("--size: expected WxH between " + std::to_string(kMinWidth) + "x" +
+                            std::to_string(kMinHeight) + " and " + std::to_string(kMaxSide) + "x" +
+                            std::to_string(kMaxSide) + ", got '" + args.get("size") + "'");
     s.width = w;
     s.height = h;
   }
@@ -104,86 +85,57 @@ AppState state_from_args(const cli::Args& args) {
 int run_headless(const cli::Args& args, AppState state) {
   if (!args.has("screenshot") && !args.has("frames"))
     throw cli::UsageError("--headless needs --screenshot OUT.png (and/or --frames N)");
-  g_osmesa.lib = dlopen("libOSMesa.so.8", RTLD_NOW | RTLD_LOCAL);
-  if (!g_osmesa.lib)
-    throw Error(std::string("cannot load OSMesa (install libosmesa6): ") + dlerror());
-  g_osmesa.create = reinterpret_cast<decltype(g_osmesa.create)>(
-      dlsym(g_osmesa.lib, "OSMesaCreateContextAttribs"));
-  g_osmesa.make_current =
-      reinterpret_cast<decltype(g_osmesa.make_current)>(dlsym(g_osmesa.lib, "OSMesaMakeCurrent"));
-  g_osmesa.destroy =
-      reinterpret_cast<decltype(g_osmesa.destroy)>(dlsym(g_osmesa.lib, "OSMesaDestroyContext"));
-  g_osmesa.get_proc =
-      reinterpret_cast<decltype(g_osmesa.get_proc)>(dlsym(g_osmesa.lib, "OSMesaGetProcAddress"));
-  if (!g_osmesa.create || !g_osmesa.make_current || !g_osmesa.destroy || !g_osmesa.get_proc)
-    throw Error("libOSMesa.so.8 lacks the OSMesa 11.2 context API");
-  const int attribs[] = {kOsmesaFormat,
-                         kOsmesaRgba,
-                         kOsmesaDepthBits,
-                         24,
-                         kOsmesaProfile,
-                         kOsmesaCoreProfile,
-                         kOsmesaMajor,
-                         3,
-                         kOsmesaMinor,
-                         3,
-                         0};
-  void* ctx = g_osmesa.create(attribs, nullptr);
-  if (!ctx) throw Error("OSMesa could not create an OpenGL 3.3 core context");
+  if (!state.have_data) throw Error("nothing to show: the session and the arguments name no data");
   const int w = state.width, h = state.height;
-  std::vector<unsigned char> buffer(static_cast<std::size_t>(w) * h * 4);
-  if (!g_osmesa.make_current(ctx, buffer.data(), GL_UNSIGNED_BYTE, w, h))
-    throw Error("OSMesaMakeCurrent failed");
-
+  HeadlessContext context(w, h);
   Gl gl;
   std::string error;
-  if (!gl.load(osmesa_proc, error)) throw Error(error);
+  if (!gl.load(HeadlessContext::proc, error)) throw Error(error);
   ImGui::CreateContext();
-  int rc = 0;
-  {
-    Studio studio(gl, std::move(state));
-    if (!studio.init(error)) throw Error(error);
-    studio.submit_data();
-    const double timeout =
-        args.has("timeout") ? cli::parse_int(args.get("timeout"), "--timeout") : 600;
-    // Wait for the pipeline, with a progress line on stderr.
-    const auto t0 = std::chrono::steady_clock::now();
-    while (!studio.worker().wait_idle(0.5)) {
-      const WorkerStatus st = studio.worker().status();
-      std::fprintf(stderr, "\r%-60s",
-                   (st.activity + " " + std::to_string(int(st.fraction * 100)) + " %").c_str());
-      if (std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() > timeout)
-        throw Error("the computation did not finish within " + std::to_string(int(timeout)) + " s");
-    }
-    std::fprintf(stderr, "\r%-60s\r", "");
-    if (!studio.worker().status().error.empty())
-      std::fprintf(stderr, "pagor-studio: warning: %s\n", studio.worker().status().error.c_str());
-    // A few frames: ImGui sizes auto-fitted items over the first frames.
-    for (int i = 0; i < 3; ++i) studio.frame(w, h);
-    if (args.has("screenshot")) {
-      if (!studio.screenshot(args.get("screenshot"), w, h, error)) throw Error(error);
-      std::printf("wrote %s (%dx%d, %s)\n", args.get("screenshot").c_str(), w, h,
-                  gl.describe().c_str());
-    }
-    if (args.has("frames")) {
-      const int n = std::max(1, cli::parse_int(args.get("frames"), "--frames"));
-      const int uploads = studio.scene().cloud_uploads();
-      std::vector<double> ms;
-      for (int i = 0; i < n; ++i) {
-        studio.frame(w, h);
-        ms.push_back(studio.last_frame_ms());
-      }
-      std::sort(ms.begin(), ms.end());
-      std::printf(
-          "frame time at %dx%d over %d frames: median %.1f ms, min %.1f ms, max %.1f ms; "
-          "cloud uploads during them: %d\n",
-          w, h, n, ms[ms.size() / 2], ms.front(), ms.back(),
-          studio.scene().cloud_uploads() - uploads);
-    }
+  struct ImGuiGuard {
+    ~ImGuiGuard() { ImGui::DestroyContext(); }
+  } guard;
+  Studio studio(gl, std::move(state));
+  if (!studio.init(error)) throw Error(error);
+  studio.submit_data();
+  const double timeout =
+      args.has("timeout") ? cli::parse_int(args.get("timeout"), "--timeout") : 600;
+  // Wait for the pipeline, with a progress line on stderr.
+  const auto t0 = std::chrono::steady_clock::now();
+  while (!studio.worker().wait_idle(0.5)) {
+    const WorkerStatus st = studio.worker().status();
+    std::fprintf(stderr, "\r%-60s",
+                 (st.activity + " " + std::to_string(int(st.fraction * 100)) + " %").c_str());
+    if (std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() > timeout)
+      throw Error("the computation did not finish within " + std::to_string(int(timeout)) + " s");
   }
-  ImGui::DestroyContext();
-  g_osmesa.destroy(ctx);
-  return rc;
+  std::fprintf(stderr, "\r%-60s\r", "");
+  // A picture of a failed run is no result: say why and exit non-zero.
+  if (!studio.worker().status().error.empty()) throw Error(studio.worker().status().error);
+  if (!studio.worker().snapshot()) throw Error("the run produced no result");
+  // A few frames: ImGui sizes auto-fitted items over the first frames.
+  for (int i = 0; i < 3; ++i) studio.frame(w, h);
+  if (args.has("screenshot")) {
+    if (!studio.screenshot(args.get("screenshot"), w, h, error)) throw Error(error);
+    std::printf("wrote %s (%dx%d, %s)\n", args.get("screenshot").c_str(), w, h,
+                gl.describe().c_str());
+  }
+  if (args.has("frames")) {
+    const int n = std::max(1, cli::parse_int(args.get("frames"), "--frames"));
+    const int uploads = studio.scene().cloud_uploads();
+    std::vector<double> ms;
+    for (int i = 0; i < n; ++i) {
+      studio.frame(w, h);
+      ms.push_back(studio.last_frame_ms());
+    }
+    std::sort(ms.begin(), ms.end());
+    std::printf(
+        "frame time at %dx%d over %d frames: median %.1f ms, min %.1f ms, max %.1f ms; "
+        "cloud uploads during them: %d\n",
+        w, h, n, ms[ms.size() / 2], ms.front(), ms.back(),
+        studio.scene().cloud_uploads() - uploads);
+  }
+  return 0;
 }
 
 int run_window(AppState state) {
@@ -205,9 +157,20 @@ int run_window(AppState state) {
   std::string error;
   if (!gl.load(glfw_proc, error)) throw Error(error);
   ImGui::CreateContext();
+  // Shortcut keys are queued from GLFW's callback (installed first, so that ImGui's backend
+  // chains to it): a tap shorter than a frame still counts.
+  static Studio* g_studio = nullptr;
+  glfwSetKeyCallback(window, [](GLFWwindow*, int key, int, int action, int mods) {
+    if (g_studio && action == GLFW_PRESS)
+      g_studio->queue_key(key, (mods & GLFW_MOD_CONTROL) != 0, (mods & GLFW_MOD_SHIFT) != 0);
+  });
   ImGui_ImplGlfw_InitForOpenGL(window, true);  // platform only: input, time, cursor
   {
     Studio studio(gl, std::move(state));
+    g_studio = &studio;
+    struct Reset {
+      ~Reset() { g_studio = nullptr; }
+    } reset;
     if (!studio.init(error)) throw Error(error);
     studio.submit_data();
     while (!glfwWindowShouldClose(window)) {
@@ -217,12 +180,6 @@ int run_window(AppState state) {
       if (w <= 0 || h <= 0) continue;
       ImGui_ImplGlfw_NewFrame();
       studio.frame(w, h);
-      if (studio.state().want_screenshot) {
-        studio.state().want_screenshot = false;
-        const bool ok = studio.screenshot(studio.state().screenshot_path, w, h, error);
-        studio.state().message = ok ? "wrote " + studio.state().screenshot_path : error;
-        studio.state().message_is_error = !ok;
-      }
       glfwSwapBuffers(window);
     }
   }

@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "app_state.hpp"
+#include "history.hpp"
 #include "scene_view.hpp"
 #include "worker.hpp"
 
@@ -20,13 +21,26 @@ struct UiContext {
   std::function<void()> submit_data;    ///< open state.data (and the current config)
   std::function<void()> submit_config;  ///< re-run with state.config
   SceneView& scene;
-  double frame_ms = 0.0;  ///< last frame's time
+  double frame_ms = 0.0;     ///< last frame's time
+  std::string config_error;  ///< why state.config is invalid (empty when valid)
+  std::string stale_reason;  ///< why the results shown are not those of state.config (or empty)
+  const RunHistory* runs = nullptr;
+  const ParamHistory* params = nullptr;
+  std::function<void()> undo, redo;
+  std::function<void()> save_session, load_session;  ///< state.session_path
 };
+
+/// Moves through the pairs file by `delta` (clamped) and opens that pair.
+void step_pair(UiContext& ui, int delta);
+/// The range the epsilon sliders span for a TRIM kind (fixed, log scale).
+std::pair<double, double> epsilon_range(TrimKind trim);
 
 void data_panel(UiContext& ui);
 void parameters_panel(UiContext& ui);
 void view_panel(UiContext& ui);
 void session_panel(UiContext& ui);
+/// Undo/redo and the last runs with their outcome.
+void history_panel(UiContext& ui);
 void pyramid_panel(UiContext& ui);
 void status_bar(UiContext& ui);
 /// The 3D view: renders the scene into its framebuffer, shows it, handles camera input and hover.

@@ -9,6 +9,7 @@
 
 #include "pagor/evaluation.hpp"
 #include "panels.hpp"
+#include "widgets.hpp"
 
 namespace pagor::studio {
 namespace {
@@ -16,41 +17,47 @@ namespace {
 const ImVec4 kGood(0.35f, 0.9f, 0.45f, 1.0f), kBad(1.0f, 0.4f, 0.4f, 1.0f),
     kDim(0.6f, 0.6f, 0.6f, 1.0f);
 
-void bar_chart(const Snapshot& s, int shown) {
-  ImGui::TextDisabled("score D per level [m], lower is better");
+// D per level, from zero. Bars are green / red by success when the ground truth is known (else
+// blue); the selected level is marked with * and the shown one outlined.
+void bar_chart(const Snapshot& s, int shown, const RunChanges& changes) {
+  ImGui::TextDisabled("score D per level [m], lower is better, axis from 0");
   const int n = static_cast<int>(s.levels.size());
-  // The axis starts at 80 % of the lowest D, so that differences of a few percent show.
-  double top = 0, low = HUGE_VAL;
+  double top = 0;
   for (const auto& l : s.levels)
-    if (std::isfinite(l.score)) {
-      top = std::max(top, l.score);
-      low = std::min(low, l.score);
-    }
-  const double base_value = std::isfinite(low) ? 0.8 * low : 0.0;
+    if (l.pose.valid && std::isfinite(l.score)) top = std::max(top, l.score);
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   const float width = ImGui::GetContentRegionAvail().x, label_h = 16.0f;
-  const float height = std::max(60.0f, ImGui::GetContentRegionAvail().y - label_h -
-                                           ImGui::GetTextLineHeightWithSpacing() - 4.0f);
+  const float height = std::clamp(
+      ImGui::GetContentRegionAvail().y * 0.55f - label_h - ImGui::GetTextLineHeightWithSpacing(),
+      40.0f, 220.0f);
   ImDrawList* dl = ImGui::GetWindowDrawList();
   dl->AddRectFilled(origin, ImVec2(origin.x + width, origin.y + height + label_h),
                     IM_COL32(30, 32, 38, 255));
+  const float base = origin.y + height;
+  dl->AddLine(ImVec2(origin.x, base), ImVec2(origin.x + width, base), IM_COL32(160, 160, 160, 255));
   const float slot = width / std::max(n, 1);
   for (int i = 0; i < n; ++i) {
     const auto& l = s.levels[static_cast<std::size_t>(i)];
     const float x0 = origin.x + slot * i + slot * 0.15f,
                 x1 = origin.x + slot * (i + 1) - slot * 0.15f;
-    const float base = origin.y + height;
-    char text[32];
-    if (std::isfinite(l.score) && top > 0) {
-      const float h =
-          static_cast<float>((l.score - base_value) / (top - base_value)) * (height - 18.0f);
-      const ImU32 color =
-          i == s.selected ? IM_COL32(90, 220, 120, 255) : IM_COL32(90, 130, 200, 255);
+    char text[48];
+    if (l.pose.valid && std::isfinite(l.score) && top > 0) {
+      const float h = static_cast<float>(l.score / top) * (height - 18.0f);
+      const ImU32 color = !l.error           ? IM_COL32(90, 130, 200, 255)
+                          : l.error->success ? IM_COL32(80, 200, 110, 255)
+                                             : IM_COL32(215, 80, 80, 255);
       dl->AddRectFilled(ImVec2(x0, base - h), ImVec2(x1, base), color);
       if (i == shown)
         dl->AddRect(ImVec2(x0 - 2, base - h - 2), ImVec2(x1 + 2, base),
                     IM_COL32(255, 255, 255, 255), 0, 0, 2.0f);
-      std::snprintf(text, sizeof(text), "%.0f", l.score);
+      const auto k = static_cast<std::size_t>(i);
+      if (k < changes.levels.size() && changes.levels[k].d_delta &&
+          std::abs(*changes.levels[k].d_delta) > 1e-9)
+        std::snprintf(text, sizeof(text), "%.0f (%+.0f)", l.score, *changes.levels[k].d_delta);
+      else
+        std::snprintf(text, sizeof(text), "%.0f", l.score);
+      if (ImGui::CalcTextSize(text).x > slot * 0.95f)  // too narrow for the delta
+        std::snprintf(text, sizeof(text), "%.0f", l.score);
       dl->AddText(ImVec2(x0, base - h - 15.0f), IM_COL32(220, 220, 220, 255), text);
     } else {
       dl->AddText(ImVec2(x0, base - 16.0f), IM_COL32(255, 110, 110, 255), "invalid");
@@ -59,7 +66,12 @@ void bar_chart(const Snapshot& s, int shown) {
     dl->AddText(ImVec2(x0, base + 1.0f), IM_COL32(200, 200, 200, 255), text);
   }
   ImGui::Dummy(ImVec2(width, height + label_h));
-  ImGui::TextDisabled("axis from %.0f m", base_value);
+  if (const auto m = score_margin(s))
+    ImGui::Text("margin %.0f m (%.2g %%): L%d %.0f vs L%d %.0f", m->second - m->best,
+                m->best > 0 ? 100.0 * (m->second - m->best) / m->best : 0.0, m->best_level, m->best,
+                m->second_level, m->second);
+  else
+    ImGui::TextDisabled("margin: fewer than two valid levels");
 }
 
 }  // namespace
@@ -70,6 +82,21 @@ void pyramid_panel(UiContext& ui) {
     ImGui::TextDisabled("no result yet: open data on the left");
     return;
   }
+  const RunChanges empty;
+  const RunChanges& changes = ui.runs ? ui.runs->changes() : empty;
+  if (!ui.stale_reason.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.75f, 0.25f, 1.0f));
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::Text("STALE: results below are from an earlier run (%s)", ui.stale_reason.c_str());
+    ImGui::PopTextWrapPos();
+    ImGui::PopStyleColor();
+  } else if (changes.selected_changed()) {
+    ImGui::TextColored(ImVec4(1.0f, 0.85f, 0.3f, 1.0f),
+                       "last run changed the selection: \xce\xb5 %.3g (L%d) -> \xce\xb5 %.3g (L%d)",
+                       changes.selected_eps_before, changes.selected_before,
+                       changes.selected_eps_after, changes.selected_after);
+  }
+  ImGui::PushStyleVar(ImGuiStyleVar_Alpha, ui.stale_reason.empty() ? 1.0f : 0.55f);
   ImGui::Text("%s", s->description.c_str());
   std::size_t lm_s = 0, lm_t = 0;
   for (const auto& c : s->source_landmarks.classes)
@@ -84,12 +111,14 @@ void pyramid_panel(UiContext& ui) {
   const bool gt = s->ground_truth.has_value();
   const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_Borders |
                                 ImGuiTableFlags_ScrollX | ImGuiTableFlags_SizingFixedFit;
-  const int columns = gt ? 11 : 8;
+  const int columns = gt ? 12 : 9;
   const float table_h =
       ImGui::GetTextLineHeightWithSpacing() * (static_cast<float>(s->levels.size()) + 2.4f);
   if (ImGui::BeginTable("pyramid", columns, flags, ImVec2(0, table_h))) {
     ImGui::TableSetupScrollFreeze(1, 1);
-    for (const char* h : {"level", "\xce\xb5", "verts", "edges", "clique", "D [m]"})
+    for (const char* h : {"level", "\xce\xb5", "verts", "edges", "clique", "D [m]",
+                          "\xce\x94"
+                          "D"})
       ImGui::TableSetupColumn(h);
     if (gt) {
       ImGui::TableSetupColumn("t err [m]");
@@ -101,11 +130,20 @@ void pyramid_panel(UiContext& ui) {
     ImGui::TableHeadersRow();
     for (int i = 0; i < static_cast<int>(s->levels.size()); ++i) {
       const LevelView& l = s->levels[static_cast<std::size_t>(i)];
+      const LevelChange* change = static_cast<std::size_t>(i) < changes.levels.size()
+                                      ? &changes.levels[static_cast<std::size_t>(i)]
+                                      : nullptr;
       ImGui::TableNextRow();
+      const bool flipped =
+          changes.comparable && change &&
+          (change->success_flipped || change->validity_flipped ||
+           (changes.selected_changed() &&
+            (l.epsilon == changes.selected_eps_before || i == changes.selected_after)));
+      if (flipped) ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg1, IM_COL32(120, 95, 20, 160));
       ImGui::TableNextColumn();
       char label[32];
       std::snprintf(label, sizeof(label), "%s%d", i == s->selected ? "* " : "  ", i);
-      if (ImGui::Selectable(label, i == shown, ImGuiSelectableFlags_SpanAllColumns))
+      if (ui::selectable(label, i == shown, ImGuiSelectableFlags_SpanAllColumns))
         ui.state.view.level = i;
       ImGui::TableNextColumn();
       ImGui::Text("%.3f", l.epsilon);
@@ -120,6 +158,9 @@ void pyramid_panel(UiContext& ui) {
         ImGui::Text("%.1f", l.score);
       else
         ImGui::TextColored(kDim, "invalid");
+      ImGui::TableNextColumn();
+      if (changes.comparable && change && change->d_delta && std::abs(*change->d_delta) > 1e-9)
+        ImGui::TextColored(*change->d_delta < 0 ? kGood : kBad, "%+.1f", *change->d_delta);
       if (gt) {
         ImGui::TableNextColumn();
         if (l.error) ImGui::Text("%.2f", l.error->translation);
@@ -127,7 +168,9 @@ void pyramid_panel(UiContext& ui) {
         if (l.error) ImGui::Text("%.2f", l.error->rotation_deg);
         ImGui::TableNextColumn();
         if (l.error)
-          ImGui::TextColored(l.error->success ? kGood : kBad, l.error->success ? "yes" : "no");
+          ImGui::TextColored(l.error->success ? kGood : kBad, "%s%s",
+                             l.error->success ? "yes" : "no",
+                             change && change->success_flipped ? " (flipped)" : "");
       }
       ImGui::TableNextColumn();
       if (l.pose.valid) {
@@ -149,6 +192,7 @@ void pyramid_panel(UiContext& ui) {
   ImGui::EndChild();
   ImGui::SameLine();
   ImGui::BeginChild("chart", ImVec2(0, 0));
+  bar_chart(*s, shown, changes);
   if (shown >= 0) {
     const LevelView& l = s->levels[static_cast<std::size_t>(shown)];
     ImGui::Spacing();
@@ -175,8 +219,8 @@ void pyramid_panel(UiContext& ui) {
     ImGui::SameLine();
     ImGui::TextDisabled("bound: %s", s->upper_bound ? "yes" : "no");
   }
-  bar_chart(*s, shown);
   ImGui::EndChild();
+  ImGui::PopStyleVar();
 }
 
 }  // namespace pagor::studio

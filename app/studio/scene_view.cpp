@@ -1,5 +1,6 @@
 #include "scene_view.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <nlohmann/json.hpp>
@@ -78,8 +79,8 @@ bool SceneView::init(const Gl& gl, std::string& error) {
   u_use_uniform_ = gl.GetUniformLocation(program_, "u_use_uniform_color");
   u_color_ = gl.GetUniformLocation(program_, "u_color");
   u_round_ = gl.GetUniformLocation(program_, "u_round");
-  for (Buffer* b : {&source_, &target_, &landmarks_src_, &landmarks_tgt_, &keypoints_src_,
-                    &keypoints_tgt_, &lines_}) {
+  for (Buffer* b :
+       {&source_, &target_, &landmarks_src_, &landmarks_tgt_, &keypoints_src_, &keypoints_tgt_}) {
     gl.GenVertexArrays(1, &b->vao);
     gl.GenBuffers(1, &b->vbo);
     gl.BindVertexArray(b->vao);
@@ -96,8 +97,8 @@ bool SceneView::init(const Gl& gl, std::string& error) {
 
 void SceneView::shutdown() {
   if (!gl_) return;
-  for (Buffer* b : {&source_, &target_, &landmarks_src_, &landmarks_tgt_, &keypoints_src_,
-                    &keypoints_tgt_, &lines_}) {
+  for (Buffer* b :
+       {&source_, &target_, &landmarks_src_, &landmarks_tgt_, &keypoints_src_, &keypoints_tgt_}) {
     gl_->DeleteBuffers(1, &b->vbo);
     gl_->DeleteVertexArrays(1, &b->vao);
   }
@@ -134,7 +135,7 @@ void SceneView::update(const Snapshot& s, const ViewState& view, const Transform
     ++cloud_uploads_;
   }
 
-  // Landmarks and lines: small; again when the snapshot, the level, the pose or the layers change.
+  // Landmarks: small; again when the snapshot, the level, the pose or the colouring change.
   const int level = shown_level(view, s.selected, static_cast<int>(s.levels.size()));
   std::string key = std::to_string(level) + (view.layers.all_correspondences ? "a" : "c") +
                     (view.color == ColorMode::by_class ? "k" : "s");
@@ -171,30 +172,20 @@ void SceneView::update(const Snapshot& s, const ViewState& view, const Transform
          landmark_vertices(s.source_landmarks, used_src, true, LandmarkKind::keypoint));
   upload(keypoints_tgt_,
          landmark_vertices(s.target_landmarks, used_tgt, false, LandmarkKind::keypoint));
+}
 
-  std::vector<float> lines;
-  if (level >= 0) {
-    std::vector<char> in_clique(s.correspondences.size(), 0);
-    for (int v : s.levels[static_cast<std::size_t>(level)].clique)
-      in_clique[static_cast<std::size_t>(v)] = 1;
-    // Faint ones first, so that clique lines are drawn over them.
-    for (int pass = 0; pass < 2; ++pass) {
-      for (std::size_t i = 0; i < s.correspondences.size(); ++i) {
-        const Correspondence& c = s.correspondences[i];
-        if (pass == 0 && (in_clique[i] || !view.layers.all_correspondences)) continue;
-        if (pass == 1 && !in_clique[i]) continue;
-        Rgba color = Palette::other;
-        if (in_clique[i])
-          color = s.ground_truth && !true_inlier(c, *s.ground_truth,
-                                                 s.config.evaluation.max_translation_error)
-                      ? Palette::clique_outlier
-                      : Palette::clique;
-        push(lines, transform_point(pose, c.p), color);
-        push(lines, c.q.cast<float>(), color);
-      }
-    }
-  }
-  upload(lines_, lines);
+float SceneView::ground_z(const Snapshot& s) {
+  if (s.data_generation == ground_generation_ || !s.target || s.target->points.empty())
+    return ground_z_;
+  std::vector<float> z;
+  const std::size_t stride = std::max<std::size_t>(1, s.target->points.size() / 20000);
+  for (std::size_t i = 0; i < s.target->points.size(); i += stride)
+    z.push_back(s.target->points[i].z());
+  const auto k = static_cast<std::ptrdiff_t>(0.02 * static_cast<double>(z.size() - 1));
+  std::nth_element(z.begin(), z.begin() + k, z.end());
+  ground_z_ = z[static_cast<std::size_t>(k)];
+  ground_generation_ = s.data_generation;
+  return ground_z_;
 }
 
 void SceneView::resize(int width, int height) {
@@ -259,10 +250,9 @@ void SceneView::render(int width, int height, const Camera& camera, const ViewSt
   if (view.layers.source)
     draw(source_, GL_POINTS, source_mvp, view.point_size, false,
          by_cloud ? &Palette::source : nullptr);
-  // Overlays on top of the clouds: lines without depth writes, landmarks last.
+  // Landmarks on top of the clouds (lines are drawn over everything by the overlay).
   gl.DepthMask(GL_FALSE);
   gl.Disable(GL_DEPTH_TEST);
-  if (view.layers.correspondences) draw(lines_, GL_LINES, vp, 1.0f, false, nullptr);
   if (view.layers.landmarks) {
     draw(keypoints_tgt_, GL_POINTS, vp, view.landmark_size * 0.5f, true, nullptr);
     draw(keypoints_src_, GL_POINTS, vp, view.landmark_size * 0.5f, true, nullptr);

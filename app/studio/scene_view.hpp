@@ -1,8 +1,9 @@
 #pragma once
 /// \file scene_view.hpp
-/// The 3D view: dense clouds, landmarks and correspondence lines drawn into an offscreen
+/// The 3D view: dense clouds and landmarks drawn into an offscreen
 /// framebuffer that the UI shows as an image. Cloud data stays on the GPU between frames and is
-/// uploaded again only when the data (or the colouring) changes.
+/// uploaded again only when the data (or the colouring) changes. Lines, grid and legend are drawn
+/// over it by scene_overlay.hpp.
 
 #include <array>
 #include <map>
@@ -64,6 +65,9 @@ class SceneView {
   GLuint texture() const { return color_texture_; }
   /// Cloud uploads so far (a test of "no re-upload per frame").
   int cloud_uploads() const { return cloud_uploads_; }
+  const ClassColors& class_colors() const { return class_colors_; }
+  /// Height of the ground under the target: its 2 % height quantile [m] (cached per data).
+  float ground_z(const Snapshot& snapshot);
 
  private:
   struct Buffer {
@@ -80,7 +84,9 @@ class SceneView {
   GLuint program_ = 0, fbo_ = 0, color_texture_ = 0, depth_rb_ = 0;
   GLint u_mvp_ = -1, u_point_size_ = -1, u_use_uniform_ = -1, u_color_ = -1, u_round_ = -1;
   int fb_width_ = 0, fb_height_ = 0;
-  Buffer source_, target_, landmarks_src_, landmarks_tgt_, keypoints_src_, keypoints_tgt_, lines_;
+  Buffer source_, target_, landmarks_src_, landmarks_tgt_, keypoints_src_, keypoints_tgt_;
+  std::uint64_t ground_generation_ = 0;
+  float ground_z_ = 0.0f;
   std::uint64_t cloud_generation_ = 0;
   std::string cloud_scheme_;
   std::uint64_t overlay_request_ = 0;

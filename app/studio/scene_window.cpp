@@ -10,6 +10,7 @@
 
 #include "pagor/trim.hpp"
 #include "panels.hpp"
+#include "scene_overlay.hpp"
 
 namespace pagor::studio {
 namespace {
@@ -66,32 +67,6 @@ void correspondence_tooltip(const Snapshot& s, int index, int level) {
                 trims[trims.size() / 2], trims.back());
 }
 
-void legend_item(ImDrawList* dl, ImVec2& at, const Rgba& c, const char* text, bool line) {
-  const ImU32 col = IM_COL32(c[0], c[1], c[2], std::max<int>(c[3], 160));
-  if (line)
-    dl->AddLine(ImVec2(at.x, at.y + 7), ImVec2(at.x + 16, at.y + 7), col, 2.0f);
-  else
-    dl->AddCircleFilled(ImVec2(at.x + 8, at.y + 7), 5.0f, col);
-  dl->AddText(ImVec2(at.x + 22, at.y), IM_COL32(230, 230, 230, 255), text);
-  at.y += 17;
-}
-
-void legend(const Snapshot& s, const AppState& state, ImVec2 at) {
-  ImDrawList* dl = ImGui::GetWindowDrawList();
-  dl->AddRectFilled(ImVec2(at.x - 4, at.y - 4), ImVec2(at.x + 210, at.y + 92),
-                    IM_COL32(0, 0, 0, 150), 4.0f);
-  const bool gt = s.ground_truth.has_value();
-  legend_item(dl, at, Palette::clique, gt ? "clique, true inlier" : "clique correspondence", true);
-  if (gt) legend_item(dl, at, Palette::clique_outlier, "clique, outlier (ground truth)", true);
-  legend_item(dl, at, Palette::other, "other correspondences", true);
-  if (state.view.color == ColorMode::by_cloud) {
-    legend_item(dl, at, Palette::source, "source", false);
-    legend_item(dl, at, Palette::target, "target", false);
-  } else {
-    legend_item(dl, at, {255, 255, 255, 255}, "landmarks: class colours", false);
-  }
-}
-
 }  // namespace
 
 Transform shown_source_pose(const AppState& state, const Snapshot& s) {
@@ -120,24 +95,12 @@ void scene_window(UiContext& ui) {
     ImGui::TextDisabled("nothing to show yet");
     return;
   }
+  const Transform pose = shown_source_pose(state, *s);
   if (!state.camera_fitted) {
-    // Fit to the central part of the target cloud (LiDAR scans have far, sparse outliers).
-    std::vector<float> xs, ys, zs;
-    for (const auto& p : s->target->points) {
-      xs.push_back(p.x());
-      ys.push_back(p.y());
-      zs.push_back(p.z());
-    }
-    const auto quantile = [](std::vector<float>& v, double q) {
-      const auto k = static_cast<std::ptrdiff_t>(q * static_cast<double>(v.size() - 1));
-      std::nth_element(v.begin(), v.begin() + k, v.end());
-      return v[static_cast<std::size_t>(k)];
-    };
-    state.camera.fit(Eigen::Vector3f(quantile(xs, 0.02), quantile(ys, 0.02), quantile(zs, 0.02)),
-                     Eigen::Vector3f(quantile(xs, 0.98), quantile(ys, 0.98), quantile(zs, 0.98)));
+    Eigen::Vector3f lo, hi;
+    if (shown_bounds(*s, state.view, pose, lo, hi)) state.camera.fit(lo, hi);
     state.camera_fitted = true;
   }
-  const Transform pose = shown_source_pose(state, *s);
   ui.scene.update(*s, state.view, pose);
   ui.scene.render(w, h, state.camera, state.view, pose);
 
@@ -145,7 +108,16 @@ void scene_window(UiContext& ui) {
   ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(ui.scene.texture())),
                ImVec2(static_cast<float>(w), static_cast<float>(h)), ImVec2(0, 1), ImVec2(1, 0));
   const bool hovered = ImGui::IsItemHovered();
-  legend(*s, state, ImVec2(origin.x + 10, origin.y + 10));
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  dl->PushClipRect(origin, ImVec2(origin.x + w, origin.y + h), true);
+  ViewRect rect{origin, static_cast<float>(w), static_cast<float>(h),
+                state.camera.projection(static_cast<float>(w) / h) * state.camera.view()};
+  if (state.view.grid) draw_grid_axes_scale(dl, rect, state.camera, ui.scene.ground_z(*s));
+  const int shown = shown_level(state.view, s->selected, static_cast<int>(s->levels.size()));
+  draw_correspondence_lines(dl, rect, *s, state.view, pose, shown, ui.scene.class_colors());
+  if (state.view.legend && w >= 360 && h >= 220)  // a small view keeps its picture
+    draw_legend(dl, ImVec2(origin.x + 10, origin.y + 10), *s, state.view, ui.scene.class_colors());
+  dl->PopClipRect();
   if (!hovered) return;
 
   ImGuiIO& io = ImGui::GetIO();

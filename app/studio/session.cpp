@@ -1,10 +1,13 @@
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "app_state.hpp"
+#include "headless.hpp"
+#include "number_format.hpp"
 #include "pagor/errors.hpp"
 #include "pagor/kitti.hpp"
 
@@ -12,6 +15,11 @@ namespace pagor::studio {
 namespace {
 
 using json = nlohmann::json;
+
+constexpr long long kMaxFrame = 999999;           // KITTI frame numbers have six digits
+constexpr long long kMaxSeed = 9007199254740991;  // 2^53 - 1: exact in every JSON reader
+constexpr double kMaxCoordinate = 1e7;            // [m]
+constexpr float kMinDistance = 0.5f, kMaxDistance = 5000.0f;  // as Camera::zoom clamps [m]
 
 const char* color_name(ColorMode c) {
   return c == ColorMode::by_class ? "class" : "cloud";
@@ -41,21 +49,179 @@ json data_json(const PairSource& d) {
   return {};
 }
 
-// Reads a typed value at a key path with a message naming the file and the path.
-template <class T>
-T get(const json& j, const char* key, const std::string& where, const T& fallback) {
+// Typed readers: each names the file and key path of a wrong value, and never converts out of
+// range.
+std::string key_path(const std::string& where, const char* key) {
+  return where + "." + key;
+}
+
+const json* find(const json& j, const char* key) {
   const auto it = j.find(key);
-  if (it == j.end()) return fallback;
-  try {
-    return it->get<T>();
-  } catch (const json::exception&) {
-    throw InputError(where + "." + key + ": wrong type (" + it->type_name() + ")");
+  return it == j.end() || it->is_null() ? nullptr : &*it;
+}
+
+std::string get_string(const json& j, const char* key, const std::string& where,
+                       const std::string& fallback) {
+  const json* v = find(j, key);
+  if (!v) return fallback;
+  if (!v->is_string())
+    throw InputError(key_path(where, key) + ": expected a string, got " + v->dump());
+  return v->get<std::string>();
+}
+
+bool get_bool(const json& j, const char* key, const std::string& where, bool fallback) {
+  const json* v = find(j, key);
+  if (!v) return fallback;
+  if (!v->is_boolean())
+    throw InputError(key_path(where, key) + ": expected true or false, got " + v->dump());
+  return v->get<bool>();
+}
+
+// An integer in [lo, hi]; a float or a value out of range is an error, never converted.
+long long integer_value(const json& v, const std::string& path, long long lo, long long hi) {
+  const std::string range = "[" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+  if (!v.is_number_integer())
+    throw InputError(path + ": expected an integer in " + range + ", got " + v.dump());
+  if (v.is_number_unsigned() && v.get<std::uint64_t>() > static_cast<std::uint64_t>(hi))
+    throw InputError(path + ": " + v.dump() + " is outside " + range);
+  const long long x =
+      v.is_number_unsigned() ? static_cast<long long>(v.get<std::uint64_t>()) : v.get<long long>();
+  if (x < lo || x > hi) throw InputError(path + ": " + v.dump() + " is outside " + range);
+  return x;
+}
+
+int get_int(const json& j, const char* key, const std::string& where, int fallback, int lo,
+            int hi) {
+  const json* v = find(j, key);
+  return v ? static_cast<int>(integer_value(*v, key_path(where, key), lo, hi)) : fallback;
+}
+
+float get_float(const json& j, const char* key, const std::string& where, float fallback, float lo,
+                float hi) {
+  const json* v = find(j, key);
+  if (!v) return fallback;
+  const std::string path = key_path(where, key);
+  if (!v->is_number()) throw InputError(path + ": expected a number, got " + v->dump());
+  const double x = v->get<double>();
+  if (!(x >= lo && x <= hi))
+    throw InputError(path + ": " + v->dump() + " is outside [" + json(lo).dump() + ", " +
+                     json(hi).dump() + "]");
+  return static_cast<float>(x);
+}
+
+void reject_unknown(const json& j, const std::string& where,
+                    std::initializer_list<const char*> known) {
+  for (const auto& item : j.items()) {
+    bool ok = false;
+    for (const char* k : known) ok = ok || item.key() == k;
+    if (!ok) throw InputError(where + "." + item.key() + ": unknown key");
   }
+}
+
+// A float as the double its shortest decimal names, for writing.
+json number(float f) {
+  return shortest(f);
 }
 
 std::string resolve(const std::string& path, const std::filesystem::path& base) {
   if (path.empty() || std::filesystem::path(path).is_absolute()) return path;
   return (base / path).lexically_normal().string();
+}
+
+PairSource read_data(const json& d, const std::string& where) {
+  if (!d.is_object()) throw InputError(where + ": expected an object");
+  const std::string kind = get_string(d, "kind", where, "");
+  PairSource src;
+  if (kind == "kitti") {
+    reject_unknown(d, where, {"kind", "kitti_root", "sequence", "pair"});
+    src.kind = PairSource::Kind::kitti;
+    src.kitti_root = get_string(d, "kitti_root", where, "");
+    src.sequence = get_string(d, "sequence", where, "00");
+    const json* pair = find(d, "pair");
+    if (!pair || !pair->is_array() || pair->size() != 2)
+      throw InputError(where + ".pair: expected [source, target] frame numbers");
+    src.source_frame =
+        static_cast<int>(integer_value((*pair)[0], where + ".pair[0]", 0, kMaxFrame));
+    src.target_frame =
+        static_cast<int>(integer_value((*pair)[1], where + ".pair[1]", 0, kMaxFrame));
+  } else if (kind == "files") {
+    reject_unknown(d, where, {"kind", "source", "source_labels", "target", "target_labels"});
+    src.kind = PairSource::Kind::files;
+    src.source = get_string(d, "source", where, "");
+    src.source_labels = get_string(d, "source_labels", where, "");
+    src.target = get_string(d, "target", where, "");
+    src.target_labels = get_string(d, "target_labels", where, "");
+  } else if (kind == "synthetic") {
+    reject_unknown(d, where, {"kind", "seed"});
+    src.kind = PairSource::Kind::synthetic;
+    const json* seed = find(d, "seed");
+    src.synthetic_seed =
+        seed ? static_cast<std::uint64_t>(integer_value(*seed, where + ".seed", 0, kMaxSeed)) : 7;
+  } else {
+    throw InputError(where + ".kind: expected \"kitti\", \"files\" or \"synthetic\", got \"" +
+                     kind + "\"");
+  }
+  return src;
+}
+
+void read_camera(const json& c, const std::string& where, Camera& cam) {
+  if (!c.is_object()) throw InputError(where + ": expected an object");
+  reject_unknown(c, where, {"target", "distance", "yaw_deg", "pitch_deg", "top_down"});
+  if (const json* t = find(c, "target")) {
+    if (!t->is_array() || t->size() != 3) throw InputError(where + ".target: expected [x, y, z]");
+    for (int i = 0; i < 3; ++i) {
+      const json& x = (*t)[static_cast<std::size_t>(i)];
+      if (!x.is_number() || !(std::abs(x.get<double>()) <= kMaxCoordinate))
+        throw InputError(where + ".target[" + std::to_string(i) + "]: expected a number within " +
+                         "+-1e7 m, got " + x.dump());
+      cam.target[i] = static_cast<float>(x.get<double>());
+    }
+  }
+  cam.distance = get_float(c, "distance", where, cam.distance, kMinDistance, kMaxDistance);
+  cam.yaw_deg = get_float(c, "yaw_deg", where, cam.yaw_deg, -3600.0f, 3600.0f);
+  cam.pitch_deg = get_float(c, "pitch_deg", where, cam.pitch_deg, -89.9f, 89.9f);
+  cam.top_down = get_bool(c, "top_down", where, cam.top_down);
+}
+
+void read_view(const json& v, const std::string& where, ViewState& view) {
+  if (!v.is_object()) throw InputError(where + ": expected an object");
+  reject_unknown(v, where,
+                 {"layers", "point_size", "landmark_size", "line_width", "grid", "legend", "color",
+                  "pose", "level"});
+  if (const json* l = find(v, "layers")) {
+    const std::string lw = where + ".layers";
+    if (!l->is_object()) throw InputError(lw + ": expected an object");
+    reject_unknown(*l, lw,
+                   {"source", "target", "landmarks", "correspondences", "all_correspondences"});
+    Layers& ly = view.layers;
+    ly.source = get_bool(*l, "source", lw, true);
+    ly.target = get_bool(*l, "target", lw, true);
+    ly.landmarks = get_bool(*l, "landmarks", lw, true);
+    ly.correspondences = get_bool(*l, "correspondences", lw, true);
+    ly.all_correspondences = get_bool(*l, "all_correspondences", lw, false);
+  }
+  using L = ViewLimits;
+  view.point_size =
+      get_float(v, "point_size", where, view.point_size, L::min_point_size, L::max_point_size);
+  view.landmark_size = get_float(v, "landmark_size", where, view.landmark_size,
+                                 L::min_landmark_size, L::max_landmark_size);
+  view.line_width =
+      get_float(v, "line_width", where, view.line_width, L::min_line_width, L::max_line_width);
+  view.grid = get_bool(v, "grid", where, view.grid);
+  view.legend = get_bool(v, "legend", where, view.legend);
+  const std::string color = get_string(v, "color", where, "class");
+  if (color != "class" && color != "cloud")
+    throw InputError(where + ".color: expected \"class\" or \"cloud\", got \"" + color + "\"");
+  view.color = color == "cloud" ? ColorMode::by_cloud : ColorMode::by_class;
+  const std::string pose = get_string(v, "pose", where, "selected");
+  if (pose != "selected" && pose != "ground_truth" && pose != "identity")
+    throw InputError(where +
+                     ".pose: expected \"selected\", \"ground_truth\" or \"identity\", got \"" +
+                     pose + "\"");
+  view.pose = pose == "ground_truth" ? PoseShown::ground_truth
+              : pose == "identity"   ? PoseShown::identity
+                                     : PoseShown::selected;
+  view.level = get_int(v, "level", where, -1, -1, 31);
 }
 
 }  // namespace
@@ -90,10 +256,10 @@ void save_session(const AppState& s, const std::string& path) {
             {"pairs_file", s.pairs_file},
             {"config", json::parse(config_to_json(s.config))},
             {"camera",
-             {{"target", {c.target.x(), c.target.y(), c.target.z()}},
-              {"distance", c.distance},
-              {"yaw_deg", c.yaw_deg},
-              {"pitch_deg", c.pitch_deg},
+             {{"target", {number(c.target.x()), number(c.target.y()), number(c.target.z())}},
+              {"distance", number(c.distance)},
+              {"yaw_deg", number(c.yaw_deg)},
+              {"pitch_deg", number(c.pitch_deg)},
               {"top_down", c.top_down}}},
             {"view",
              {{"layers",
@@ -102,11 +268,17 @@ void save_session(const AppState& s, const std::string& path) {
                 {"landmarks", s.view.layers.landmarks},
                 {"correspondences", s.view.layers.correspondences},
                 {"all_correspondences", s.view.layers.all_correspondences}}},
-              {"point_size", s.view.point_size},
-              {"landmark_size", s.view.landmark_size},
+              {"point_size", number(s.view.point_size)},
+              {"landmark_size", number(s.view.landmark_size)},
+              {"line_width", number(s.view.line_width)},
+              {"grid", s.view.grid},
+              {"legend", s.view.legend},
               {"color", color_name(s.view.color)},
               {"pose", pose_name(s.view.pose)},
               {"level", s.view.level}}},
+            {"layout",
+             {{"left_width", number(s.layout.left_width)},
+              {"scene_share", number(s.layout.scene_share)}}},
             {"window", {{"width", s.width}, {"height", s.height}}}};
   std::ofstream out(path, std::ios::trunc);
   if (!out) throw InputError(path + ": cannot open for writing");
@@ -120,47 +292,24 @@ void load_session(const std::string& path, AppState& s) {
   json j;
   try {
     j = json::parse(in);
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception& e) {
     throw InputError(path + ": not valid JSON (" + e.what() + ")");
   }
   if (!j.is_object()) throw InputError(path + ": expected a JSON object");
+  reject_unknown(j, path + ":",
+                 {"schema", "data", "pairs_file", "config", "camera", "view", "layout", "window"});
+  const std::string schema = get_string(j, "schema", path + ":", "pagor.session/1");
+  if (schema != "pagor.session/1")
+    throw InputError(path + ": schema: expected \"pagor.session/1\", got \"" + schema + "\"");
   const std::filesystem::path base = std::filesystem::path(path).parent_path();
   AppState next = s;
 
-  if (j.contains("config") && !j["config"].is_null())
-    next.config = parse_config(j["config"].dump(), path + " (config)");
-
-  if (j.contains("data") && !j["data"].is_null()) {
-    const json& d = j["data"];
-    const std::string where = path + ": data";
-    const std::string kind = get<std::string>(d, "kind", where, "");
-    PairSource src;
-    if (kind == "kitti") {
-      src.kind = PairSource::Kind::kitti;
-      src.kitti_root = get<std::string>(d, "kitti_root", where, "");
-      src.sequence = get<std::string>(d, "sequence", where, "00");
-      const auto pair = get<std::vector<int>>(d, "pair", where, {});
-      if (pair.size() != 2)
-        throw InputError(where + ".pair: expected [source, target] frame numbers");
-      src.source_frame = pair[0];
-      src.target_frame = pair[1];
-    } else if (kind == "files") {
-      src.kind = PairSource::Kind::files;
-      src.source = get<std::string>(d, "source", where, "");
-      src.source_labels = get<std::string>(d, "source_labels", where, "");
-      src.target = get<std::string>(d, "target", where, "");
-      src.target_labels = get<std::string>(d, "target_labels", where, "");
-    } else if (kind == "synthetic") {
-      src.kind = PairSource::Kind::synthetic;
-      src.synthetic_seed = get<std::uint64_t>(d, "seed", where, 7);
-    } else {
-      throw InputError(where + ".kind: expected \"kitti\", \"files\" or \"synthetic\", got \"" +
-                       kind + "\"");
-    }
-    next.data = src;
+  if (const json* c = find(j, "config")) next.config = parse_config(c->dump(), path + " (config)");
+  if (const json* d = find(j, "data")) {
+    next.data = read_data(*d, path + ": data");
     next.have_data = true;
   }
-  next.pairs_file = get<std::string>(j, "pairs_file", path, "");
+  next.pairs_file = get_string(j, "pairs_file", path + ":", "");
   next.base_dir = base.string();
   next.pairs.clear();
   next.pair_index = -1;
@@ -168,46 +317,29 @@ void load_session(const std::string& path, AppState& s) {
     next.pairs = read_pairs_file(resolve(next.pairs_file, base));
     next.pair_index = index_of_pair(next.pairs, next.data);
   }
-
-  if (j.contains("camera") && !j["camera"].is_null()) {
-    const json& c = j["camera"];
-    const std::string where = path + ": camera";
-    const auto t = get<std::vector<float>>(c, "target", where, {0, 0, 0});
-    if (t.size() != 3) throw InputError(where + ".target: expected [x, y, z]");
-    next.camera.target = Eigen::Vector3f(t[0], t[1], t[2]);
-    next.camera.distance = get<float>(c, "distance", where, next.camera.distance);
-    next.camera.yaw_deg = get<float>(c, "yaw_deg", where, next.camera.yaw_deg);
-    next.camera.pitch_deg = get<float>(c, "pitch_deg", where, next.camera.pitch_deg);
-    next.camera.top_down = get<bool>(c, "top_down", where, next.camera.top_down);
+  if (const json* c = find(j, "camera")) {
+    read_camera(*c, path + ": camera", next.camera);
     next.camera_fitted = true;
   } else {
     next.camera_fitted = false;
   }
-  if (j.contains("view") && !j["view"].is_null()) {
-    const json& v = j["view"];
-    const std::string where = path + ": view";
-    if (v.contains("layers")) {
-      const json& l = v["layers"];
-      const std::string lw = where + ".layers";
-      next.view.layers.source = get<bool>(l, "source", lw, true);
-      next.view.layers.target = get<bool>(l, "target", lw, true);
-      next.view.layers.landmarks = get<bool>(l, "landmarks", lw, true);
-      next.view.layers.correspondences = get<bool>(l, "correspondences", lw, true);
-      next.view.layers.all_correspondences = get<bool>(l, "all_correspondences", lw, false);
-    }
-    next.view.point_size = get<float>(v, "point_size", where, next.view.point_size);
-    next.view.landmark_size = get<float>(v, "landmark_size", where, next.view.landmark_size);
-    const std::string color = get<std::string>(v, "color", where, "class");
-    next.view.color = color == "cloud" ? ColorMode::by_cloud : ColorMode::by_class;
-    const std::string pose = get<std::string>(v, "pose", where, "selected");
-    next.view.pose = pose == "ground_truth" ? PoseShown::ground_truth
-                     : pose == "identity"   ? PoseShown::identity
-                                            : PoseShown::selected;
-    next.view.level = get<int>(v, "level", where, -1);
+  if (const json* v = find(j, "view")) read_view(*v, path + ": view", next.view);
+  if (const json* l = find(j, "layout")) {
+    const std::string where = path + ": layout";
+    if (!l->is_object()) throw InputError(where + ": expected an object");
+    reject_unknown(*l, where, {"left_width", "scene_share"});
+    using L = ViewLimits;
+    next.layout.left_width = get_float(*l, "left_width", where, next.layout.left_width,
+                                       L::min_left_width, L::max_left_width);
+    next.layout.scene_share = get_float(*l, "scene_share", where, next.layout.scene_share,
+                                        L::min_scene_share, L::max_scene_share);
   }
-  if (j.contains("window") && j["window"].is_object()) {
-    next.width = get<int>(j["window"], "width", path + ": window", next.width);
-    next.height = get<int>(j["window"], "height", path + ": window", next.height);
+  if (const json* w = find(j, "window")) {
+    const std::string where = path + ": window";
+    if (!w->is_object()) throw InputError(where + ": expected an object");
+    reject_unknown(*w, where, {"width", "height"});
+    next.width = get_int(*w, "width", where, next.width, kMinWidth, kMaxSide);
+    next.height = get_int(*w, "height", where, next.height, kMinHeight, kMaxSide);
   }
   next.session_path = path;
   s = std::move(next);

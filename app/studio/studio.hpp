@@ -1,32 +1,54 @@
 #pragma once
 /// \file studio.hpp
-/// One frame of Pagor Studio, the same in the window and headless: lays out the panels, renders
-/// the 3D view and ImGui's draw data through the GL table.
+/// One frame of Pagor Studio, the same in the window and headless: lays out the panels and
+/// splitters, handles the keyboard shortcuts, renders the 3D view and ImGui's draw data through
+/// the GL table.
 
 #include <memory>
 #include <string>
 
 #include "app_state.hpp"
 #include "gl.hpp"
+#include "history.hpp"
 #include "imgui_renderer.hpp"
 #include "scene_view.hpp"
 #include "worker.hpp"
 
 namespace pagor::studio {
 
+/// A keyboard shortcut, as the help overlay lists it.
+struct Shortcut {
+  const char* keys;
+  const char* action;
+};
+/// Every shortcut of the studio.
+const std::vector<Shortcut>& shortcuts();
+
 class Studio {
  public:
   /// Needs a current GL context and an ImGui context.
   Studio(const Gl& gl, AppState state);
   ~Studio();
-  /// Loads the font, builds renderers. False with `error` on failure.
+  /// Loads the font, builds renderers, maps ImGui's named keys when no backend did. False with
+  /// `error` on failure.
   bool init(std::string& error);
 
   /// Sends the current data and configuration to the worker.
   void submit_data();
+  /// Re-runs with the current configuration; does nothing while it is invalid (the UI says why).
   void submit_config();
+  void undo();
+  void redo();
+  /// Saves or loads `state().session_path`; the outcome goes to the status bar.
+  void save_session_now();
+  void load_session_now();
 
-  /// Builds and draws one frame of width x height pixels into the default framebuffer.
+  /// A key press (GLFW key code) for the shortcuts, queued until the next frame so that a press
+  /// and release between two frames still counts (ImGui 1.86 only sees keys held at a frame).
+  void queue_key(int key, bool ctrl, bool shift);
+
+  /// Builds and draws one frame of width x height pixels into the default framebuffer, and writes
+  /// the screenshot the user asked for.
   void frame(int width, int height);
   /// Reads the default framebuffer and writes a PNG. False with `error` on failure.
   bool screenshot(const std::string& path, int width, int height, std::string& error) const;
@@ -34,15 +56,34 @@ class Studio {
   AppState& state() { return state_; }
   Worker& worker() { return worker_; }
   const SceneView& scene() const { return scene_; }
+  const ParamHistory& param_history() const { return params_; }
+  const RunHistory& run_history() const { return runs_; }
   double last_frame_ms() const { return frame_ms_; }
+  /// Empty when the configuration is valid, else the reason.
+  const std::string& config_error() const { return config_error_; }
+  /// Why the results shown do not match the parameters shown (empty when they do).
+  const std::string& stale_reason() const { return stale_reason_; }
 
  private:
+  void handle_shortcuts(struct UiContext& ui);
+  void layout_windows(struct UiContext& ui, float width, float height);
+  void help_overlay(float width, float height);
+  void update_staleness(const WorkerStatus& status);
+
   const Gl& gl_;
   AppState state_;
   Worker worker_;
   ImGuiRenderer imgui_renderer_;
   SceneView scene_;
   std::shared_ptr<const Snapshot> snapshot_;
+  ParamHistory params_;
+  RunHistory runs_;
+  std::string config_error_, stale_reason_;
+  struct KeyPress {
+    int key;
+    bool ctrl, shift;
+  };
+  std::vector<KeyPress> keys_;
   double frame_ms_ = 0.0;
 };
 

@@ -1,0 +1,137 @@
+#pragma once
+/// \file widgets.hpp
+/// The studio's interactive widgets: thin wrappers over ImGui's that record every item drawn in a
+/// frame (ID, label, window, kind, rectangle, tooltip) in a registry. The registry reports two
+/// items of one frame that share an ImGui ID (ImGui 1.86 has no ID-conflict detection, and such a
+/// pair aborts inside ImGui when clicked), and the driven-UI tests find every widget through it.
+/// Panels call these, never ImGui's interactive widgets directly (a test checks the sources).
+
+#include <imgui.h>
+
+#include <string>
+#include <vector>
+
+struct ImGuiWindow;
+
+namespace pagor::studio::ui {
+
+enum class WidgetKind {
+  button,
+  checkbox,
+  radio,
+  slider,
+  input_text,
+  input_int,
+  combo,
+  selectable,
+  tree_node,
+  header,
+  splitter
+};
+const char* to_string(WidgetKind kind);
+
+/// One widget as drawn in one frame.
+struct WidgetRecord {
+  ImGuiID id = 0;
+  std::string label;   ///< as passed to ImGui (with any ## suffix)
+  std::string window;  ///< name of the ImGui window it is in
+  WidgetKind kind = WidgetKind::button;
+  ImVec2 min, max;            ///< screen rectangle [px]
+  ImVec2 clip_min, clip_max;  ///< visible part of its window [px]
+  bool visible = false;       ///< inside its window's visible part
+  bool has_tooltip = false;   ///< a sentence explains it on hover
+  bool enabled = true;        ///< false when drawn disabled
+  float lo = 0, hi = 0;       ///< slider / input range (0, 0 when none)
+  float frame_w = 0;          ///< width of the frame (sliders, fields: without the label) [px]
+};
+
+/// Two widgets of one frame with the same ImGui ID.
+struct DuplicateId {
+  ImGuiID id = 0;
+  std::string window, first, second;
+  std::string describe() const;
+};
+
+/// Every widget of the current frame. One per process (the studio has one ImGui context).
+class WidgetRegistry {
+ public:
+  /// Starts a frame: forgets the previous frame's widgets (kept as `last_frame()`).
+  void begin_frame();
+  /// Records the widget just drawn; `id` is the ID ImGui gave it, `window` the window it is in
+  /// (default: the current one).
+  WidgetRecord& add(WidgetKind kind, const char* label, ImGuiID id, ImVec2 min, ImVec2 max,
+                    ImGuiWindow* window = nullptr);
+  /// Marks the last widget as explained by a tooltip.
+  void mark_last_explained() {
+    if (!items_.empty()) items_.back().has_tooltip = true;
+  }
+  /// Widgets of the frame being built.
+  const std::vector<WidgetRecord>& items() const { return items_; }
+  /// Widgets of the last complete frame.
+  const std::vector<WidgetRecord>& last_frame() const { return last_; }
+  /// Duplicate IDs seen in the last complete frame (and so far in this one).
+  const std::vector<DuplicateId>& duplicates() const { return duplicates_; }
+  /// Every duplicate seen since the start (the studio prints each once).
+  const std::vector<DuplicateId>& all_duplicates() const { return all_duplicates_; }
+
+ private:
+  std::vector<WidgetRecord> items_, last_;
+  std::vector<DuplicateId> duplicates_, all_duplicates_;
+};
+
+WidgetRegistry& registry();
+
+/// Shows `tip` as a tooltip while the last item is hovered and marks the last widget as explained.
+void tooltip(const char* tip);
+
+// Wrappers: same meaning as ImGui's, plus registration. Ranges are always enforced (a value typed
+// with Ctrl+click is clamped to [lo, hi]).
+bool button(const char* label, ImVec2 size = ImVec2(0, 0), const char* tip = nullptr);
+bool small_button(const char* label, const char* tip = nullptr);
+bool arrow_button(const char* id, ImGuiDir dir, const char* tip = nullptr);
+bool checkbox(const char* label, bool* v, const char* tip = nullptr);
+bool radio(const char* label, int* v, int value, const char* tip = nullptr);
+bool slider_float(const char* label, float* v, float lo, float hi, const char* fmt,
+                  bool log = false, const char* tip = nullptr);
+bool slider_int(const char* label, int* v, int lo, int hi, bool log = false,
+                const char* tip = nullptr);
+/// A double edited through a float slider; the value written back is the float's shortest
+/// decimal (0.3, not 0.30000001192092896).
+bool slider_double(const char* label, double* v, double lo, double hi, const char* fmt,
+                   bool log = false, const char* tip = nullptr);
+bool input_text(const char* label, std::string* text, const char* tip = nullptr);
+/// An integer field clamped to [lo, hi]; with `on_enter`, typing returns true only on Enter (the
+/// +/- buttons at once).
+bool input_int(const char* label, int* v, int lo, int hi, int step = 1, bool on_enter = false,
+               const char* tip = nullptr);
+bool begin_combo(const char* label, const char* preview, const char* tip = nullptr);
+void end_combo();
+bool selectable(const char* label, bool selected, ImGuiSelectableFlags flags = 0,
+                ImVec2 size = ImVec2(0, 0));
+bool tree_node(const char* id, const char* text);
+void tree_pop();
+bool header(const char* label, bool default_open);
+/// A draggable bar of `size` at the cursor; returns the drag in pixels this frame (0 when idle).
+ImVec2 splitter(const char* id, ImVec2 size, bool vertical);
+
+/// A combo over every value of an enum that `to_string` names (so values the core adds appear
+/// without a change here). True when the value changed.
+template <class E>
+bool enum_combo(const char* label, E& value, const char* tip = nullptr) {
+  bool changed = false;
+  if (begin_combo(label, to_string(value), tip)) {
+    for (int i = 0; i < 32; ++i) {
+      const E o = static_cast<E>(i);
+      const std::string name = to_string(o);
+      if (name == "?") continue;
+      if (selectable(name.c_str(), o == value)) {
+        changed = o != value;
+        value = o;
+      }
+    }
+    end_combo();
+  }
+  return changed;
+}
+
+}  // namespace pagor::studio::ui

@@ -1,0 +1,20 @@
+# Runs pagor-studio and expects a non-zero exit code and a one-line error matching EXPECT.
+# Variables: STUDIO, ARGS (a ;-list), EXPECT (regex), OUTPUT_DIR.
+file(MAKE_DIRECTORY "${OUTPUT_DIR}")
+execute_process(COMMAND "${STUDIO}" ${ARGS} RESULT_VARIABLE rc OUTPUT_VARIABLE out
+                ERROR_VARIABLE err TIMEOUT 120)
+message("exit ${rc}\nstdout: ${out}\nstderr: ${err}")
+if(rc EQUAL 0)
+  message(FATAL_ERROR "expected a non-zero exit code")
+endif()
+if(NOT rc MATCHES "^[0-9]+$")
+  message(FATAL_ERROR "expected an exit code, got '${rc}' (a crash?)")
+endif()
+if(NOT err MATCHES "${EXPECT}")
+  message(FATAL_ERROR "stderr does not match '${EXPECT}'")
+endif()
+string(REGEX MATCHALL "\n" newlines "${err}")
+list(LENGTH newlines n)
+if(n GREATER 1)
+  message(FATAL_ERROR "expected a one-line error, got ${n} lines")
+endif()

@@ -1,0 +1,159 @@
+// The session reader and writer, and the widget registry's duplicate-ID check (no GL needed).
+
+#include <imgui.h>
+
+#include <catch2/catch.hpp>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "app_state.hpp"
+#include "number_format.hpp"
+#include "pagor/errors.hpp"
+#include "studio_test_util.hpp"
+#include "widgets.hpp"
+
+using namespace pagor;
+using namespace pagor::test;
+
+namespace {
+
+std::string bad(const std::string& name) {
+  return shared_data() + "/bad-inputs/" + name;
+}
+
+// The message of the InputError that loading `path` throws ("" when it loads).
+std::string load_error(const std::string& path) {
+  studio::AppState s;
+  try {
+    studio::load_session(path, s);
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+std::string write(const TempDir& tmp, const std::string& text) {
+  const std::string path = tmp.file("s.json");
+  std::ofstream(path) << text;
+  return path;
+}
+
+}  // namespace
+
+TEST_CASE("session reader rejects the bad inputs, naming the file and the key") {
+  const std::string p32 = bad("session_pair_2p32_plus_20_silent.json");
+  const std::string e32 = load_error(p32);
+  CHECK_THAT(e32, Catch::Contains(p32) && Catch::Contains("data.pair[0]") &&
+                      Catch::Contains("4294967316") && Catch::Contains("outside"));
+  const std::string p30 = bad("session_pair_1e30_ub.json");
+  CHECK_THAT(load_error(p30), Catch::Contains(p30) && Catch::Contains("data.pair[0]") &&
+                                  Catch::Contains("expected an integer"));
+  const std::string pw = bad("session_window_40000_segv.json");
+  CHECK_THAT(load_error(pw), Catch::Contains(pw) && Catch::Contains("window.width") &&
+                                 Catch::Contains("40000") && Catch::Contains("8192"));
+  // Missing data files are legal in a session (they may appear later); opening them fails in
+  // the worker and the headless run exits non-zero (tested through the executable).
+  CHECK(load_error(bad("session_missing_files_exit0.json")).empty());
+}
+
+TEST_CASE("session reader rejects wrong values at their key") {
+  TempDir tmp;
+  const auto err = [&](const std::string& text) { return load_error(write(tmp, text)); };
+  CHECK_THAT(err(R"({"window": {"width": 100, "height": 600}})"),
+             Catch::Contains("window.width") && Catch::Contains("outside [320, 8192]"));
+  CHECK_THAT(err(R"({"window": {"width": 800.5, "height": 600}})"),
+             Catch::Contains("window.width: expected an integer"));
+  CHECK_THAT(err(R"({"view": {"point_size": 1e30}})"), Catch::Contains("view.point_size"));
+  CHECK_THAT(err(R"({"view": {"point_size": -1}})"), Catch::Contains("view.point_size"));
+  CHECK_THAT(err(R"({"view": {"level": 99}})"), Catch::Contains("view.level"));
+  CHECK_THAT(err(R"({"view": {"color": "purple"}})"), Catch::Contains("view.color"));
+  CHECK_THAT(err(R"({"camera": {"distance": 0}})"), Catch::Contains("camera.distance"));
+  CHECK_THAT(err(R"({"camera": {"target": [1, 2, 1e300]}})"), Catch::Contains("camera.target[2]"));
+  CHECK_THAT(err(R"({"data": {"kind": "synthetic", "seed": -3}})"), Catch::Contains("data.seed"));
+  CHECK_THAT(err(R"({"data": {"kind": "kitti", "pair": [0, -1]}})"),
+             Catch::Contains("data.pair[1]"));
+  CHECK_THAT(err(R"({"layout": {"left_width": 5}})"), Catch::Contains("layout.left_width"));
+  CHECK_THAT(err(R"({"bogus": 1})"), Catch::Contains("bogus: unknown key"));
+  CHECK_THAT(err(R"({"data": {"kind": "files", "source": 3}})"),
+             Catch::Contains("data.source: expected a string"));
+  CHECK_THAT(err("[1, 2]"), Catch::Contains("expected a JSON object"));
+  CHECK_THAT(err("{\"view\": "), Catch::Contains("not valid JSON"));
+}
+
+TEST_CASE("a session round-trips and writes numbers in their shortest exact form") {
+  TempDir tmp;
+  studio::AppState s;
+  s.have_data = true;
+  s.data.kind = PairSource::Kind::synthetic;
+  s.data.synthetic_seed = 11;
+  s.config.graph.thresholds = {studio::shortest(0.3f), studio::shortest(0.55f)};
+  s.view.point_size = 2.7f;
+  s.view.line_width = 3.3f;
+  s.camera.distance = 41.7f;
+  s.layout.left_width = 287.3f;
+  s.layout.scene_share = 0.55f;
+  s.width = 1000;
+  s.height = 700;
+  const std::string path = tmp.file("round.json");
+  studio::save_session(s, path);
+  std::ifstream in(path);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  CHECK_THAT(text, Catch::Contains("0.3,") || Catch::Contains("0.3\n"));
+  CHECK_THAT(text, Catch::Contains("2.7"));
+  CHECK_THAT(text, Catch::Contains("41.7"));
+  CHECK_THAT(text, !Catch::Contains("0.30000001") && !Catch::Contains("2.700000"));
+  studio::AppState r;
+  studio::load_session(path, r);
+  CHECK(r.config.graph.thresholds == s.config.graph.thresholds);
+  CHECK(r.data.synthetic_seed == 11);
+  CHECK(r.view.point_size == s.view.point_size);
+  CHECK(r.view.line_width == s.view.line_width);
+  CHECK(r.camera.distance == s.camera.distance);
+  CHECK(r.layout.left_width == s.layout.left_width);
+  CHECK(r.layout.scene_share == s.layout.scene_share);
+  CHECK(r.width == 1000);
+  CHECK(r.height == 700);
+}
+
+TEST_CASE("shortest: a float's shortest decimal as a double") {
+  CHECK(studio::shortest(0.3f) == 0.3);
+  CHECK(studio::shortest(0.02f) == 0.02);
+  CHECK(studio::shortest(1.0f) == 1.0);
+  CHECK(studio::shortest(1e-3f) == 0.001);
+  CHECK(nlohmann::json(studio::shortest(0.1f)).dump() == "0.1");
+}
+
+TEST_CASE("the widget registry reports two widgets of one frame with the same ID") {
+  ImGuiContext* ctx = ImGui::CreateContext();
+  ImGuiIO& io = ImGui::GetIO();
+  io.DisplaySize = ImVec2(800, 600);
+  io.DeltaTime = 1.0f / 60.0f;
+  unsigned char* pixels = nullptr;
+  int w = 0, h = 0;
+  io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
+  const auto frame = [](bool scoped) {
+    studio::ui::registry().begin_frame();
+    ImGui::NewFrame();
+    ImGui::Begin("panel");
+    std::string path;
+    bool layer = true;
+    if (scoped) ImGui::PushID("data");
+    studio::ui::input_text("source", &path);  // the Data panel's field ...
+    if (scoped) ImGui::PopID();
+    if (scoped) ImGui::PushID("view");
+    studio::ui::checkbox("source", &layer);  // ... and the View panel's layer box
+    if (scoped) ImGui::PopID();
+    ImGui::End();
+    ImGui::Render();
+    return studio::ui::registry().duplicates();
+  };
+  const auto dups = frame(false);
+  REQUIRE(dups.size() == 1);
+  CHECK(dups[0].first == "source");
+  CHECK(dups[0].second == "source");
+  CHECK(dups[0].window == "panel");
+  CHECK_THAT(dups[0].describe(), Catch::Contains("duplicate ImGui ID"));
+  CHECK(frame(true).empty());  // each panel in its own ID scope: two widgets
+  CHECK(studio::ui::registry().items().size() == 2);
+  ImGui::DestroyContext(ctx);
+}
