@@ -3,9 +3,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <fstream>
 #include <nlohmann/json.hpp>
+#include <optional>
 
+#include "bench_journal.hpp"
 #include "command.hpp"
 #include "pagor/errors.hpp"
 #include "pagor/kitti.hpp"
@@ -22,6 +23,24 @@ double median(std::vector<double> v) {
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
+// What the summary needs of a pair taken from an earlier run's line.
+struct ResumedPair {
+  bool success = false, upper_bound = false;
+  double total_ms = 0;
+};
+ResumedPair resumed_pair(const nlohmann::json& line) {
+  ResumedPair r;
+  const auto gt = line.find("ground_truth");
+  if (gt != line.end() && gt->is_object()) {
+    r.success = gt->value("success", false);
+    r.upper_bound = gt->value("upper_bound", false);
+  }
+  const auto t = line.find("timings_ms");
+  if (t != line.end() && t->is_object() && t->contains("total") && (*t)["total"].is_number())
+    r.total_ms = (*t)["total"].get<double>();
+  return r;
+}
+
 double mean(const std::vector<double>& v) {
   double s = 0;
   for (double x : v) s += x;
@@ -36,6 +55,7 @@ std::vector<Option> bench_options() {
           {"pairs", 1, "FILE", "pairs file: 'source target' frame numbers per line"},
           {"config", 1, "FILE", "configuration JSON (default: built-in outdoor defaults)"},
           {"out", 1, "FILE", "write one JSON line per pair (pagor.register/1 without config)"},
+          {"resume", 0, "", "with --out: continue a killed run, skipping pairs already written"},
           {"threads", 1, "N", "threads for graph construction and verification (default 1)"}};
 }
 
@@ -45,18 +65,18 @@ int run_bench(const Args& args) {
   const Config config = config_from_args(args);
   const KittiSequence seq(args.get("kitti-root"), args.get("sequence", "00"));
   const auto pairs = read_pairs_file(args.get("pairs"));
-  std::ofstream out;
-  if (args.has("out")) {
-    out.open(args.get("out"), std::ios::trunc);
-    if (!out) throw InputError(args.get("out") + ": cannot open for writing");
-  }
+  if (args.has("resume") && !args.has("out")) throw UsageError("--resume goes with --out FILE");
+  std::optional<BenchJournal> journal;
+  if (args.has("out"))
+    journal.emplace(args.get("out"), args.has("resume"),
+                    fingerprint(args.get("sequence", "00") + "\n" + config_to_json(config, -1)));
 
   const Stage stages[] = {
       Stage::landmarks, Stage::correspondences,   Stage::graph,       Stage::clique,
       Stage::pose,      Stage::verification_prep, Stage::verification};
   std::vector<std::vector<double>> times(std::size(stages));
   std::vector<double> totals;
-  int successes = 0, upper = 0, failed_to_load = 0;
+  int successes = 0, upper = 0, failed_to_load = 0, resumed = 0;
   Pipeline pipeline(config, args.get_int("threads", 1));
 
   std::printf("%-12s %6s %10s %11s %8s %8s %10s\n", "pair", "level", "t err [m]", "r err [deg]",
@@ -65,6 +85,14 @@ int run_bench(const Args& args) {
     const auto [s, t] = pairs[k];
     std::fprintf(stderr, "[%zu/%zu] %d -> %d ...\r", k + 1, pairs.size(), s, t);
     std::fflush(stderr);
+    if (const nlohmann::json* done = journal ? journal->find(s, t) : nullptr) {
+      const ResumedPair r = resumed_pair(*done);
+      successes += r.success;
+      upper += r.upper_bound;
+      totals.push_back(r.total_ms);
+      ++resumed;
+      continue;
+    }
     LoadedCloud source, target;
     try {
       source = seq.load_frame(s);
@@ -98,12 +126,11 @@ int run_bench(const Args& args) {
       std::printf("%-12s %6s %10s %11s %8s %8s %10.1f\n", name.c_str(), "-", "-", "-", "no",
                   pipeline.upper_bound_success() ? "yes" : "no", total);
     std::fflush(stdout);
-    if (out) {
+    if (journal) {
       auto j = nlohmann::json::parse(
           registration_report_json(pipeline, seq.scan_path(s), seq.scan_path(t), -1));
       j.erase("config");
-      j["pair"] = {s, t};
-      out << j.dump() << "\n";
+      journal->append(std::move(j), s, t);
     }
   }
   std::fprintf(stderr, "%40s\r", "");
@@ -112,6 +139,9 @@ int run_bench(const Args& args) {
   if (n == 0) throw InputError(args.get("pairs") + ": no pair could be loaded");
   std::printf("\npairs run: %zu%s\n", n,
               failed_to_load ? (" (" + std::to_string(failed_to_load) + " skipped)").c_str() : "");
+  if (resumed)
+    std::printf("of which %d taken from %s.partial (--resume); stage times cover the others\n",
+                resumed, args.get("out").c_str());
   std::printf("success (selected pose, %.1f m / %.1f deg): %d/%zu = %.1f %%\n",
               config.evaluation.max_translation_error, config.evaluation.max_rotation_error,
               successes, n, 100.0 * successes / static_cast<double>(n));
@@ -121,7 +151,10 @@ int run_bench(const Args& args) {
   for (std::size_t i = 0; i < std::size(stages); ++i)
     std::printf("%-18s %10.2f %12.2f\n", stage_name(stages[i]), mean(times[i]), median(times[i]));
   std::printf("%-18s %10.2f %12.2f\n", "total", mean(totals), median(totals));
-  if (args.has("out")) std::printf("\nwrote %s\n", args.get("out").c_str());
+  if (journal) {
+    journal->finish();
+    std::printf("\nwrote %s\n", args.get("out").c_str());
+  }
   return 0;
 }
 

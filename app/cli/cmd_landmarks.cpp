@@ -80,7 +80,9 @@ int run_landmarks(const Args& args) {
 
   if (args.has("json")) {
     write_text_file(args.get("json"),
-                    landmarks_json(set, name, args.has("with-indices")).dump(2) + "\n");
+                    landmarks_json(set, name, args.has("with-indices"))
+                            .dump(2, ' ', false, nlohmann::json::error_handler_t::replace) +
+                        "\n");
     std::printf("wrote %s\n", args.get("json").c_str());
   }
   return 0;

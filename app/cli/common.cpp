@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "command.hpp"
+#include "pagor/atomic_file.hpp"
 #include "pagor/errors.hpp"
 #include "pagor/kitti.hpp"
 #include "pagor/synthetic.hpp"
@@ -55,10 +56,7 @@ void warn(const std::string& message) {
 }
 
 void write_text_file(const std::string& path, const std::string& text) {
-  std::ofstream out(path, std::ios::trunc);
-  if (!out) throw InputError(path + ": cannot open for writing");
-  out << text;
-  if (!out) throw InputError(path + ": write failed");
+  write_file_atomic(path, text);
 }
 
 std::string find_shared_kitti() {

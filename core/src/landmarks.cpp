@@ -14,6 +14,7 @@
 
 #include "pagor/errors.hpp"
 #include "pagor/voxel_grid.hpp"
+#include "pagor/work_budget.hpp"
 
 namespace pagor {
 namespace {
@@ -51,6 +52,9 @@ std::vector<std::vector<int>> members_of_voxels(const VoxelDownsample& ds,
 
 void add_clusters(int class_index, const ClassParams& p, const VoxelDownsample& ds,
                   const std::vector<std::vector<int>>& members, LandmarkSet& out) {
+  check_radius_work(ds.points, p.cluster_tolerance,
+                    "landmarks.classes[" + std::to_string(class_index) + "].cluster_tolerance",
+                    "class '" + p.name + "'");
   auto cloud = to_pcl(ds.points);
   pcl::search::KdTree<pcl::PointXYZ>::Ptr tree(new pcl::search::KdTree<pcl::PointXYZ>);
   tree->setInputCloud(cloud);
@@ -90,6 +94,9 @@ void add_clusters(int class_index, const ClassParams& p, const VoxelDownsample& 
 
 void add_keypoints(int class_index, const ClassParams& p, const VoxelDownsample& ds,
                    const std::vector<std::vector<int>>& members, LandmarkSet& out) {
+  check_radius_work(ds.points, p.feature_radius,
+                    "landmarks.classes[" + std::to_string(class_index) + "].feature_radius",
+                    "class '" + p.name + "'");
   auto cloud = to_pcl(ds.points);
   pcl::search::KdTree<pcl::PointXYZ>::Ptr tree(new pcl::search::KdTree<pcl::PointXYZ>);
   tree->setInputCloud(cloud);
