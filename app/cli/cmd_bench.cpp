@@ -105,7 +105,7 @@ int run_bench(const Args& args) {
     }
     pipeline.set_input(std::move(source.cloud), std::move(target.cloud));
     pipeline.set_ground_truth(seq.ground_truth(s, t));
-    pipeline.run();
+    with_config_origin(args, [&] { pipeline.run(); });
 
     double total = 0;
     for (std::size_t i = 0; i < std::size(stages); ++i) {

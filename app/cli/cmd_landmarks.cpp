@@ -67,7 +67,9 @@ int run_landmarks(const Args& args) {
   std::printf("cloud: %s\n", name.c_str());
   std::printf("loaded %zu points in %.1f ms (%zu dropped with NaN/Inf coordinates)\n",
               loaded.cloud.size(), load_ms, loaded.dropped_nonfinite);
-  const LandmarkSet set = extract_landmarks(loaded.cloud, config.label_scheme, config.landmarks);
+  LandmarkSet set;
+  with_config_origin(
+      args, [&] { set = extract_landmarks(loaded.cloud, config.label_scheme, config.landmarks); });
   for (const auto& w : set.warnings) warn(name + ": " + w);
 
   std::printf("\n%-14s %-8s %9s %9s %10s %10s\n", "class", "method", "points", "voxels",

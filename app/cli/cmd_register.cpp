@@ -121,7 +121,7 @@ int run_register(const Args& args) {
   Pipeline pipeline(config, args.get_int("threads", 1));
   pipeline.set_input(std::move(pair.source.cloud), std::move(pair.target.cloud));
   pipeline.set_ground_truth(pair.T_target_source_gt);
-  pipeline.run();
+  with_config_origin(args, [&] { pipeline.run(); });
   for (const auto& w : pipeline.warnings()) warn(w);
   print_registration(pipeline);
   if (args.has("json")) {

@@ -51,6 +51,15 @@ LoadedCloud load_single_cloud(const Args& args, std::string& name) {
   return out;
 }
 
+void with_config_origin(const Args& args, const std::function<void()>& stage) {
+  try {
+    stage();
+  } catch (const ConfigError& e) {
+    throw ConfigError((args.has("config") ? args.get("config") : "built-in defaults") + ": " +
+                      e.what());
+  }
+}
+
 void warn(const std::string& message) {
   std::cerr << "pagor: warning: " << message << "\n";
 }

@@ -134,8 +134,12 @@ Header parse_header(std::string_view bytes, const std::string& name) {
     h.body = pos;
     h.body_line = line_no + 1;
   }
+  if (line_no == 0) throw InputError(name + ": not a PLY file (it is empty)");
   if (!ended) throw InputError(name + ": PLY header has no end_header line");
   if (!have_format) throw InputError(name + ": PLY header has no format line");
+  bool has_vertex = false;
+  for (const auto& e : h.elements) has_vertex = has_vertex || e.name == "vertex";
+  if (!has_vertex) throw InputError(name + ": PLY file has no 'vertex' element");
   return h;
 }
 
@@ -240,6 +244,7 @@ class BodyReader {
   // Upper bound on the records left: each needs at least one byte (binary, when the record has
   // any property) or one line (ASCII).
   std::size_t bytes_left() const { return bytes_.size() - pos_; }
+  bool ascii() const { return format_ == Format::ascii; }
   const std::string& where() const { return where_; }
 
  private:
@@ -270,9 +275,9 @@ PointCloud read_vertices(BodyReader& body, const Element& e, const std::string& 
   }
   if (x < 0 || y < 0 || z < 0)
     throw InputError(name + ": PLY element 'vertex' has no x, y, z properties");
-  // Each record takes at least `record` bytes (binary) or 2 bytes (an ASCII value and a newline):
-  // a count beyond that is a lie, caught before allocating.
-  const std::size_t min_bytes = std::max<std::size_t>(record, 2);
+  // Each record takes at least `record` bytes (binary) or two per value but the last (ASCII: a
+  // digit and a separator): a count beyond that is a lie, caught before allocating.
+  const std::size_t min_bytes = body.ascii() ? 2 * e.props.size() - 1 : record;
   if (e.count > body.bytes_left() / min_bytes)
     throw InputError(name + ": PLY element 'vertex' declares " + std::to_string(e.count) +
                      " records, more than the " + std::to_string(body.bytes_left()) +
