@@ -1,5 +1,7 @@
 // pagor bench: every pair of a pairs file, one JSON line per pair, and a summary table.
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -79,11 +81,13 @@ int run_bench(const Args& args) {
   int successes = 0, upper = 0, failed_to_load = 0, resumed = 0;
   Pipeline pipeline(config, args.get_int("threads", 1));
 
+  const bool progress = isatty(STDERR_FILENO);
   std::printf("%-12s %6s %10s %11s %8s %8s %10s\n", "pair", "level", "t err [m]", "r err [deg]",
               "success", "bound", "time [ms]");
   for (std::size_t k = 0; k < pairs.size(); ++k) {
     const auto [s, t] = pairs[k];
-    std::fprintf(stderr, "[%zu/%zu] %d -> %d ...\r", k + 1, pairs.size(), s, t);
+    // Progress only on a terminal: in a log it would run into the next line (an error, say).
+    if (progress) std::fprintf(stderr, "[%zu/%zu] %d -> %d ...\r", k + 1, pairs.size(), s, t);
     std::fflush(stderr);
     if (const nlohmann::json* done = journal ? journal->find(s, t) : nullptr) {
       const ResumedPair r = resumed_pair(*done);
@@ -133,7 +137,7 @@ int run_bench(const Args& args) {
       journal->append(std::move(j), s, t);
     }
   }
-  std::fprintf(stderr, "%40s\r", "");
+  if (progress) std::fprintf(stderr, "%40s\r", "");
 
   const std::size_t n = totals.size();
   if (n == 0) throw InputError(args.get("pairs") + ": no pair could be loaded");

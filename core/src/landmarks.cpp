@@ -24,11 +24,18 @@ double ms_since(Clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 }
 
+// The points relative to the first one: PCL's normals and FPFH accumulate in float, which loses
+// a georeferenced cloud (300 km from the origin) to cancellation; only relative positions are
+// used from the PCL cloud, the landmarks' centroids come from `points` themselves.
 pcl::PointCloud<pcl::PointXYZ>::Ptr to_pcl(const std::vector<Eigen::Vector3f>& points) {
   pcl::PointCloud<pcl::PointXYZ>::Ptr out(new pcl::PointCloud<pcl::PointXYZ>);
   out->resize(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i)
-    (*out)[i] = pcl::PointXYZ(points[i].x(), points[i].y(), points[i].z());
+  const Eigen::Vector3d origin =
+      points.empty() ? Eigen::Vector3d::Zero() : Eigen::Vector3d(points.front().cast<double>());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const Eigen::Vector3f p = (points[i].cast<double>() - origin).cast<float>();
+    (*out)[i] = pcl::PointXYZ(p.x(), p.y(), p.z());
+  }
   return out;
 }
 
