@@ -35,7 +35,7 @@ export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:allocator_may_return_null=1}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-halt_on_error=1:print_stacktrace=1}
 "$build/fuzz/fuzz_$target" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
   -malloc_limit_mb=1024 -print_final_stats=1 -artifact_prefix="$artifacts/" "$corpus" 2>&1 |
-  grep -E "^(#[0-9]+ +DONE|stat::number_of_executed_units|stat::peak_rss_mb|==[0-9]+==ERROR|SUMMARY|.*runtime error|Done [0-9]+ runs)|INFO: seed corpus" || true
+  grep -E "^(#[0-9]+[[:space:]]+DONE|stat::number_of_executed_units|stat::peak_rss_mb|==[0-9]+==ERROR|SUMMARY|.*runtime error|Done [0-9]+ runs)|INFO: seed corpus" || true
 # libFuzzer leaves crash-*, leak-*, timeout-* or oom-* files when it finds something.
 if ls "$artifacts" | grep -qE '^(crash|leak|timeout|oom|slow-unit)-'; then
   echo "fuzz_$target: FINDINGS in $artifacts"; exit 1
