@@ -64,8 +64,8 @@ TEST_CASE("pairs files: only two whole frame numbers per line") {
     CHECK_THROWS_WITH(read_pairs_file(dir.file("bad.txt")),
                       Catch::Contains("bad.txt:") && Catch::Contains(what));
   };
-  fails("0 20.5\n", "bad.txt:1: '20.5' is not a frame number");
-  fails("0 20\n0 1e3\n", "bad.txt:2: '1e3' is not a frame number");
+  fails("0 20.5\n", "bad.txt:1: expected two frame numbers 'source target', but '20.5' is not");
+  fails("0 20\n0 1e3\n", "bad.txt:2: expected two frame numbers 'source target', but '1e3'");
   fails("-1 3\n", "'-1' is not a frame number");
   fails("0 4294967316\n", "'4294967316' is not a frame number");
   fails("0 1 2\n", "expected two frame numbers");

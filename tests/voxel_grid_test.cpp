@@ -44,5 +44,5 @@ TEST_CASE("a grid of more than 2^52 voxels per axis is an error, not undefined b
   const std::vector<Eigen::Vector3f> huge = {{-1e29f, 0, 0}, {1e29f, 0, 0}};
   CHECK_THROWS_AS(voxel_downsample(huge, 0.5), InputError);
   const std::vector<Eigen::Vector3f> small = {{0, 0, 0}, {100, 0, 0}};
-  CHECK_THROWS_WITH(voxel_downsample(small, 1e-300), Catch::Contains("2^52 voxels"));
+  CHECK_THROWS_WITH(voxel_downsample(small, 1e-300), Catch::Contains("beyond 2^52"));
 }

@@ -160,7 +160,8 @@ std::vector<std::pair<int, int>> read_pairs_file(const std::string& path) {
     for (int k = 0; k < 2; ++k) {
       const auto f = parse::to_uint(w[static_cast<std::size_t>(k)]);
       if (!f || *f > 999999)  // frame files are named with six digits
-        throw InputError(at + ": '" + std::string(w[static_cast<std::size_t>(k)].substr(0, 40)) +
+        throw InputError(at + ": expected two frame numbers 'source target', but '" +
+                         std::string(w[static_cast<std::size_t>(k)].substr(0, 40)) +
                          "' is not a frame number (an integer in [0, 999999])");
       frames[k] = static_cast<int>(*f);
     }

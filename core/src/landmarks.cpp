@@ -24,16 +24,18 @@ double ms_since(Clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 }
 
-// The points relative to the first one: PCL's normals and FPFH accumulate in float, which loses
-// a georeferenced cloud (300 km from the origin) to cancellation; only relative positions are
-// used from the PCL cloud, the landmarks' centroids come from `points` themselves.
+// The points relative to a local origin: PCL's normals and FPFH accumulate in float, which loses
+// a georeferenced cloud (300 km from the origin) to cancellation. The origin is the first point
+// rounded to a multiple of 1024 m, so the subtraction is exact in float and clouds within 512 m
+// of the origin are passed as they are. Only relative positions are used from the PCL cloud; the
+// landmarks' centroids come from `points` themselves.
 pcl::PointCloud<pcl::PointXYZ>::Ptr to_pcl(const std::vector<Eigen::Vector3f>& points) {
   pcl::PointCloud<pcl::PointXYZ>::Ptr out(new pcl::PointCloud<pcl::PointXYZ>);
   out->resize(points.size());
-  const Eigen::Vector3d origin =
-      points.empty() ? Eigen::Vector3d::Zero() : Eigen::Vector3d(points.front().cast<double>());
+  Eigen::Vector3f origin = Eigen::Vector3f::Zero();
+  if (!points.empty()) origin = (points.front() / 1024.0f).array().round().matrix() * 1024.0f;
   for (std::size_t i = 0; i < points.size(); ++i) {
-    const Eigen::Vector3f p = (points[i].cast<double>() - origin).cast<float>();
+    const Eigen::Vector3f p = points[i] - origin;
     (*out)[i] = pcl::PointXYZ(p.x(), p.y(), p.z());
   }
   return out;

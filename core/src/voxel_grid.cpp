@@ -1,5 +1,6 @@
 #include "pagor/voxel_grid.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -10,13 +11,14 @@
 namespace pagor {
 namespace {
 
-// Voxel coordinates are taken relative to the corner of the points' bounding box, so a cloud far
-// from the origin (a georeferenced map, a scan 300 km out) gets the same voxels as the same cloud
-// near it. Up to 2^21 voxels per axis they are packed into one 63-bit key; wider grids use a key
-// of three 64-bit integers. Beyond 2^52 voxels per axis (where a double stops counting voxels
-// exactly) the voxel size is rejected.
-constexpr double kPackedAxis = 2097152.0;        // 2^21
-constexpr double kMaxAxis = 4503599627370496.0;  // 2^52
+// A point's voxel is floor(coordinate / voxel size) per axis on the global lattice, computed in
+// float as always, but keyed relative to the lowest voxel of the points' bounding box: up to 2^21
+// voxels per axis the three relative indices are packed into one 63-bit key, wider clouds (a
+// georeferenced map, or a scan 300 km from the origin with a fine grid) use a key of three 64-bit
+// integers, so far-apart points never share a key. Lattice indices beyond 2^52 (where the
+// conversion would lose voxels or overflow) are rejected.
+constexpr double kPackedAxis = 2097152.0;         // 2^21
+constexpr double kMaxIndex = 4503599627370496.0;  // 2^52
 
 struct WideKey {
   std::int64_t x, y, z;
@@ -70,22 +72,25 @@ VoxelDownsample voxel_downsample(const std::vector<Eigen::Vector3f>& points, dou
     }
     return out;
   }
-  Eigen::Vector3d lo = point(0).cast<double>(), hi = lo;
+  Eigen::Vector3f lo = point(0), hi = lo;
   for (std::size_t i = 1; i < n; ++i) {
-    lo = lo.cwiseMin(point(i).cast<double>());
-    hi = hi.cwiseMax(point(i).cast<double>());
+    lo = lo.cwiseMin(point(i));
+    hi = hi.cwiseMax(point(i));
   }
-  const double inv = 1.0 / voxel_size;
-  const double cells = ((hi - lo) * inv).maxCoeff();
-  if (!(cells < kMaxAxis))  // also catches NaN and inf coordinates
-    throw InputError("voxel size " + std::to_string(voxel_size) + " m over a cloud " +
-                     std::to_string((hi - lo).maxCoeff()) +
-                     " m across: more than 2^52 voxels per axis (or a non-finite coordinate)");
-  const auto cell = [&](const Eigen::Vector3f& p, int axis) {
-    // In [0, cells]: the subtraction is exact enough in double for float inputs.
-    return static_cast<std::int64_t>(std::floor((static_cast<double>(p[axis]) - lo[axis]) * inv));
-  };
-  if (cells < kPackedAxis - 1) {
+  const float inv = static_cast<float>(1.0 / voxel_size);
+  const double reach =
+      std::max(lo.cast<double>().cwiseAbs().maxCoeff(), hi.cast<double>().cwiseAbs().maxCoeff()) *
+      static_cast<double>(inv);
+  if (!(reach < kMaxIndex))  // also catches NaN and inf coordinates
+    throw InputError("voxel size " + std::to_string(voxel_size) + " m for coordinates up to " +
+                     std::to_string(reach * voxel_size) +
+                     " m: voxel indices beyond 2^52 (or a non-finite coordinate)");
+  const auto index = [inv](float v) { return static_cast<std::int64_t>(std::floor(v * inv)); };
+  const std::int64_t base[3] = {index(lo.x()), index(lo.y()), index(lo.z())};
+  const std::int64_t span =
+      std::max({index(hi.x()) - base[0], index(hi.y()) - base[1], index(hi.z()) - base[2]});
+  const auto cell = [&](const Eigen::Vector3f& p, int axis) { return index(p[axis]) - base[axis]; };
+  if (static_cast<double>(span) < kPackedAxis) {
     const auto key = [&](const Eigen::Vector3f& p) {
       return (static_cast<std::uint64_t>(cell(p, 0)) << 42) |
              (static_cast<std::uint64_t>(cell(p, 1)) << 21) |
