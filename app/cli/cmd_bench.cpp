@@ -1,11 +1,16 @@
 // pagor bench: every pair of a pairs set (KITTI pairs file or generic manifest), a row per pair,
-// the success rate, the acceptance verdict's precision and recall, and stage times.
+// the success rate, the acceptance verdict's precision and recall, and stage times. With --out,
+// results go through a journal (bench_journal.hpp) so a killed run loses nothing and --resume
+// continues it.
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
-#include <fstream>
+#include <nlohmann/json.hpp>
+#include <optional>
 
+#include "bench_journal.hpp"
 #include "command.hpp"
 #include "pagor/benchmark.hpp"
 #include "pagor/errors.hpp"
@@ -24,18 +29,40 @@ PairSet pair_set_from_args(const Args& args) {
   return kitti_pair_set(args.get("kitti-root"), args.get("sequence", "00"), args.get("pairs"));
 }
 
+// What the summary needs of a pair taken from an earlier run's line; its times are not counted.
+PairOutcome resumed_outcome(const PairEntry& entry, const nlohmann::json& line) {
+  PairOutcome o;
+  o.name = entry.name;
+  o.negative = entry.negative;
+  o.loaded = true;
+  o.timed = false;
+  const auto gt = line.find("ground_truth");
+  if (gt != line.end() && gt->is_object()) {
+    o.has_ground_truth = true;
+    o.success = gt->value("success", false);
+    o.upper_bound = gt->value("upper_bound", false);
+  }
+  const auto a = line.find("acceptance");
+  if (a != line.end() && a->is_object()) o.accepted = a->value("accepted", false);
+  const auto level = line.find("selected_level");
+  if (level != line.end() && level->is_number_integer()) o.selected_level = level->get<int>();
+  o.report_json = line.dump();
+  return o;
+}
+
 void print_row(const PairOutcome& o) {
   const char* verdict = o.accepted ? "accept" : "reject";
   const char* truth = o.negative ? "neg" : (o.has_ground_truth ? (o.success ? "yes" : "no") : "-");
+  const std::string time = o.timed ? std::to_string(o.total_ms).substr(0, 8) : "resumed";
   if (o.error)
-    std::printf("%-14s %6d %10.2f %11.2f %8s %6s %8s %10.1f\n", o.name.c_str(), o.selected_level,
+    std::printf("%-14s %6d %10.2f %11.2f %8s %6s %8s %10s\n", o.name.c_str(), o.selected_level,
                 o.error->translation, o.error->rotation_deg, truth, o.upper_bound ? "yes" : "no",
-                verdict, o.total_ms);
+                verdict, time.c_str());
   else
-    std::printf("%-14s %6s %10s %11s %8s %6s %8s %10.1f\n", o.name.c_str(),
+    std::printf("%-14s %6s %10s %11s %8s %6s %8s %10s\n", o.name.c_str(),
                 o.selected_level >= 0 ? std::to_string(o.selected_level).c_str() : "-", "-", "-",
                 truth, o.has_ground_truth ? (o.upper_bound ? "yes" : "no") : "-", verdict,
-                o.total_ms);
+                time.c_str());
   std::fflush(stdout);
 }
 
@@ -73,42 +100,60 @@ std::vector<Option> bench_options() {
           {"config", 1, "FILE", "configuration JSON (absent keys: the preset's values)"},
           {"preset", 1, "NAME", "base configuration: default or paper (the published one)"},
           {"out", 1, "FILE", "write one JSON line per pair (pagor.register/1 without config)"},
+          {"resume", 0, "", "with --out: continue a killed run, skipping pairs already written"},
           {"threads", 1, "N", "threads for landmarks, graph and verification (default 1)"}};
 }
 
 int run_bench(const Args& args) {
   const Config config = config_from_args(args);
   const PairSet set = pair_set_from_args(args);
-  std::ofstream out;
-  if (args.has("out")) {
-    out.open(args.get("out"), std::ios::trunc);
-    if (!out) throw InputError(args.get("out") + ": cannot open for writing");
-  }
+  if (args.has("resume") && !args.has("out")) throw UsageError("--resume goes with --out FILE");
+  std::optional<BenchJournal> journal;
+  if (args.has("out"))
+    journal.emplace(args.get("out"), args.has("resume"),
+                    fingerprint(set.origin + "\n" + config_to_json(config, -1)));
+
   Pipeline pipeline(config, args.get_int("threads", 1));
   std::printf("%-14s %6s %10s %11s %8s %6s %8s %10s\n", "pair", "level", "t err [m]", "r err [deg]",
               "success", "bound", "verdict", "time [ms]");
   std::vector<PairOutcome> outcomes;
-  const bool progress = isatty(fileno(stderr));  // a progress line only for a person watching
+  const bool progress = isatty(STDERR_FILENO);  // in a log it would run into the next line
   for (std::size_t k = 0; k < set.pairs.size(); ++k) {
+    const PairEntry& entry = set.pairs[k];
     if (progress) {
-      std::fprintf(stderr, "[%zu/%zu] %s ...\r", k + 1, set.pairs.size(),
-                   set.pairs[k].name.c_str());
+      std::fprintf(stderr, "[%zu/%zu] %s ...\r", k + 1, set.pairs.size(), entry.name.c_str());
       std::fflush(stderr);
     }
-    PairOutcome o = run_pair(pipeline, set.pairs[k]);
+    if (const nlohmann::json* done = journal ? journal->find(entry.name) : nullptr) {
+      outcomes.push_back(resumed_outcome(entry, *done));
+      print_row(outcomes.back());
+      continue;
+    }
+    PairOutcome o;
+    with_config_origin(args, [&] { o = run_pair(pipeline, entry); });
     if (!o.loaded) {
       warn("pair " + o.name + " skipped: " + o.load_error);
     } else {
       print_row(o);
-      if (out) out << o.report_json << "\n" << std::flush;
+      if (journal) journal->append(nlohmann::json::parse(o.report_json), entry.name);
     }
     outcomes.push_back(std::move(o));
   }
   if (progress) std::fprintf(stderr, "%60s\r", "");
   const BenchmarkSummary s = summarize(outcomes);
-  if (s.pairs_run == 0) throw InputError(set.origin + ": no pair could be loaded");
+  if (s.pairs_run == 0)
+    throw InputError(set.origin +
+                     ": no pair could be loaded (first: " + outcomes.front().load_error + ")");
   print_summary(s, config);
-  if (args.has("out")) std::printf("\nwrote %s\n", args.get("out").c_str());
+  const auto resumed = std::count_if(outcomes.begin(), outcomes.end(),
+                                     [](const PairOutcome& o) { return !o.timed; });
+  if (resumed > 0)
+    std::printf("of which %ld taken from %s.partial (--resume); stage times cover the others\n",
+                static_cast<long>(resumed), args.get("out").c_str());
+  if (journal) {
+    journal->finish();
+    std::printf("\nwrote %s\n", args.get("out").c_str());
+  }
   return 0;
 }
 

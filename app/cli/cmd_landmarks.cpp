@@ -63,10 +63,13 @@ int run_landmarks(const Args& args) {
   std::printf("cloud: %s\n", name.c_str());
   std::printf("loaded %zu points in %.1f ms (%zu dropped with NaN/Inf coordinates)\n",
               loaded.cloud.size(), load_ms, loaded.dropped_nonfinite);
-  LandmarkSet set = extract_landmarks(loaded.cloud, config.label_scheme, config.landmarks);
-  // One cloud alone: the class-agnostic keypoints as the pipeline would add them to a pair of it.
-  if (needs_fallback(loaded.cloud, loaded.cloud, set, set, config.landmarks.fallback))
-    add_fallback_landmarks(loaded.cloud, config.label_scheme, config.landmarks, set);
+  LandmarkSet set;
+  with_config_origin(args, [&] {
+    set = extract_landmarks(loaded.cloud, config.label_scheme, config.landmarks);
+    // One cloud alone: the class-agnostic keypoints as the pipeline would add them to a pair.
+    if (needs_fallback(loaded.cloud, loaded.cloud, set, set, config.landmarks.fallback))
+      add_fallback_landmarks(loaded.cloud, config.label_scheme, config.landmarks, set);
+  });
   for (const auto& w : set.warnings) warn(name + ": " + w);
   std::printf("\n%-14s %-8s %9s %11s %9s %9s %10s %10s\n", "class", "method", "points",
               "spacing [m]", "voxel [m]", "voxels", "landmarks", "time [ms]");
@@ -82,7 +85,9 @@ int run_landmarks(const Args& args) {
 
   if (args.has("json")) {
     write_text_file(args.get("json"),
-                    landmarks_json(set, name, args.has("with-indices")).dump(2) + "\n");
+                    landmarks_json(set, name, args.has("with-indices"))
+                            .dump(2, ' ', false, nlohmann::json::error_handler_t::replace) +
+                        "\n");
     std::printf("wrote %s\n", args.get("json").c_str());
   }
   return 0;

@@ -131,7 +131,7 @@ int run_register(const Args& args) {
   Pipeline pipeline(config, args.get_int("threads", 1));
   pipeline.set_input(std::move(pair.source.cloud), std::move(pair.target.cloud));
   pipeline.set_ground_truth(pair.T_target_source_gt);
-  pipeline.run();
+  with_config_origin(args, [&] { pipeline.run(); });
   for (std::string w : pipeline.warnings()) {  // name the file a cloud's warning is about
     for (const auto& [side, name] :
          {std::pair{"source: ", pair.source_name}, std::pair{"target: ", pair.target_name}})

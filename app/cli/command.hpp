@@ -2,6 +2,7 @@
 /// \file command.hpp
 /// The subcommands of `pagor` and the helpers they share.
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -48,6 +49,11 @@ std::vector<Option> single_cloud_options();
 
 /// Loads the cloud the single-cloud options select; `name` receives a description.
 LoadedCloud load_single_cloud(const Args& args, std::string& name);
+
+/// Runs `stage`; a ConfigError it throws (a work budget exceeded by the parameters) is re-thrown
+/// with the configuration's file in front (or "built-in defaults"), so the message names both
+/// the file and the key.
+void with_config_origin(const Args& args, const std::function<void()>& stage);
 
 /// Prints a warning line on stderr.
 void warn(const std::string& message);

@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "command.hpp"
+#include "pagor/atomic_file.hpp"
 #include "pagor/errors.hpp"
 #include "pagor/kitti.hpp"
 #include "pagor/synthetic.hpp"
@@ -51,15 +52,21 @@ LoadedCloud load_single_cloud(const Args& args, std::string& name) {
   return out;
 }
 
+void with_config_origin(const Args& args, const std::function<void()>& stage) {
+  try {
+    stage();
+  } catch (const ConfigError& e) {
+    throw ConfigError((args.has("config") ? args.get("config") : "built-in defaults") + ": " +
+                      e.what());
+  }
+}
+
 void warn(const std::string& message) {
   std::cerr << "pagor: warning: " << message << "\n";
 }
 
 void write_text_file(const std::string& path, const std::string& text) {
-  std::ofstream out(path, std::ios::trunc);
-  if (!out) throw InputError(path + ": cannot open for writing");
-  out << text;
-  if (!out) throw InputError(path + ": write failed");
+  write_file_atomic(path, text);
 }
 
 std::string find_shared_kitti() {

@@ -1,5 +1,6 @@
 // pagor: the command-line front end of Pagor Studio.
 
+#include <csignal>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -59,6 +60,9 @@ int dispatch(int argc, char** argv) {
 }  // namespace pagor::cli
 
 int main(int argc, char** argv) {
+  // A file-size limit (ulimit -f) makes a write fail with EFBIG, which the writers report and
+  // recover from, instead of killing the process in the middle of a file.
+  std::signal(SIGXFSZ, SIG_IGN);
   try {
     return pagor::cli::dispatch(argc, argv);
   } catch (const pagor::cli::UsageError& e) {

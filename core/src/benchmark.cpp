@@ -81,6 +81,7 @@ BenchmarkSummary summarize(const std::vector<PairOutcome>& outcomes) {
       else if (o.negative || o.has_ground_truth)
         ++s.false_accepts;
     }
+    if (!o.timed) continue;
     for (int i = 0; i < kStageCount; ++i)
       times[static_cast<std::size_t>(i)].push_back(o.stage_ms[static_cast<std::size_t>(i)]);
     totals.push_back(o.total_ms);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <nlohmann/json.hpp>
@@ -12,6 +13,7 @@
 #include <utility>
 
 #include "pagor/errors.hpp"
+#include "pagor/json_input.hpp"
 
 namespace pagor {
 namespace {
@@ -278,24 +280,19 @@ std::string type_name(const json& j) {
   return j.type_name();
 }
 
+// Numbers go through the checked getters of json_input.hpp: finite only, integer ranges checked
+// before any conversion.
 void decode(const Context& ctx, const json& j, const std::string& path, double& x) {
-  if (!j.is_number()) fail(ctx, path, "expected a number, got " + type_name(j));
-  x = j.get<double>();
-  if (!std::isfinite(x)) fail(ctx, path, "expected a finite number");
+  x = json_finite(j, ctx.origin + ": " + path);
 }
 template <class I>
 void decode_integer(const Context& ctx, const json& j, const std::string& path, I& x) {
-  if (j.is_number_float()) {
-    const double d = j.get<double>();
-    if (d != std::floor(d)) fail(ctx, path, "expected an integer, got " + j.dump());
-    x = static_cast<I>(d);
-    return;
-  }
-  if (!j.is_number_integer()) fail(ctx, path, "expected an integer, got " + type_name(j));
-  if (std::is_unsigned<I>::value && j.is_number_integer() && !j.is_number_unsigned() &&
-      j.get<long long>() < 0)
-    fail(ctx, path, "expected a non-negative integer, got " + j.dump());
-  x = j.get<I>();
+  const std::string where = ctx.origin + ": " + path;
+  if constexpr (std::is_unsigned<I>::value)
+    x = static_cast<I>(json_unsigned(j, where, std::numeric_limits<I>::max()));
+  else
+    x = static_cast<I>(
+        json_integer(j, where, std::numeric_limits<I>::min(), std::numeric_limits<I>::max()));
 }
 void decode(const Context& ctx, const json& j, const std::string& path, int& x) {
   decode_integer(ctx, j, path, x);
@@ -330,7 +327,7 @@ void decode(const Context& ctx, const json& j, const std::string& path, E& x) {
     }
     allowed += (allowed.empty() ? "" : ", ") + std::string("\"") + name + "\"";
   }
-  fail(ctx, path, "expected one of " + allowed + ", got " + j.dump());
+  fail(ctx, path, "expected one of " + allowed + ", got " + json_excerpt(j));
 }
 template <class P, std::enable_if_t<IsParams<P>::value, int> = 0>
 void decode(const Context& ctx, const json& j, const std::string& path, P& p);
@@ -405,6 +402,9 @@ void decode_scheme(const Context& ctx, const json& j, LabelScheme& s) {
   if (s.name.empty()) fail(ctx, path + ".name", "missing");
   if (s.classes.empty()) fail(ctx, path + ".classes", "missing or empty");
 }
+
+// Smallest voxel a config may ask for: below a millimetre a voxel grid only costs memory.
+constexpr double kMinVoxelSize = 1e-3;  // [m]
 
 void check(const Context& ctx, bool ok, const std::string& path, const std::string& what) {
   if (!ok) fail(ctx, path, what);
@@ -495,7 +495,8 @@ void validate(const Config& c, const std::string& origin) {
           "class '" + p.name + "' is not in label scheme '" + c.label_scheme.name +
               "' (it has: " + c.label_scheme.class_list() + ")");
     check(ctx, names.insert(p.name).second, path + ".name", "class '" + p.name + "' listed twice");
-    check(ctx, p.voxel_size >= 0, path + ".voxel_size", "must be >= 0 [m]");
+    check(ctx, p.voxel_size == 0 || p.voxel_size >= kMinVoxelSize, path + ".voxel_size",
+          "must be 0 (none) or at least 0.001 [m]");
     check(ctx, p.cluster_tolerance > 0, path + ".cluster_tolerance", "must be > 0 [m]");
     check(ctx, p.min_points >= 1, path + ".min_points", "must be >= 1");
     check(ctx, p.max_points >= p.min_points, path + ".max_points", "must be >= min_points");
@@ -548,7 +549,8 @@ void validate(const Config& c, const std::string& origin) {
   check(ctx, c.gnc.mu_factor > 1, "gnc.mu_factor", "must be > 1");
   check(ctx, c.gnc.max_iterations >= 1, "gnc.max_iterations", "must be >= 1");
   check(ctx, c.gnc.cost_tolerance > 0, "gnc.cost_tolerance", "must be > 0");
-  check(ctx, c.verification.voxel_size >= 0, "verification.voxel_size", "must be >= 0 [m]");
+  check(ctx, c.verification.voxel_size == 0 || c.verification.voxel_size >= kMinVoxelSize,
+        "verification.voxel_size", "must be 0 (none) or at least 0.001 [m]");
   check(ctx, c.verification.mu > 0, "verification.mu", "must be > 0 [m]");
   check(ctx, c.acceptance.inlier_distance > 0, "acceptance.inlier_distance", "must be > 0 [m]");
   check(ctx, c.acceptance.ground_thickness >= 0, "acceptance.ground_thickness", "must be >= 0 [m]");
@@ -568,12 +570,7 @@ void validate(const Config& c, const std::string& origin) {
 Config parse_config(const std::string& json_text, const std::string& origin,
                     const std::string& base_preset) {
   const Context ctx{origin};
-  json j;
-  try {
-    j = json::parse(json_text);
-  } catch (const json::parse_error& e) {
-    throw ConfigError(origin + ": not valid JSON (" + e.what() + ")");
-  }
+  const json j = parse_json_limited(json_text, origin);
   if (!j.is_object()) throw ConfigError(origin + ": expected a JSON object at the top level");
   std::string preset = base_preset;
   if (const auto it = j.find("preset"); it != j.end()) decode(ctx, *it, "preset", preset);
@@ -614,6 +611,9 @@ Config parse_config(const std::string& json_text, const std::string& origin,
 }
 
 Config load_config(const std::string& path, const std::string& base_preset) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw InputError(path + ": is a directory, expected a config file");
   std::ifstream in(path);
   if (!in) throw InputError(path + ": cannot open config file");
   std::stringstream ss;

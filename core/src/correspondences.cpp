@@ -9,6 +9,9 @@
 #include <cmath>
 #include <numeric>
 
+#include "pagor/errors.hpp"
+#include "pagor/work_budget.hpp"
+
 namespace pagor {
 namespace {
 
@@ -113,6 +116,18 @@ CorrespondenceSet match_landmarks(const LandmarkSet& source, const LandmarkSet& 
   CorrespondenceSet out;
   const int classes = static_cast<int>(std::min(source.classes.size(), target.classes.size()));
   std::vector<Correspondence> all;
+  std::size_t candidates = 0;  // all-to-all pairs, counted before any is made
+  for (int c = 0; c < classes; ++c) {
+    if (source.classes[static_cast<std::size_t>(c)].method == LandmarkMethod::fpfh) continue;
+    const double pairs = static_cast<double>(indices_of_class(source, c).size()) *
+                         static_cast<double>(indices_of_class(target, c).size());
+    candidates += pairs > 1e18 ? static_cast<std::size_t>(1e18) : static_cast<std::size_t>(pairs);
+  }
+  if (candidates > kMaxCandidateCorrespondences)
+    throw ConfigError("landmarks.classes: all-to-all matching of these landmarks would make " +
+                      std::to_string(candidates) + " candidate correspondences (budget " +
+                      std::to_string(kMaxCandidateCorrespondences) +
+                      "); raise min_points or voxel_size so that classes have fewer landmarks");
   for (int c = 0; c < classes; ++c) {
     const std::vector<int> si = indices_of_class(source, c);
     const std::vector<int> ti = indices_of_class(target, c);
@@ -138,6 +153,10 @@ CorrespondenceSet match_landmarks(const LandmarkSet& source, const LandmarkSet& 
                            std::to_string(out.candidates) +
                            " correspondences (correspondences.max_correspondences)");
   }
+  if (all.size() > kMaxGraphCorrespondences)
+    throw ConfigError("correspondences.max_correspondences: " + std::to_string(all.size()) +
+                      " correspondences are more than the consistency graph's budget of " +
+                      std::to_string(kMaxGraphCorrespondences) + "; set a cap at most that");
   // Group by class, best first within a class.
   std::stable_sort(all.begin(), all.end(), [](const Correspondence& a, const Correspondence& b) {
     return a.class_index != b.class_index ? a.class_index < b.class_index : a.score > b.score;

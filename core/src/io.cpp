@@ -10,9 +10,11 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
+#include <string_view>
 
 #include "pagor/errors.hpp"
+#include "pagor/pcd_reader.hpp"
+#include "pagor/ply_reader.hpp"
 
 namespace pagor {
 namespace {
@@ -42,159 +44,10 @@ void write_file_bytes(const std::string& path, const void* data, std::size_t siz
   if (!out) throw InputError(path + ": write failed");
 }
 
-// Reads one scalar of any PCL datatype as double.
-double read_scalar(const std::uint8_t* p, std::uint8_t datatype) {
-  switch (datatype) {
-    case pcl::PCLPointField::INT8: {
-      std::int8_t v;
-      std::memcpy(&v, p, 1);
-      return v;
-    }
-    case pcl::PCLPointField::UINT8: {
-      std::uint8_t v;
-      std::memcpy(&v, p, 1);
-      return v;
-    }
-    case pcl::PCLPointField::INT16: {
-      std::int16_t v;
-      std::memcpy(&v, p, 2);
-      return v;
-    }
-    case pcl::PCLPointField::UINT16: {
-      std::uint16_t v;
-      std::memcpy(&v, p, 2);
-      return v;
-    }
-    case pcl::PCLPointField::INT32: {
-      std::int32_t v;
-      std::memcpy(&v, p, 4);
-      return v;
-    }
-    case pcl::PCLPointField::UINT32: {
-      std::uint32_t v;
-      std::memcpy(&v, p, 4);
-      return v;
-    }
-    case pcl::PCLPointField::FLOAT32: {
-      float v;
-      std::memcpy(&v, p, 4);
-      return v;
-    }
-    case pcl::PCLPointField::FLOAT64: {
-      double v;
-      std::memcpy(&v, p, 8);
-      return v;
-    }
-    default:
-      return std::nan("");
-  }
-}
-
-const pcl::PCLPointField* find_field(const pcl::PCLPointCloud2& blob, const char* name) {
-  for (const auto& f : blob.fields)
-    if (f.name == name) return &f;
-  return nullptr;
-}
-
-// PCL's readers trust their input (a text file that is not a PCD crashes loadPCDFile), so the
-// header is checked here first: the fields it declares, their sizes, the point count, and that the
-// file holds as many bytes as a binary body needs.
-void check_pcd_header(const std::string& path, const std::vector<char>& bytes) {
-  std::istringstream in(std::string(bytes.begin(), bytes.end()));
-  std::string line;
-  std::size_t fields = 0, sizes = 0, types = 0, point_bytes = 0, points = 0;
-  bool have_points = false, have_data = false;
-  std::string data;
-  while (!have_data && std::getline(in, line)) {
-    std::istringstream ls(line);
-    std::string key;
-    if (!(ls >> key) || key[0] == '#') continue;
-    std::vector<std::string> words;
-    for (std::string w; ls >> w;) words.push_back(w);
-    if (key == "FIELDS")
-      fields = words.size();
-    else if (key == "TYPE")
-      types = words.size();
-    else if (key == "SIZE") {
-      sizes = words.size();
-      for (const auto& w : words) point_bytes += static_cast<std::size_t>(std::atoi(w.c_str()));
-    } else if (key == "POINTS" && words.size() == 1) {
-      points = static_cast<std::size_t>(std::strtoull(words[0].c_str(), nullptr, 10));
-      have_points = true;
-    } else if (key == "DATA" && words.size() == 1) {
-      data = words[0];
-      have_data = true;
-    } else if (key != "VERSION" && key != "COUNT" && key != "WIDTH" && key != "HEIGHT" &&
-               key != "VIEWPOINT") {
-      throw InputError(path + ": not a PCD file (unexpected header line '" + line + "')");
-    }
-  }
-  if (!have_data || !have_points || fields == 0)
-    throw InputError(path + ": not a PCD file (header lacks FIELDS, POINTS or DATA)");
-  if (sizes != fields || types != fields)
-    throw InputError(path + ": PCD header declares " + std::to_string(fields) + " fields but " +
-                     std::to_string(sizes) + " sizes and " + std::to_string(types) + " types");
-  if (data != "ascii" && data != "binary" && data != "binary_compressed")
-    throw InputError(path + ": unknown PCD DATA kind '" + data + "'");
-  const std::streamoff body = in.tellg();
-  if (data == "binary" && body >= 0 &&
-      bytes.size() - static_cast<std::size_t>(body) < points * point_bytes)
-    throw InputError(path + ": truncated PCD body (" + std::to_string(points) +
-                     " points declared)");
-}
-
-void check_ply_header(const std::string& path, const std::vector<char>& bytes) {
-  const std::string head(
-      bytes.begin(),
-      bytes.begin() + static_cast<std::ptrdiff_t>(std::min<std::size_t>(bytes.size(), 65536)));
-  if (head.rfind("ply", 0) != 0 || head.find("end_header") == std::string::npos ||
-      head.find("element vertex") == std::string::npos)
-    throw InputError(path + ": not a PLY file with a vertex element");
-}
-
-PointCloud read_pcl_file(const std::string& path, const std::string& ext) {
+PointCloud read_cloud_file(const std::string& path, const std::string& ext) {
   const std::vector<char> bytes = read_file_bytes(path, "point cloud");
-  if (ext == ".pcd")
-    check_pcd_header(path, bytes);
-  else
-    check_ply_header(path, bytes);
-  pcl::PCLPointCloud2 blob;
-  int status = -1;
-  try {
-    status = ext == ".pcd" ? pcl::io::loadPCDFile(path, blob) : pcl::io::loadPLYFile(path, blob);
-  } catch (const std::exception& e) {
-    throw InputError(path + ": cannot parse " + ext.substr(1) + " file (" + e.what() + ")");
-  }
-  if (status < 0) throw InputError(path + ": cannot parse " + ext.substr(1) + " file");
-  const pcl::PCLPointField* fx = find_field(blob, "x");
-  const pcl::PCLPointField* fy = find_field(blob, "y");
-  const pcl::PCLPointField* fz = find_field(blob, "z");
-  if (!fx || !fy || !fz) throw InputError(path + ": no x, y, z fields");
-  const pcl::PCLPointField* fi = find_field(blob, "intensity");
-  const pcl::PCLPointField* fl = find_field(blob, "label");
-
-  const std::size_t n = static_cast<std::size_t>(blob.width) * blob.height;
-  if (blob.data.size() < n * blob.point_step)
-    throw InputError(path + ": truncated data (" + std::to_string(blob.data.size()) +
-                     " bytes for " + std::to_string(n) + " points)");
-  PointCloud cloud;
-  cloud.points.resize(n);
-  if (fi) cloud.intensities.resize(n);
-  if (fl) cloud.labels.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const std::uint8_t* base = blob.data.data() + i * blob.point_step;
-    cloud.points[i] =
-        Eigen::Vector3f(static_cast<float>(read_scalar(base + fx->offset, fx->datatype)),
-                        static_cast<float>(read_scalar(base + fy->offset, fy->datatype)),
-                        static_cast<float>(read_scalar(base + fz->offset, fz->datatype)));
-    if (fi) cloud.intensities[i] = static_cast<float>(read_scalar(base + fi->offset, fi->datatype));
-    if (fl) {
-      // Labels are unsigned ids; a float field holding integers is accepted too.
-      const double v = read_scalar(base + fl->offset, fl->datatype);
-      cloud.labels[i] = std::isfinite(v) && v >= 0 ? static_cast<std::uint32_t>(v) : 0u;
-    }
-  }
-  return cloud;
+  const std::string_view view(bytes.data(), bytes.size());
+  return ext == ".pcd" ? parse_pcd(view, path) : parse_ply(view, path);
 }
 
 pcl::PCLPointCloud2 to_blob(const PointCloud& cloud) {
@@ -314,7 +167,7 @@ LoadedCloud load_cloud(const std::string& path, const std::string& labels_path) 
   if (ext == ".bin") {
     out.cloud = read_kitti_bin(path);
   } else if (ext == ".pcd" || ext == ".ply") {
-    out.cloud = read_pcl_file(path, ext);
+    out.cloud = read_cloud_file(path, ext);
   } else {
     throw InputError(path + ": unknown point-cloud extension '" + ext + "' (use .bin, .pcd, .ply)");
   }

@@ -1,15 +1,21 @@
 #include "pagor/kitti.hpp"
 
 #include <Eigen/LU>
+#include <cctype>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
+#include <string_view>
 
 #include "pagor/errors.hpp"
+#include "parse_numbers.hpp"
 
 namespace pagor {
 namespace {
+
+// Largest deviation of R^T R from the identity, and of det R from 1, accepted in a pose or Tr.
+constexpr double kRotationTolerance = 1e-3;
 
 std::string frame_name(int frame) {
   char buf[32];
@@ -23,6 +29,40 @@ std::ifstream open_text(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw InputError(path + ": cannot open for reading");
   return in;
+}
+
+std::vector<std::string_view> split_words(std::string_view line) {
+  std::vector<std::string_view> out;
+  std::size_t i = 0;
+  while (i < line.size()) {
+    while (i < line.size() && std::isspace(static_cast<unsigned char>(line[i]))) ++i;
+    const std::size_t b = i;
+    while (i < line.size() && !std::isspace(static_cast<unsigned char>(line[i]))) ++i;
+    if (i > b) out.push_back(line.substr(b, i - b));
+  }
+  return out;
+}
+
+// Twelve finite numbers forming a rigid 3x4 transform [R | t] (R orthonormal with det +1, to
+// the precision KITTI's files are written with). `where` is "file:line: what".
+Transform rigid_3x4(const std::vector<std::string_view>& w, const std::string& where) {
+  if (w.size() != 12)
+    throw InputError(where + " needs 12 numbers (a 3x4 transform), got " +
+                     std::to_string(w.size()));
+  double v[12];
+  for (int k = 0; k < 12; ++k) {
+    const auto x = parse::to_double(w[static_cast<std::size_t>(k)]);
+    if (!x || !std::isfinite(*x))
+      throw InputError(where + ": value " + std::to_string(k + 1) + " is not a finite number");
+    v[k] = *x;
+  }
+  const Transform T = transform_from_3x4(v);
+  const Eigen::Matrix3d R = T.block<3, 3>(0, 0);
+  const double orth = (R.transpose() * R - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
+  if (!(orth <= kRotationTolerance) || !(std::abs(R.determinant() - 1.0) <= kRotationTolerance))
+    throw InputError(where + " is not a rigid transform (its rotation part is not orthonormal " +
+                     "with determinant 1)");
+  return T;
 }
 
 }  // namespace
@@ -47,14 +87,9 @@ KittiSequence::KittiSequence(const std::string& root, const std::string& sequenc
   int line_no = 0;
   while (std::getline(poses, line)) {
     ++line_no;
-    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
-    std::istringstream ss(line);
-    double v[12];
-    for (double& x : v)
-      if (!(ss >> x))
-        throw InputError(poses_path + ":" + std::to_string(line_no) +
-                         ": expected 12 numbers (a 3x4 pose)");
-    poses_.push_back(transform_from_3x4(v));
+    const auto w = split_words(line);
+    if (w.empty()) continue;
+    poses_.push_back(rigid_3x4(w, poses_path + ":" + std::to_string(line_no) + ": the pose"));
   }
   if (poses_.empty()) throw InputError(poses_path + ": no poses");
 
@@ -65,13 +100,8 @@ KittiSequence::KittiSequence(const std::string& root, const std::string& sequenc
   while (std::getline(calib, line)) {
     ++line_no;
     if (line.rfind("Tr:", 0) != 0) continue;
-    std::istringstream ss(line.substr(3));
-    double v[12];
-    for (double& x : v)
-      if (!(ss >> x))
-        throw InputError(calib_path + ":" + std::to_string(line_no) +
-                         ": Tr needs 12 numbers (a 3x4 transform)");
-    T_cam_velo_ = transform_from_3x4(v);
+    T_cam_velo_ = rigid_3x4(split_words(std::string_view(line).substr(3)),
+                            calib_path + ":" + std::to_string(line_no) + ": Tr");
     found = true;
   }
   if (!found) throw InputError(calib_path + ": no 'Tr:' line (Velodyne-to-cam0 transform)");
@@ -121,12 +151,21 @@ std::vector<std::pair<int, int>> read_pairs_file(const std::string& path) {
     ++line_no;
     const auto first = line.find_first_not_of(" \t\r");
     if (first == std::string::npos || line[first] == '#') continue;
-    std::istringstream ss(line);
-    int s = -1, t = -1;
-    if (!(ss >> s >> t) || s < 0 || t < 0)
-      throw InputError(path + ":" + std::to_string(line_no) +
-                       ": expected two frame numbers 'source target'");
-    pairs.emplace_back(s, t);
+    const auto w = split_words(line);
+    const std::string at = path + ":" + std::to_string(line_no);
+    if (w.size() != 2)
+      throw InputError(at + ": expected two frame numbers 'source target', got " +
+                       std::to_string(w.size()) + " words");
+    int frames[2];
+    for (int k = 0; k < 2; ++k) {
+      const auto f = parse::to_uint(w[static_cast<std::size_t>(k)]);
+      if (!f || *f > 999999)  // frame files are named with six digits
+        throw InputError(at + ": expected two frame numbers 'source target', but '" +
+                         std::string(w[static_cast<std::size_t>(k)].substr(0, 40)) +
+                         "' is not a frame number (an integer in [0, 999999])");
+      frames[k] = static_cast<int>(*f);
+    }
+    pairs.emplace_back(frames[0], frames[1]);
   }
   if (pairs.empty()) throw InputError(path + ": no pairs");
   return pairs;

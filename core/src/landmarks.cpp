@@ -17,6 +17,7 @@
 #include "pagor/errors.hpp"
 #include "pagor/kdtree.hpp"
 #include "pagor/voxel_grid.hpp"
+#include "pagor/work_budget.hpp"
 
 namespace pagor {
 namespace {
@@ -26,11 +27,20 @@ double ms_since(Clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 }
 
+// The points relative to a local origin: PCL's normals and FPFH accumulate in float, which loses
+// a georeferenced cloud (300 km from the origin) to cancellation. The origin is the first point
+// rounded to a multiple of 1024 m, so the subtraction is exact in float and clouds within 512 m
+// of the origin are passed as they are. Only relative positions are used from the PCL cloud; the
+// landmarks' centroids come from `points` themselves.
 pcl::PointCloud<pcl::PointXYZ>::Ptr to_pcl(const std::vector<Eigen::Vector3f>& points) {
   pcl::PointCloud<pcl::PointXYZ>::Ptr out(new pcl::PointCloud<pcl::PointXYZ>);
   out->resize(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i)
-    (*out)[i] = pcl::PointXYZ(points[i].x(), points[i].y(), points[i].z());
+  Eigen::Vector3f origin = Eigen::Vector3f::Zero();
+  if (!points.empty()) origin = (points.front() / 1024.0f).array().round().matrix() * 1024.0f;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const Eigen::Vector3f p = points[i] - origin;
+    (*out)[i] = pcl::PointXYZ(p.x(), p.y(), p.z());
+  }
   return out;
 }
 
@@ -54,6 +64,9 @@ std::vector<std::vector<int>> members_of_voxels(const VoxelDownsample& ds,
 
 void add_clusters(int class_index, const ClassParams& p, const VoxelDownsample& ds,
                   const std::vector<std::vector<int>>& members, LandmarkSet& out) {
+  check_radius_work(ds.points, p.cluster_tolerance,
+                    "landmarks.classes[" + std::to_string(class_index) + "].cluster_tolerance",
+                    "class '" + p.name + "'");
   auto cloud = to_pcl(ds.points);
   pcl::search::KdTree<pcl::PointXYZ>::Ptr tree(new pcl::search::KdTree<pcl::PointXYZ>);
   tree->setInputCloud(cloud);
@@ -122,6 +135,9 @@ std::vector<int> spread_keypoints(const VoxelDownsample& ds, double voxel_size, 
 // descriptors are computed only at a budget of evenly spread keypoints.
 void add_keypoints(int class_index, const ClassParams& p, const VoxelDownsample& ds,
                    const std::vector<std::vector<int>>& members, LandmarkSet& out) {
+  check_radius_work(ds.points, p.feature_radius,
+                    "landmarks.classes[" + std::to_string(class_index) + "].feature_radius",
+                    "class '" + p.name + "'");
   auto cloud = to_pcl(ds.points);
   pcl::search::KdTree<pcl::PointXYZ>::Ptr tree(new pcl::search::KdTree<pcl::PointXYZ>);
   tree->setInputCloud(cloud);

@@ -1,6 +1,7 @@
 #include "pagor/pair_set.hpp"
 
 #include <Eigen/LU>
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -156,7 +157,12 @@ PairSet kitti_pair_set(const std::string& kitti_root, const std::string& sequenc
                        const std::string& pairs_file) {
   PairSet set;
   set.origin = pairs_file;
+  const KittiSequence seq(kitti_root, sequence);  // a broken poses.txt or calib.txt fails here
   for (const auto& [s, t] : read_pairs_file(pairs_file)) {
+    if (static_cast<std::size_t>(std::max(s, t)) >= seq.pose_count())
+      throw InputError(pairs_file + ": frame " + std::to_string(std::max(s, t)) +
+                       " has no pose in " + seq.directory() + "/poses.txt (" +
+                       std::to_string(seq.pose_count()) + " poses)");
     PairEntry e;
     e.name = std::to_string(s) + " -> " + std::to_string(t);
     e.origin = pairs_file;

@@ -106,7 +106,8 @@ std::string registration_report_json(const Pipeline& p, const std::string& sourc
               {"timings_ms", timings},
               {"warnings", p.warnings()},
               {"config", json::parse(config_to_json(p.config()))}};
-  return out.dump(indent);
+  // Paths are bytes, not always UTF-8: replace what JSON cannot hold rather than throw.
+  return out.dump(indent, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
 }  // namespace pagor

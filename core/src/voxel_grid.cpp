@@ -1,19 +1,56 @@
 #include "pagor/voxel_grid.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <string>
 #include <unordered_map>
+
+#include "pagor/errors.hpp"
 
 namespace pagor {
 namespace {
 
-// Packs a voxel coordinate into 63 bits (21 bits per axis, about +-1e6 voxels).
-std::uint64_t voxel_key(const Eigen::Vector3f& p, float inv) {
-  const auto axis = [inv](float v) {
-    const std::int64_t c = static_cast<std::int64_t>(std::floor(v * inv)) + (1 << 20);
-    return static_cast<std::uint64_t>(c) & 0x1FFFFFu;
-  };
-  return (axis(p.x()) << 42) | (axis(p.y()) << 21) | axis(p.z());
+// A point's voxel is floor(coordinate / voxel size) per axis on the global lattice, computed in
+// float as always, but keyed relative to the lowest voxel of the points' bounding box: up to 2^21
+// voxels per axis the three relative indices are packed into one 63-bit key, wider clouds (a
+// georeferenced map, or a scan 300 km from the origin with a fine grid) use a key of three 64-bit
+// integers, so far-apart points never share a key. Lattice indices beyond 2^52 (where the
+// conversion would lose voxels or overflow) are rejected.
+constexpr double kPackedAxis = 2097152.0;         // 2^21
+constexpr double kMaxIndex = 4503599627370496.0;  // 2^52
+
+struct WideKey {
+  std::int64_t x, y, z;
+  bool operator==(const WideKey& o) const { return x == o.x && y == o.y && z == o.z; }
+};
+struct WideHash {
+  std::size_t operator()(const WideKey& k) const {
+    std::uint64_t h = static_cast<std::uint64_t>(k.x) * 0x9E3779B97F4A7C15ull;
+    h ^= static_cast<std::uint64_t>(k.y) + 0x7F4A7C159E3779B9ull + (h << 6) + (h >> 2);
+    h ^= static_cast<std::uint64_t>(k.z) + 0x94D049BB133111EBull + (h << 6) + (h >> 2);
+    return static_cast<std::size_t>(h);
+  }
+};
+
+template <class Key, class Hash, class Point, class MakeKey>
+void bin(std::size_t n, const Point& point, const MakeKey& make_key, VoxelDownsample& out) {
+  std::unordered_map<Key, int, Hash> index;
+  index.reserve(n / 2 + 16);
+  std::vector<Eigen::Vector3d> sums;
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto [it, inserted] = index.emplace(make_key(point(i)), static_cast<int>(sums.size()));
+    if (inserted) {
+      sums.emplace_back(Eigen::Vector3d::Zero());
+      out.counts.push_back(0);
+    }
+    sums[static_cast<std::size_t>(it->second)] += point(i).template cast<double>();
+    ++out.counts[static_cast<std::size_t>(it->second)];
+    out.voxel_of[i] = it->second;
+  }
+  out.points.resize(sums.size());
+  for (std::size_t v = 0; v < sums.size(); ++v)
+    out.points[v] = (sums[v] / out.counts[v]).cast<float>();
 }
 
 }  // namespace
@@ -26,7 +63,7 @@ VoxelDownsample voxel_downsample(const std::vector<Eigen::Vector3f>& points, dou
   };
   VoxelDownsample out;
   out.voxel_of.resize(n);
-  if (voxel_size <= 0) {
+  if (voxel_size <= 0 || n == 0) {
     out.points.reserve(n);
     for (std::size_t i = 0; i < n; ++i) {
       out.points.push_back(point(i));
@@ -35,24 +72,37 @@ VoxelDownsample voxel_downsample(const std::vector<Eigen::Vector3f>& points, dou
     }
     return out;
   }
-  const float inv = static_cast<float>(1.0 / voxel_size);
-  std::unordered_map<std::uint64_t, int> index;
-  index.reserve(n / 2 + 16);
-  std::vector<Eigen::Vector3d> sums;
-  for (std::size_t i = 0; i < n; ++i) {
-    const auto [it, inserted] =
-        index.emplace(voxel_key(point(i), inv), static_cast<int>(sums.size()));
-    if (inserted) {
-      sums.emplace_back(Eigen::Vector3d::Zero());
-      out.counts.push_back(0);
-    }
-    sums[static_cast<std::size_t>(it->second)] += point(i).cast<double>();
-    ++out.counts[static_cast<std::size_t>(it->second)];
-    out.voxel_of[i] = it->second;
+  Eigen::Vector3f lo = point(0), hi = lo;
+  for (std::size_t i = 1; i < n; ++i) {
+    lo = lo.cwiseMin(point(i));
+    hi = hi.cwiseMax(point(i));
   }
-  out.points.resize(sums.size());
-  for (std::size_t v = 0; v < sums.size(); ++v)
-    out.points[v] = (sums[v] / out.counts[v]).cast<float>();
+  const float inv = static_cast<float>(1.0 / voxel_size);
+  const double reach =
+      std::max(lo.cast<double>().cwiseAbs().maxCoeff(), hi.cast<double>().cwiseAbs().maxCoeff()) *
+      static_cast<double>(inv);
+  if (!(reach < kMaxIndex))  // also catches NaN and inf coordinates
+    throw InputError("voxel size " + std::to_string(voxel_size) + " m for coordinates up to " +
+                     std::to_string(reach * voxel_size) +
+                     " m: voxel indices beyond 2^52 (or a non-finite coordinate)");
+  const auto index = [inv](float v) { return static_cast<std::int64_t>(std::floor(v * inv)); };
+  const std::int64_t base[3] = {index(lo.x()), index(lo.y()), index(lo.z())};
+  const std::int64_t span =
+      std::max({index(hi.x()) - base[0], index(hi.y()) - base[1], index(hi.z()) - base[2]});
+  const auto cell = [&](const Eigen::Vector3f& p, int axis) { return index(p[axis]) - base[axis]; };
+  if (static_cast<double>(span) < kPackedAxis) {
+    const auto key = [&](const Eigen::Vector3f& p) {
+      return (static_cast<std::uint64_t>(cell(p, 0)) << 42) |
+             (static_cast<std::uint64_t>(cell(p, 1)) << 21) |
+             static_cast<std::uint64_t>(cell(p, 2));
+    };
+    bin<std::uint64_t, std::hash<std::uint64_t>>(n, point, key, out);
+  } else {
+    const auto key = [&](const Eigen::Vector3f& p) {
+      return WideKey{cell(p, 0), cell(p, 1), cell(p, 2)};
+    };
+    bin<WideKey, WideHash>(n, point, key, out);
+  }
   return out;
 }
 

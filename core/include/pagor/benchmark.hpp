@@ -21,11 +21,12 @@ struct PairOutcome {
   bool loaded = false;     ///< false: its files could not be read (see `load_error`)
   std::string load_error;  ///< why it was skipped
   bool has_ground_truth = false;
-  int selected_level = -1;                     ///< -1: no valid candidate
-  std::optional<PoseError> error;              ///< errors of the selected pose (ground truth known)
-  bool success = false;                        ///< selected pose within the criterion
-  bool upper_bound = false;                    ///< any level's candidate within the criterion
-  bool accepted = false;                       ///< the acceptance verdict on the selected pose
+  int selected_level = -1;         ///< -1: no valid candidate
+  std::optional<PoseError> error;  ///< errors of the selected pose (ground truth known)
+  bool success = false;            ///< selected pose within the criterion
+  bool upper_bound = false;        ///< any level's candidate within the criterion
+  bool accepted = false;           ///< the acceptance verdict on the selected pose
+  bool timed = true;               ///< false: taken from an earlier run; its times are not counted
   std::array<double, kStageCount> stage_ms{};  ///< wall time per stage [ms]
   double total_ms = 0.0;                       ///< sum of the stage times [ms]
   std::string report_json;  ///< the pagor.register/1 result without its config, one line
@@ -50,7 +51,7 @@ struct BenchmarkSummary {
   double precision() const { return accepted ? double(true_accepts) / accepted : 1.0; }
   /// Verdict recall: true accepts / positives whose selected pose succeeded (1 when none did).
   double recall() const { return successes ? double(true_accepts) / successes : 1.0; }
-  std::array<double, kStageCount> mean_ms{}, median_ms{};  ///< per stage [ms]
+  std::array<double, kStageCount> mean_ms{}, median_ms{};  ///< per stage, timed pairs [ms]
   double mean_total_ms = 0.0, median_total_ms = 0.0;       ///< per pair [ms]
 };
 

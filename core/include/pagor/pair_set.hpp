@@ -38,7 +38,8 @@ struct PairSet {
 PairSet read_pair_manifest(const std::string& path);
 
 /// The pairs of a KITTI pairs file (`source target` frame numbers per line) in one sequence.
-/// Throws InputError naming the file and line.
+/// Opens the sequence first, so a broken poses.txt or calib.txt, or a frame without a pose, fails
+/// before any pair runs. Throws InputError naming the file (and line).
 PairSet kitti_pair_set(const std::string& kitti_root, const std::string& sequence,
                        const std::string& pairs_file);
 
