@@ -131,6 +131,9 @@ void data_panel(UiContext& ui) {
     ui::input_text("target cloud", &d.target, "Path of the target cloud (PCD, PLY or .bin).");
     ui::input_text("target labels", &d.target_labels,
                    "Optional .label file of the target; empty when the cloud holds labels.");
+    ui::input_text("ground truth file", &d.ground_truth,
+                   "Optional 4x4 T_target_source file (row-major): errors, success and green/red "
+                   "lines against it.");
   } else {
     int seed = static_cast<int>(std::min<std::uint64_t>(d.synthetic_seed, 2147483647));
     if (ui::input_int("seed", &seed, 0, std::numeric_limits<int>::max(), 1, true,
@@ -141,6 +144,30 @@ void data_panel(UiContext& ui) {
   }
   if (ui::button("Open", ImVec2(-1, 0), "Loads the data above and runs the pipeline."))
     open_data(ui);
+}
+
+// The built-in label schemes that name every configured landmark class (others would make the
+// configuration invalid). Returns whether the scheme changed.
+bool label_scheme_combo(Config& c) {
+  bool changed = false;
+  if (ui::begin_combo(
+          "labels", c.label_scheme.name.c_str(),
+          "Numbering of the clouds' labels: raw SemanticKITTI ids, the 0-based training "
+          "numbering, or the learning map that segmentation networks output.")) {
+    for (const std::string& name : builtin_label_scheme_names()) {
+      const LabelScheme scheme = builtin_label_scheme(name);
+      const bool fits = std::all_of(c.landmarks.classes.begin(), c.landmarks.classes.end(),
+                                    [&](const ClassParams& p) { return scheme.find(p.name) >= 0; });
+      if (!fits) continue;
+      if (ui::selectable(name.c_str(), name == c.label_scheme.name) &&
+          name != c.label_scheme.name) {
+        c.label_scheme = scheme;
+        changed = true;
+      }
+    }
+    ui::end_combo();
+  }
+  return changed;
 }
 
 void parameters_panel(UiContext& ui) {
@@ -155,6 +182,7 @@ void parameters_panel(UiContext& ui) {
     ImGui::TextColored(kRed, "invalid: %s", ui.config_error.c_str());
     ImGui::PopTextWrapPos();
   }
+  changed |= label_scheme_combo(c);
   ImGui::TextDisabled("%zu levels, \xce\xb5 in [%g, %g]%s", g.thresholds.size(), lo, hi,
                       ratio ? "" : " m");
   ImGui::SameLine();

@@ -72,6 +72,14 @@ void bar_chart(const Snapshot& s, int shown, const RunChanges& changes) {
                 m->second_level, m->second);
   else
     ImGui::TextDisabled("margin: fewer than two valid levels");
+  if (s.selected >= 0) {  // the verdict a loop-closure user acts on
+    const Acceptance& a = s.acceptance;
+    ImGui::TextColored(a.accepted ? ImVec4(0.45f, 0.85f, 0.45f, 1) : ImVec4(1, 0.45f, 0.45f, 1),
+                       "%s: %.0f %% of structure within %.2f m, %d inliers%s%s",
+                       a.accepted ? "ACCEPTED" : "REJECTED", 100.0 * a.overlap,
+                       s.config.acceptance.inlier_distance, a.inliers, a.accepted ? "" : "; ",
+                       a.reason.c_str());
+  }
 }
 
 }  // namespace

@@ -42,7 +42,8 @@ json data_json(const PairSource& d) {
               {"source", d.source},
               {"source_labels", d.source_labels},
               {"target", d.target},
-              {"target_labels", d.target_labels}};
+              {"target_labels", d.target_labels},
+              {"ground_truth", d.ground_truth}};
     case PairSource::Kind::synthetic:
       return {{"kind", "synthetic"}, {"seed", d.synthetic_seed}};
   }
@@ -145,12 +146,14 @@ PairSource read_data(const json& d, const std::string& where) {
     src.target_frame =
         static_cast<int>(integer_value((*pair)[1], where + ".pair[1]", 0, kMaxFrame));
   } else if (kind == "files") {
-    reject_unknown(d, where, {"kind", "source", "source_labels", "target", "target_labels"});
+    reject_unknown(d, where,
+                   {"kind", "source", "source_labels", "target", "target_labels", "ground_truth"});
     src.kind = PairSource::Kind::files;
     src.source = get_string(d, "source", where, "");
     src.source_labels = get_string(d, "source_labels", where, "");
     src.target = get_string(d, "target", where, "");
     src.target_labels = get_string(d, "target_labels", where, "");
+    src.ground_truth = get_string(d, "ground_truth", where, "");
   } else if (kind == "synthetic") {
     reject_unknown(d, where, {"kind", "seed"});
     src.kind = PairSource::Kind::synthetic;
@@ -233,7 +236,8 @@ std::string resolve_path(const AppState& s, const std::string& path) {
 PairSource resolved_data(const AppState& s) {
   const std::filesystem::path base(s.base_dir);
   PairSource d = s.data;
-  for (std::string* p : {&d.kitti_root, &d.source, &d.source_labels, &d.target, &d.target_labels})
+  for (std::string* p :
+       {&d.kitti_root, &d.source, &d.source_labels, &d.target, &d.target_labels, &d.ground_truth})
     *p = resolve(*p, base);
   return d;
 }

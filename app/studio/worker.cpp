@@ -160,6 +160,7 @@ std::shared_ptr<Snapshot> Worker::make_snapshot(std::uint64_t request) const {
     s->levels.push_back(std::move(v));
   }
   s->selected = p.selected_level();
+  s->acceptance = p.acceptance();
   s->upper_bound = p.upper_bound_success();
   s->selected_error = p.selected_error();
   for (int i = 0; i < kStageCount; ++i)

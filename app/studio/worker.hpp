@@ -42,6 +42,7 @@ struct Snapshot {
   bool correspondences_capped = false;
   std::vector<LevelView> levels;
   int selected = -1;
+  Acceptance acceptance;  ///< the verdict on the selected pose
   bool upper_bound = false;
   std::optional<PoseError> selected_error;
   std::array<double, kStageCount> stage_ms{};  ///< last wall time per stage [ms]
