@@ -84,7 +84,7 @@ TEST_CASE("section_json tells sections apart") {
   CHECK(section_json(a, "graph") == section_json(b, "graph"));
 }
 
-TEST_CASE("the paper preset is the published configuration; a document can start from it") {
+TEST_CASE("the paper preset is the published configuration, and a document can start from it") {
   const Config paper = preset_config("paper");
   REQUIRE(paper.landmarks.classes.size() == 4);  // car, trunk, pole clusters; building FPFH
   CHECK(paper.landmarks.classes[3].name == "building");

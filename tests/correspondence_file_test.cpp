@@ -70,7 +70,7 @@ TEST_CASE("malformed lines are errors naming the file and the line") {
   CHECK(error_of("") == "c.txt: no correspondences");
 }
 
-TEST_CASE("reading a file; a missing file names its path") {
+TEST_CASE("reading a file, and a missing file names its path") {
   test::TempDir dir;
   const std::string path = dir.file("c.txt");
   std::ofstream(path) << "0 0 0 1 1 1 1 1\n0 1 0 1 2 1 1 0\n";

@@ -129,7 +129,7 @@ TEST_CASE("landmarks of KITTI frame 0 have sensible per-class counts") {
   for (const auto& lm : set.landmarks) CHECK(lm.centroid.norm() < 120.0);  // within sensor range
 }
 
-TEST_CASE("the pairs file is read; bad sequences and frames are reported") {
+TEST_CASE("the pairs file is read, and bad sequences and frames are reported") {
   const auto pairs = read_pairs_file(test::kitti_root() + "/pairs_00_dev.txt");
   REQUIRE(pairs.size() == 3);
   CHECK(pairs[0] == std::make_pair(0, 20));
