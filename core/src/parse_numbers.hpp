@@ -9,9 +9,35 @@
 #include <cstring>
 #include <limits>
 #include <optional>
+#include <string>
 #include <string_view>
+#include <vector>
 
 namespace pagor::parse {
+
+/// The whitespace-separated words of a header or body line (space, tab, CR, FF, VT).
+inline std::vector<std::string_view> words(std::string_view line) {
+  std::vector<std::string_view> out;
+  std::size_t i = 0;
+  const auto space = [](char c) {
+    return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v';
+  };
+  while (i < line.size()) {
+    while (i < line.size() && space(line[i])) ++i;
+    const std::size_t b = i;
+    while (i < line.size() && !space(line[i])) ++i;
+    if (i > b) out.push_back(line.substr(b, i - b));
+  }
+  return out;
+}
+
+/// The first 40 bytes of untrusted text for a message, non-printable bytes as '?'.
+inline std::string printable(std::string_view s) {
+  std::string out;
+  for (char c : s.substr(0, 40))
+    out += (static_cast<unsigned char>(c) >= 32 && static_cast<unsigned char>(c) < 127) ? c : '?';
+  return s.size() > 40 ? out + "..." : out;
+}
 
 /// The whole token as an unsigned decimal integer, or nullopt ("-5", "1e3", "20.5", "" fail).
 inline std::optional<std::uint64_t> to_uint(std::string_view s) {

@@ -11,6 +11,9 @@
 namespace pagor {
 namespace {
 
+using parse::printable;
+using parse::words;
+
 using parse::Scalar;
 
 // Limits on what a header may declare; real files are far below them, and the body is checked
@@ -33,28 +36,6 @@ struct Header {
   std::size_t body = 0;  // offset of the first body byte
   int body_line = 0;     // line number of the first body line
 };
-
-std::vector<std::string_view> words(std::string_view line) {
-  std::vector<std::string_view> out;
-  std::size_t i = 0;
-  const auto space = [](char c) {
-    return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v';
-  };
-  while (i < line.size()) {
-    while (i < line.size() && space(line[i])) ++i;
-    const std::size_t b = i;
-    while (i < line.size() && !space(line[i])) ++i;
-    if (i > b) out.push_back(line.substr(b, i - b));
-  }
-  return out;
-}
-
-std::string printable(std::string_view s) {
-  std::string out;
-  for (char c : s.substr(0, 40))
-    out += (static_cast<unsigned char>(c) >= 32 && static_cast<unsigned char>(c) < 127) ? c : '?';
-  return s.size() > 40 ? out + "..." : out;
-}
 
 class HeaderParser {
  public:
