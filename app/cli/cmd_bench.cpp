@@ -53,16 +53,16 @@ PairOutcome resumed_outcome(const PairEntry& entry, const nlohmann::json& line) 
 void print_row(const PairOutcome& o) {
   const char* verdict = o.accepted ? "accept" : "reject";
   const char* truth = o.negative ? "neg" : (o.has_ground_truth ? (o.success ? "yes" : "no") : "-");
-  const std::string time = o.timed ? std::to_string(o.total_ms).substr(0, 8) : "resumed";
+  char time[16] = "resumed";
+  if (o.timed) std::snprintf(time, sizeof(time), "%.1f", o.total_ms);
   if (o.error)
     std::printf("%-14s %6d %10.2f %11.2f %8s %6s %8s %10s\n", o.name.c_str(), o.selected_level,
                 o.error->translation, o.error->rotation_deg, truth, o.upper_bound ? "yes" : "no",
-                verdict, time.c_str());
+                verdict, time);
   else
     std::printf("%-14s %6s %10s %11s %8s %6s %8s %10s\n", o.name.c_str(),
                 o.selected_level >= 0 ? std::to_string(o.selected_level).c_str() : "-", "-", "-",
-                truth, o.has_ground_truth ? (o.upper_bound ? "yes" : "no") : "-", verdict,
-                time.c_str());
+                truth, o.has_ground_truth ? (o.upper_bound ? "yes" : "no") : "-", verdict, time);
   std::fflush(stdout);
 }
 
