@@ -54,8 +54,8 @@ void act_on_text(UiDriver& d, const WidgetRecord& w) {
   const bool landed = s.data.kitti_root == expected || s.data.sequence == expected ||
                       s.data.source == expected || s.data.source_labels == expected ||
                       s.data.target == expected || s.data.target_labels == expected ||
-                      s.pairs_file == expected || s.session_path == expected ||
-                      s.screenshot_path == expected;
+                      s.data.ground_truth == expected || s.pairs_file == expected ||
+                      s.session_path == expected || s.screenshot_path == expected;
   if (!landed) FAIL("typed text did not reach the state: field '" << w.label << "'");
   restore(d, before, false);
   d.frame();
