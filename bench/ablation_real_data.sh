@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Ablation of the real-data changes on every shared set: each change alone on top of the paper's
 # configuration, and each change removed from the defaults. Prints one row per setting and set:
-# success of the selected pose, the upper bound (any level), and the verdict's precision/recall.
+# success of the selected pose, the upper bound (any level), the verdict's precision and recall.
 # Usage: bench/ablation_real_data.sh [build/app/pagor]
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -18,12 +18,14 @@ declare -A settings=(
   ["default - spacing"]='"landmarks":{"adapt_to_spacing":false}'
   ["default - structure keypoints"]='"landmarks":{"fallback":{"mode":"never"}}'
   ["default - 4-DoF (SE(3))"]='"gnc":{"model":"se3"}'
+  ["default - refinement"]='"refinement":{"enabled":false}'
   ["default"]=''
 )
 order=("paper" "paper + spacing" "paper + structure keypoints" "paper + 4-DoF"
-       "default - spacing" "default - structure keypoints" "default - 4-DoF (SE(3))" "default")
+       "default - spacing" "default - structure keypoints" "default - 4-DoF (SE(3))"
+       "default - refinement" "default")
 
-printf '%-32s %-10s %-9s %-9s %-12s %s\n' setting set success bound "precision" "failed pairs"
+printf '%-32s %-10s %-9s %-9s %-10s %-8s %s\n' setting set success bound precision recall "failed pairs"
 for name in "${order[@]}"; do
   for set in semreg-dev kitti; do
     if [ "$set" = semreg-dev ]; then
@@ -39,7 +41,9 @@ for name in "${order[@]}"; do
     success=$(sed -n 's/^success.*: \([0-9]*\/[0-9]*\) .*/\1/p' <<<"$out")
     bound=$(sed -n 's/^upper bound[^:]*: *\([0-9]*\/[0-9]*\) .*/\1/p' <<<"$out")
     precision=$(sed -n 's/^verdict: .*precision \([0-9.]* %\).*/\1/p' <<<"$out")
+    recall=$(sed -n 's/^verdict: .*recall \([0-9.]* %\).*/\1/p' <<<"$out")
     failed=$(awk 'NR > 1 && $5 == "no" { printf "%s ", $1 } /^$/ { exit }' <<<"$out")
-    printf '%-32s %-10s %-9s %-9s %-12s %s\n' "$name" "$set" "$success" "$bound" "$precision" "${failed:--}"
+    printf '%-32s %-10s %-9s %-9s %-10s %-8s %s\n' "$name" "$set" "$success" "$bound" "$precision" \
+      "$recall" "${failed:--}"
   done
 done

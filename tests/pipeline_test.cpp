@@ -62,8 +62,8 @@ TEST_CASE("a change re-runs only the stages it invalidates") {
     c.verification.mu = 0.5;
     p.set_config(c);
     p.run();
-    CHECK(ran(before, runs(p)) ==
-          std::vector<Stage>{Stage::verification, Stage::acceptance, Stage::evaluation});
+    CHECK(ran(before, runs(p)) == std::vector<Stage>{Stage::verification, Stage::refinement,
+                                                     Stage::acceptance, Stage::evaluation});
   }
   SECTION("a threshold: graph and everything after it but the metric clouds") {
     Config c = p.config();
@@ -71,8 +71,8 @@ TEST_CASE("a change re-runs only the stages it invalidates") {
     p.set_config(c);
     p.run();
     CHECK(ran(before, runs(p)) == std::vector<Stage>{Stage::graph, Stage::clique, Stage::pose,
-                                                     Stage::verification, Stage::acceptance,
-                                                     Stage::evaluation});
+                                                     Stage::verification, Stage::refinement,
+                                                     Stage::acceptance, Stage::evaluation});
   }
   SECTION("a clustering parameter: everything but the metric clouds") {
     Config c = p.config();
@@ -81,8 +81,8 @@ TEST_CASE("a change re-runs only the stages it invalidates") {
     p.run();
     CHECK(ran(before, runs(p)) == std::vector<Stage>{Stage::landmarks, Stage::correspondences,
                                                      Stage::graph, Stage::clique, Stage::pose,
-                                                     Stage::verification, Stage::acceptance,
-                                                     Stage::evaluation});
+                                                     Stage::verification, Stage::refinement,
+                                                     Stage::acceptance, Stage::evaluation});
   }
   SECTION("the verification voxel: metric clouds, scoring and evaluation") {
     Config c = p.config();
@@ -90,7 +90,8 @@ TEST_CASE("a change re-runs only the stages it invalidates") {
     p.set_config(c);
     p.run();
     CHECK(ran(before, runs(p)) == std::vector<Stage>{Stage::verification_prep, Stage::verification,
-                                                     Stage::acceptance, Stage::evaluation});
+                                                     Stage::refinement, Stage::acceptance,
+                                                     Stage::evaluation});
   }
   SECTION("GNC parameters: pose and after") {
     Config c = p.config();
@@ -98,7 +99,16 @@ TEST_CASE("a change re-runs only the stages it invalidates") {
     p.set_config(c);
     p.run();
     CHECK(ran(before, runs(p)) == std::vector<Stage>{Stage::pose, Stage::verification,
-                                                     Stage::acceptance, Stage::evaluation});
+                                                     Stage::refinement, Stage::acceptance,
+                                                     Stage::evaluation});
+  }
+  SECTION("refinement parameters: refinement and after") {
+    Config c = p.config();
+    c.refinement.max_iterations = 5;
+    p.set_config(c);
+    p.run();
+    CHECK(ran(before, runs(p)) ==
+          std::vector<Stage>{Stage::refinement, Stage::acceptance, Stage::evaluation});
   }
   SECTION("ground truth: evaluation only") {
     p.set_ground_truth(std::nullopt);

@@ -67,6 +67,13 @@ void print_registration(const Pipeline& p) {
   } else {
     std::printf("\nno valid candidate on any level\n");
   }
+  const RefinementResult& r = p.refinement();
+  if (r.ran && r.applied)
+    std::printf("refinement: applied, D %.1f -> %.1f m, moved %.2f m / %.2f deg in %d iterations\n",
+                r.score_before, r.score_after, r.correction_translation, r.correction_rotation,
+                r.iterations);
+  else if (r.ran)
+    std::printf("refinement: not applied (%s)\n", r.reason.c_str());
   const Acceptance& a = p.acceptance();
   if (p.selected_level() >= 0)
     std::printf(
@@ -75,6 +82,10 @@ void print_registration(const Pipeline& p) {
         p.config().acceptance.inlier_distance, a.inliers, a.margin, a.accepted ? "" : ": ",
         a.reason.c_str());
   if (gt) {
+    if (const auto before = p.unrefined_error(); before && r.applied)
+      std::printf(
+          "ground truth before refinement: translation error %.2f m, rotation error %.2f deg\n",
+          before->translation, before->rotation_deg);
     if (const auto e = p.selected_error())
       std::printf(
           "ground truth: translation error %.2f m, rotation error %.2f deg -> %s "
@@ -89,8 +100,8 @@ void print_registration(const Pipeline& p) {
   double total = 0;
   std::printf("times [ms]:");
   const Stage shown[] = {
-      Stage::landmarks, Stage::correspondences,   Stage::graph,       Stage::clique,
-      Stage::pose,      Stage::verification_prep, Stage::verification};
+      Stage::landmarks, Stage::correspondences,   Stage::graph,        Stage::clique,
+      Stage::pose,      Stage::verification_prep, Stage::verification, Stage::refinement};
   for (Stage s : shown) {
     std::printf(" %s %.1f", stage_name(s), p.time_ms(s));
     total += p.time_ms(s);

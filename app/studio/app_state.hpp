@@ -14,7 +14,9 @@
 namespace pagor::studio {
 
 enum class ColorMode { by_class, by_cloud };
-enum class PoseShown { selected, ground_truth, identity };
+/// Where the source is drawn: under the shown level's candidate, the truth, its own frame, or
+/// the refined selection (the candidate where refinement did not apply).
+enum class PoseShown { selected, ground_truth, identity, refined };
 
 /// Which layers of the 3D view are drawn.
 struct Layers {

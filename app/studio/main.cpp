@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <vector>
@@ -205,6 +206,8 @@ int main(int argc, char** argv) {
           cli::format_options(options).c_str());
       return 0;
     }
+  // A file-size limit makes a write fail with an error (the old file kept), not kill the process.
+  std::signal(SIGXFSZ, SIG_IGN);
   try {
     const cli::Args args(words, options);
     studio::AppState state = studio::state_from_args(args);

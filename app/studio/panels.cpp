@@ -262,6 +262,13 @@ void parameters_panel(UiContext& ui) {
   changed |= ui::enum_combo("score", c.verification.score,
                             "How a candidate pose is scored: truncated distances (the method), "
                             "or the trimmed / plain sums (ablations).");
+  changed |= ui::checkbox("refine selected pose", &c.refinement.enabled,
+                          "Point-to-plane ICP of the selected pose on the verification clouds, "
+                          "bounded in iterations and in how far it may move the pose; kept only "
+                          "when it lowers D.");
+  changed |= ui::checkbox("refine roll/pitch", &c.refinement.free_roll_pitch,
+                          "Let refinement correct roll and pitch when the pose model holds them "
+                          "level (4-DoF); SE(2) stays planar.");
 
   section("landmarks");
   changed |=
@@ -368,6 +375,9 @@ void view_panel(UiContext& ui) {
   ui::radio("candidate", &pose, static_cast<int>(PoseShown::selected),
             "Place the source under the shown level's candidate pose.");
   ImGui::SameLine();
+  ui::radio("refined", &pose, static_cast<int>(PoseShown::refined),
+            "Place the source under the selected pose after refinement (the candidate itself "
+            "where refinement is off or did not lower D). Toggle with 'candidate' to compare.");
   ui::radio("ground truth", &pose, static_cast<int>(PoseShown::ground_truth),
             "Place the source under the ground-truth pose (when known).");
   ImGui::SameLine();

@@ -17,6 +17,26 @@ namespace {
 const ImVec4 kGood(0.35f, 0.9f, 0.45f, 1.0f), kBad(1.0f, 0.4f, 0.4f, 1.0f),
     kDim(0.6f, 0.6f, 0.6f, 1.0f);
 
+// What refinement did to the selected pose: D and, with ground truth, the errors before/after.
+void refinement_lines(const Snapshot& s) {
+  const RefinementResult& r = s.refinement;
+  if (!r.ran) {
+    ImGui::TextDisabled("refinement: off");
+    return;
+  }
+  if (!r.applied) {
+    ImGui::TextDisabled("refinement: not applied (%s)", r.reason.c_str());
+    return;
+  }
+  ImGui::Text("refinement: D %.0f -> %.0f m (%.1f %%), moved %.2f m / %.2f deg", r.score_before,
+              r.score_after, 100.0 * (r.score_after - r.score_before) / r.score_before,
+              r.correction_translation, r.correction_rotation);
+  if (s.unrefined_error && s.selected_error)
+    ImGui::Text("  errors before %.2f m / %.2f deg, after %.2f m / %.2f deg",
+                s.unrefined_error->translation, s.unrefined_error->rotation_deg,
+                s.selected_error->translation, s.selected_error->rotation_deg);
+}
+
 // D per level, from zero. Bars are green / red by success when the ground truth is known (else
 // blue); the selected level is marked with * and the shown one outlined.
 void bar_chart(const Snapshot& s, int shown, const RunChanges& changes) {
@@ -72,13 +92,16 @@ void bar_chart(const Snapshot& s, int shown, const RunChanges& changes) {
                 m->second_level, m->second);
   else
     ImGui::TextDisabled("margin: fewer than two valid levels");
-  if (s.selected >= 0) {  // the verdict a loop-closure user acts on
+  if (s.selected >= 0) {  // the verdict a loop-closure user acts on; wrapped in a narrow column
+    ImGui::PushTextWrapPos(0.0f);
     const Acceptance& a = s.acceptance;
     ImGui::TextColored(a.accepted ? ImVec4(0.45f, 0.85f, 0.45f, 1) : ImVec4(1, 0.45f, 0.45f, 1),
                        "%s: %.0f %% of structure within %.2f m, %d inliers%s%s",
                        a.accepted ? "ACCEPTED" : "REJECTED", 100.0 * a.overlap,
                        s.config.acceptance.inlier_distance, a.inliers, a.accepted ? "" : "; ",
                        a.reason.c_str());
+    refinement_lines(s);
+    ImGui::PopTextWrapPos();
   }
 }
 

@@ -180,6 +180,11 @@ void draw_legend(ImDrawList* dl, ImVec2 at, const Snapshot& s, const ViewState& 
   } else {
     for (const auto& c : s.config.landmarks.classes)
       points.push_back({col(colors.of(c.name)), c.name});
+    // Classes the run added, such as the class-agnostic `structure` keypoints of a class-poor pair.
+    for (const auto& c : s.source_landmarks.classes)
+      if (std::none_of(points.begin(), points.end(),
+                       [&](const auto& p) { return p.second == c.name; }))
+        points.push_back({col(colors.of(c.name)), c.name + " (landmarks only)"});
     points.push_back({IM_COL32(120, 120, 120, 255), "other labels"});
   }
   const int lines = 1 + (gt ? 1 : 0) + (view.layers.all_correspondences ? 1 : 0);

@@ -80,6 +80,12 @@ Transform shown_source_pose(const AppState& state, const Snapshot& s) {
         return s.levels[static_cast<std::size_t>(level)].pose.T_target_source;
       break;
     }
+    case PoseShown::refined:
+      if (s.refinement.ran)
+        return s.refinement.applied ? s.refinement.T_after : s.refinement.T_before;
+      if (s.selected >= 0)
+        return s.levels[static_cast<std::size_t>(s.selected)].pose.T_target_source;
+      break;
     case PoseShown::identity:
       break;
   }

@@ -8,7 +8,9 @@
 #include "app_state.hpp"
 #include "headless.hpp"
 #include "number_format.hpp"
+#include "pagor/atomic_file.hpp"
 #include "pagor/errors.hpp"
+#include "pagor/json_input.hpp"
 #include "pagor/kitti.hpp"
 
 namespace pagor::studio {
@@ -27,6 +29,7 @@ const char* color_name(ColorMode c) {
 const char* pose_name(PoseShown p) {
   return p == PoseShown::selected       ? "selected"
          : p == PoseShown::ground_truth ? "ground_truth"
+         : p == PoseShown::refined      ? "refined"
                                         : "identity";
 }
 
@@ -217,12 +220,14 @@ void read_view(const json& v, const std::string& where, ViewState& view) {
     throw InputError(where + ".color: expected \"class\" or \"cloud\", got \"" + color + "\"");
   view.color = color == "cloud" ? ColorMode::by_cloud : ColorMode::by_class;
   const std::string pose = get_string(v, "pose", where, "selected");
-  if (pose != "selected" && pose != "ground_truth" && pose != "identity")
+  if (pose != "selected" && pose != "ground_truth" && pose != "identity" && pose != "refined")
     throw InputError(where +
-                     ".pose: expected \"selected\", \"ground_truth\" or \"identity\", got \"" +
+                     ".pose: expected \"selected\", \"refined\", \"ground_truth\" or "
+                     "\"identity\", got \"" +
                      pose + "\"");
   view.pose = pose == "ground_truth" ? PoseShown::ground_truth
               : pose == "identity"   ? PoseShown::identity
+              : pose == "refined"    ? PoseShown::refined
                                      : PoseShown::selected;
   view.level = get_int(v, "level", where, -1, -1, 31);
 }
@@ -284,20 +289,20 @@ void save_session(const AppState& s, const std::string& path) {
              {{"left_width", number(s.layout.left_width)},
               {"scene_share", number(s.layout.scene_share)}}},
             {"window", {{"width", s.width}, {"height", s.height}}}};
-  std::ofstream out(path, std::ios::trunc);
-  if (!out) throw InputError(path + ": cannot open for writing");
-  out << j.dump(2) << "\n";
-  if (!out) throw InputError(path + ": write failed");
+  // A failed write (disk full, a size limit) leaves the previous session file intact.
+  write_file_atomic(path, j.dump(2) + "\n");
 }
 
 void load_session(const std::string& path, AppState& s) {
-  std::ifstream in(path);
+  std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path + ": cannot open session file");
+  std::ostringstream text;
+  text << in.rdbuf();
   json j;
-  try {
-    j = json::parse(in);
-  } catch (const json::exception& e) {
-    throw InputError(path + ": not valid JSON (" + e.what() + ")");
+  try {  // nesting limited while parsing; numbers beyond a double rejected
+    j = parse_json_limited(text.str(), path);
+  } catch (const ConfigError& e) {
+    throw InputError(std::string(e.what()) + " (not a valid session file)");
   }
   if (!j.is_object()) throw InputError(path + ": expected a JSON object");
   reject_unknown(j, path + ":",

@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <vector>
 
+#include "pagor/atomic_file.hpp"
 #include "pagor/errors.hpp"
 #include "panels.hpp"
 #include "resources.hpp"
@@ -411,8 +412,21 @@ bool Studio::screenshot(const std::string& path, int width, int height, std::str
     std::copy_n(pixels.data() + static_cast<std::size_t>(height - 1 - y) * row, row,
                 flipped.data() + y * row);
   for (std::size_t i = 3; i < flipped.size(); i += 4) flipped[i] = 255;
-  if (!stbi_write_png(path.c_str(), width, height, 4, flipped.data(), static_cast<int>(row))) {
-    error = path + ": cannot write PNG";
+  // Encoded in memory, then written atomically: a failed write keeps the previous image.
+  std::string png;
+  const auto append = [](void* context, void* data, int size) {
+    static_cast<std::string*>(context)->append(static_cast<const char*>(data),
+                                               static_cast<std::size_t>(size));
+  };
+  if (!stbi_write_png_to_func(append, &png, width, height, 4, flipped.data(),
+                              static_cast<int>(row))) {
+    error = path + ": cannot encode PNG";
+    return false;
+  }
+  try {
+    write_file_atomic(path, png);
+  } catch (const InputError& e) {
+    error = e.what();
     return false;
   }
   return true;

@@ -83,11 +83,8 @@ void Worker::handle(Request request) {
       status_.activity = "loading " + describe(*request.data);
     }
     try {
+      // Unlabelled clouds are fine: the pipeline falls back to class-agnostic landmarks.
       LoadedPair pair = load_pair(*request.data);
-      if (!pair.source.cloud.has_labels())
-        throw InputError(pair.source_name + ": no semantic labels");
-      if (!pair.target.cloud.has_labels())
-        throw InputError(pair.target_name + ": no semantic labels");
       source_ = std::make_shared<const PointCloud>(std::move(pair.source.cloud));
       target_ = std::make_shared<const PointCloud>(std::move(pair.target.cloud));
       ground_truth_ = pair.T_target_source_gt;
@@ -161,6 +158,8 @@ std::shared_ptr<Snapshot> Worker::make_snapshot(std::uint64_t request) const {
   }
   s->selected = p.selected_level();
   s->acceptance = p.acceptance();
+  s->refinement = p.refinement();
+  s->unrefined_error = p.unrefined_error();
   s->upper_bound = p.upper_bound_success();
   s->selected_error = p.selected_error();
   for (int i = 0; i < kStageCount; ++i)

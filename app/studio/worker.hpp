@@ -42,7 +42,9 @@ struct Snapshot {
   bool correspondences_capped = false;
   std::vector<LevelView> levels;
   int selected = -1;
-  Acceptance acceptance;  ///< the verdict on the selected pose
+  Acceptance acceptance;                     ///< the verdict on the selected pose
+  RefinementResult refinement;               ///< what refinement did to the selected pose
+  std::optional<PoseError> unrefined_error;  ///< the selected candidate's errors before refinement
   bool upper_bound = false;
   std::optional<PoseError> selected_error;
   std::array<double, kStageCount> stage_ms{};  ///< last wall time per stage [ms]

@@ -149,6 +149,19 @@ void fields_of_verification(V& v, P& p) {
   v("score", p.score);
 }
 template <class V, class P>
+void fields_of_refinement(V& v, P& p) {
+  v("enabled", p.enabled);
+  v("max_iterations", p.max_iterations);
+  v("max_points", p.max_points);
+  v("max_distance", p.max_distance);
+  v("min_distance", p.min_distance);
+  v("robust_scale", p.robust_scale);
+  v("normal_radius", p.normal_radius);
+  v("max_translation", p.max_translation);
+  v("max_rotation", p.max_rotation);
+  v("free_roll_pitch", p.free_roll_pitch);
+}
+template <class V, class P>
 void fields_of_acceptance(V& v, P& p) {
   v("inlier_distance", p.inlier_distance);
   v("ground_thickness", p.ground_thickness);
@@ -184,6 +197,7 @@ PAGOR_FIELDS(GraphParams, fields_of_graph)
 PAGOR_FIELDS(CliqueParams, fields_of_clique)
 PAGOR_FIELDS(GncParams, fields_of_gnc)
 PAGOR_FIELDS(VerificationParams, fields_of_verification)
+PAGOR_FIELDS(RefinementParams, fields_of_refinement)
 PAGOR_FIELDS(AcceptanceParams, fields_of_acceptance)
 PAGOR_FIELDS(EvaluationParams, fields_of_evaluation)
 #undef PAGOR_FIELDS
@@ -262,6 +276,7 @@ json encode_config(const Config& c) {
               {"clique", encode(c.clique)},
               {"gnc", encode(c.gnc)},
               {"verification", encode(c.verification)},
+              {"refinement", encode(c.refinement)},
               {"acceptance", encode(c.acceptance)},
               {"evaluation", encode(c.evaluation)}};
 }
@@ -477,6 +492,7 @@ Config preset_config(const std::string& name) {
     c.graph = GraphParams{};
     c.gnc.model = PoseModel::se3;
     c.verification = VerificationParams{};
+    c.refinement.enabled = false;
     return c;
   }
   std::string known;
@@ -552,6 +568,19 @@ void validate(const Config& c, const std::string& origin) {
   check(ctx, c.verification.voxel_size == 0 || c.verification.voxel_size >= kMinVoxelSize,
         "verification.voxel_size", "must be 0 (none) or at least 0.001 [m]");
   check(ctx, c.verification.mu > 0, "verification.mu", "must be > 0 [m]");
+  const RefinementParams& r = c.refinement;
+  check(ctx, r.max_iterations >= 1 && r.max_iterations <= 1000, "refinement.max_iterations",
+        "must be in [1, 1000]");
+  check(ctx, r.max_points >= 10 && r.max_points <= 1000000, "refinement.max_points",
+        "must be in [10, 1000000]");
+  check(ctx, r.min_distance > 0, "refinement.min_distance", "must be > 0 [m]");
+  check(ctx, r.max_distance >= r.min_distance, "refinement.max_distance",
+        "must be >= refinement.min_distance [m]");
+  check(ctx, r.robust_scale > 0, "refinement.robust_scale", "must be > 0 [m]");
+  check(ctx, r.normal_radius > 0, "refinement.normal_radius", "must be > 0 [m]");
+  check(ctx, r.max_translation > 0, "refinement.max_translation", "must be > 0 [m]");
+  check(ctx, r.max_rotation > 0 && r.max_rotation <= 180, "refinement.max_rotation",
+        "must be in (0, 180] [deg]");
   check(ctx, c.acceptance.inlier_distance > 0, "acceptance.inlier_distance", "must be > 0 [m]");
   check(ctx, c.acceptance.ground_thickness >= 0, "acceptance.ground_thickness", "must be >= 0 [m]");
   check(ctx, c.acceptance.min_overlap >= 0 && c.acceptance.min_overlap <= 1,
@@ -599,6 +628,8 @@ Config parse_config(const std::string& json_text, const std::string& origin,
       decode(ctx, v, key, c.gnc);
     else if (key == "verification")
       decode(ctx, v, key, c.verification);
+    else if (key == "refinement")
+      decode(ctx, v, key, c.refinement);
     else if (key == "acceptance")
       decode(ctx, v, key, c.acceptance);
     else if (key == "evaluation")

@@ -19,7 +19,8 @@ const std::vector<Stage>& dependents(Stage s) {
       {Stage::pose},             // clique
       {Stage::verification},     // pose
       {Stage::verification},     // verification_prep
-      {Stage::acceptance},       // verification
+      {Stage::refinement},       // verification
+      {Stage::acceptance},       // refinement
       {Stage::evaluation},       // acceptance
       {},                        // evaluation
   }};
@@ -30,8 +31,8 @@ const std::vector<Stage>& dependents(Stage s) {
 
 const char* stage_name(Stage stage) {
   static const char* const names[kStageCount] = {
-      "landmarks",         "correspondences", "graph",      "clique",    "gnc",
-      "verification_prep", "verification",    "acceptance", "evaluation"};
+      "landmarks",         "correspondences", "graph",      "clique",     "gnc",
+      "verification_prep", "verification",    "refinement", "acceptance", "evaluation"};
   return names[static_cast<int>(stage)];
 }
 
@@ -78,6 +79,7 @@ void Pipeline::set_config(const Config& config) {
   if (config.verification.voxel_size != config_.verification.voxel_size)
     mark_stale(Stage::verification_prep);
   if (changed("verification")) mark_stale(Stage::verification);
+  if (changed("refinement") || config.gnc.model != config_.gnc.model) mark_stale(Stage::refinement);
   if (changed("acceptance") || config.gnc.model != config_.gnc.model) mark_stale(Stage::acceptance);
   // The criterion also decides which candidates count as distinct for the D margin.
   if (changed("evaluation")) mark_stale(Stage::acceptance);
@@ -169,14 +171,17 @@ void Pipeline::run_stage(Stage stage) {
       break;
     }
     case Stage::verification_prep:
+      refiner_.reset();  // it refers to the verifier
       verifier_.emplace(source_, target_, config_.verification.voxel_size);
       break;
     case Stage::verification:
       verification_ = verify_candidates(*verifier_, poses_, config_.verification, threads_);
       break;
+    case Stage::refinement:
+      run_refinement();
+      break;
     case Stage::acceptance:
-      acceptance_ = judge_selection(*verifier_, poses_, verification_, config_.verification,
-                                    config_.evaluation, config_.acceptance, config_.gnc.model);
+      judge_acceptance();
       break;
     case Stage::evaluation:
       level_errors_.clear();
@@ -190,10 +195,38 @@ void Pipeline::run_stage(Stage stage) {
   }
 }
 
+void Pipeline::run_refinement() {
+  refinement_ = RefinementResult{};
+  const RefinementParams& params = config_.refinement;
+  if (!params.enabled || verification_.selected < 0) return;
+  if (!refiner_ || refiner_->normal_radius() != params.normal_radius)
+    refiner_.emplace(*verifier_, params.normal_radius);
+  const auto sel = static_cast<std::size_t>(verification_.selected);
+  refinement_ = refiner_->refine(poses_[sel].T_target_source, verification_.scores[sel],
+                                 config_.gnc.model, params, config_.verification, threads_);
+}
+
+void Pipeline::judge_acceptance() {
+  if (!refinement_.applied) {
+    acceptance_ = judge_selection(*verifier_, poses_, verification_, config_.verification,
+                                  config_.evaluation, config_.acceptance, config_.gnc.model);
+    return;
+  }
+  // Judge the pose the user gets: the refined one, with its own D.
+  std::vector<PoseEstimate> candidates = poses_;
+  VerificationResult verification = verification_;
+  const auto sel = static_cast<std::size_t>(verification_.selected);
+  candidates[sel].T_target_source = refinement_.T_after;
+  verification.scores[sel] = refinement_.score_after;
+  acceptance_ = judge_selection(*verifier_, candidates, verification, config_.verification,
+                                config_.evaluation, config_.acceptance, config_.gnc.model);
+}
+
 std::optional<Transform> Pipeline::selected_transform() const {
   if (verification_.selected < 0 ||
       static_cast<std::size_t>(verification_.selected) >= poses_.size())
     return std::nullopt;
+  if (refinement_.applied) return refinement_.T_after;
   return poses_[static_cast<std::size_t>(verification_.selected)].T_target_source;
 }
 
@@ -201,6 +234,12 @@ std::optional<PoseError> Pipeline::selected_error() const {
   const auto T = selected_transform();
   if (!T || !ground_truth_) return std::nullopt;
   return pose_error(*T, *ground_truth_, config_.evaluation);
+}
+
+std::optional<PoseError> Pipeline::unrefined_error() const {
+  if (verification_.selected < 0 || !ground_truth_) return std::nullopt;
+  return pose_error(poses_[static_cast<std::size_t>(verification_.selected)].T_target_source,
+                    *ground_truth_, config_.evaluation);
 }
 
 bool Pipeline::upper_bound_success() const {

@@ -20,6 +20,26 @@ json counts_by_class(const LandmarkSet& set) {
   return j;
 }
 
+// What refinement did; the errors before it when the ground truth is known.
+json refinement_json(const Pipeline& p) {
+  const RefinementResult& r = p.refinement();
+  json j = {{"enabled", p.config().refinement.enabled}, {"ran", r.ran}};
+  if (!r.ran) return j;
+  j["applied"] = r.applied;
+  j["reason"] = r.reason;
+  j["iterations"] = r.iterations;
+  j["pairs"] = r.pairs;
+  j["D_before"] = r.score_before;
+  j["D_after"] = r.score_after;
+  j["correction_translation_m"] = r.correction_translation;
+  j["correction_rotation_deg"] = r.correction_rotation;
+  if (const auto e = p.unrefined_error())
+    j["before"] = {{"translation_error_m", e->translation},
+                   {"rotation_error_deg", e->rotation_deg},
+                   {"success", e->success}};
+  return j;
+}
+
 }  // namespace
 
 std::string registration_report_json(const Pipeline& p, const std::string& source_name,
@@ -78,6 +98,7 @@ std::string registration_report_json(const Pipeline& p, const std::string& sourc
   timings["clique"] = p.time_ms(Stage::clique);
   timings["gnc"] = p.time_ms(Stage::pose);
   timings["verification"] = p.time_ms(Stage::verification_prep) + p.time_ms(Stage::verification);
+  timings["refinement"] = p.time_ms(Stage::refinement);
   timings["acceptance"] = p.time_ms(Stage::acceptance);
   timings["evaluation"] = p.time_ms(Stage::evaluation);
   timings["total"] = total;
@@ -94,6 +115,7 @@ std::string registration_report_json(const Pipeline& p, const std::string& sourc
                 {"inliers", p.acceptance().inliers},
                 {"margin", p.acceptance().margin},
                 {"reason", p.acceptance().reason}}},
+              {"refinement", refinement_json(p)},
               {"ground_truth", gt},
               {"correspondences",
                {{"count", corr.items.size()},

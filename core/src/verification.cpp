@@ -42,6 +42,11 @@ Verifier::~Verifier() = default;
 Verifier::Verifier(Verifier&&) noexcept = default;
 Verifier& Verifier::operator=(Verifier&&) noexcept = default;
 
+std::pair<int, float> Verifier::nearest_target(const Eigen::Vector3f& q,
+                                               float max_distance_sq) const {
+  return impl_->tree.nearest(q, max_distance_sq);
+}
+
 const std::vector<Eigen::Vector3f>& Verifier::source_points() const {
   return impl_->source;
 }

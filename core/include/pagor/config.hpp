@@ -158,14 +158,35 @@ struct VerificationParams {
 struct AcceptanceParams {
   double inlier_distance = 0.5;   ///< a verification point counts as aligned within this [m]
   double ground_thickness = 0.4;  ///< points this far above the ground layer are structure [m]
-  /// least fraction of structure points aligned, in [0, 1]; calibrated on the shared data: true
-  /// pairs 0.24-0.59, scans that share nothing 0.01-0.18
-  double min_overlap = 0.21;
+  /// least fraction of structure points aligned, in [0, 1]; calibrated on the shared data with
+  /// refinement on: true pairs 0.27-0.61, scans that share nothing 0.03-0.20
+  double min_overlap = 0.24;
   int min_inliers = 2;  ///< least GNC inliers of the selected candidate
   /// least overlap when the pose rests on the minimal number of inliers (2 for 4-DoF and SE(2),
   /// 3 for SE(3)): such a pose has no redundant support, so the clouds must say more
   double minimal_support_overlap = 0.3;
-  double min_margin = 0.0;  ///< least D margin to a distinct candidate, fraction of mu*points
+  /// least D margin to a distinct candidate, fraction of mu * points; calibrated on the shared
+  /// data: true pairs 0.18-1 (1: no distinct candidate), scans that share nothing 0.02-0.05
+  double min_margin = 0.1;
+};
+
+/// Optional fine alignment of the selected pose on the metric clouds (see refinement.hpp).
+struct RefinementParams {
+  bool enabled = true;      ///< refine the selected pose (kept only when it lowers D)
+  int max_iterations = 20;  ///< ICP iterations at most
+  int max_points = 1000;    ///< source points used, spread evenly over the verification's cloud
+  /// pairing distance of the first iteration [m]; it shrinks linearly to `min_distance` over the
+  /// first half of the iterations
+  double max_distance = 1.0;
+  double min_distance = 0.3;     ///< pairing distance of the later iterations [m]
+  double robust_scale = 0.2;     ///< Cauchy scale of the point-to-plane residuals [m]
+  double normal_radius = 1.0;    ///< neighbourhood of the target normals [m]
+  double max_translation = 2.0;  ///< a refinement moving the pose farther is rejected [m]
+  double max_rotation = 5.0;     ///< or turning it more [deg]
+  /// refine roll and pitch too when the pose model holds them level (4-DoF): two scans of a
+  /// ground vehicle are level only to a few degrees, and the dense clouds (the ground above all)
+  /// constrain roll and pitch well. SE(2) poses stay planar.
+  bool free_roll_pitch = true;
 };
 
 /// Success criterion against ground truth.
@@ -183,6 +204,7 @@ struct Config {
   CliqueParams clique;
   GncParams gnc;
   VerificationParams verification;
+  RefinementParams refinement;
   AcceptanceParams acceptance;
   EvaluationParams evaluation;
 };
@@ -195,7 +217,7 @@ Config default_config();
 /// A named configuration: `default` (default_config()) or `paper` (the published outdoor
 /// configuration exactly: car, trunk, pole clusters and building FPFH at the configured voxel
 /// sizes, ratio TRIM 0.02/0.04/0.08/0.16, SE(3), truncated D with mu = 1 m, no spacing
-/// adaptation, no class-agnostic keypoints). Throws ConfigError listing the names.
+/// adaptation, no class-agnostic keypoints, no refinement). Throws ConfigError listing the names.
 Config preset_config(const std::string& name);
 
 /// Names of the presets.

@@ -21,6 +21,7 @@
 #include "pagor/gnc.hpp"
 #include "pagor/landmarks.hpp"
 #include "pagor/pyramid_graph.hpp"
+#include "pagor/refinement.hpp"
 #include "pagor/types.hpp"
 #include "pagor/verification.hpp"
 
@@ -35,10 +36,11 @@ enum class Stage : int {
   pose,               ///< GNC-TLS pose per level
   verification_prep,  ///< downsampled metric clouds and target kd-tree
   verification,       ///< score D per candidate, selection
+  refinement,         ///< optional fine alignment of the selected pose (kept if D drops)
   acceptance,         ///< whether the selected pose is trusted
   evaluation,         ///< errors against ground truth
 };
-constexpr int kStageCount = 9;
+constexpr int kStageCount = 10;
 
 /// Lower-case name of a stage, as in timings.
 const char* stage_name(Stage stage);
@@ -82,6 +84,8 @@ class Pipeline {
   const std::vector<PoseEstimate>& poses() const { return poses_; }
   const Verifier* verifier() const { return verifier_ ? &*verifier_ : nullptr; }
   const VerificationResult& verification() const { return verification_; }
+  /// What the refinement did to the selected pose (ran = false when disabled or nothing selected).
+  const RefinementResult& refinement() const { return refinement_; }
   /// The acceptance verdict on the selected pose.
   const Acceptance& acceptance() const { return acceptance_; }
   const std::optional<Transform>& ground_truth() const { return ground_truth_; }
@@ -90,10 +94,12 @@ class Pipeline {
 
   /// Selected level, or -1 when no candidate is valid.
   int selected_level() const { return verification_.selected; }
-  /// The selected pose, if any.
+  /// The selected pose, if any: the refined one when refinement lowered D.
   std::optional<Transform> selected_transform() const;
   /// Errors of the selected pose (needs ground truth and a valid selection).
   std::optional<PoseError> selected_error() const;
+  /// Errors of the selected candidate before refinement (needs ground truth and a selection).
+  std::optional<PoseError> unrefined_error() const;
   /// Whether any candidate succeeds (the paper's "upper bound"; needs ground truth).
   bool upper_bound_success() const;
 
@@ -107,6 +113,8 @@ class Pipeline {
  private:
   void mark_stale(Stage stage);
   void run_stage(Stage stage);
+  void run_refinement();
+  void judge_acceptance();
   /// Calls f(cloud, landmarks) for the source and the target, in parallel with threads > 1.
   template <class F>
   void both_clouds(const F& f);
@@ -124,6 +132,8 @@ class Pipeline {
   std::vector<PoseEstimate> poses_;
   std::optional<Verifier> verifier_;
   VerificationResult verification_;
+  std::optional<Refiner> refiner_;
+  RefinementResult refinement_;
   Acceptance acceptance_;
   std::vector<std::optional<PoseError>> level_errors_;
 

@@ -34,6 +34,10 @@ class Verifier {
   std::vector<float> distances(const Transform& T_target_source,
                                float bound = std::numeric_limits<float>::infinity()) const;
 
+  /// Nearest downsampled target point to `q` strictly closer than sqrt(`max_distance_sq`) [m^2]:
+  /// its index in target_points() and squared distance; index -1 when there is none.
+  std::pair<int, float> nearest_target(const Eigen::Vector3f& q, float max_distance_sq) const;
+
   const std::vector<Eigen::Vector3f>& source_points() const;
   const std::vector<Eigen::Vector3f>& target_points() const;
   double build_time_ms() const;
