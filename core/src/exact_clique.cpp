@@ -28,17 +28,33 @@ int words_for(int n) {
   return (n + 63) / 64;
 }
 
-// One subproblem: a local graph as rows of bits, searched by colouring bounds.
-class BitSearch {
+// A local graph of n vertices as rows of bits (row v: the neighbours of v).
+class BitRows {
  public:
-  BitSearch(int n, long budget, long& nodes)
-      : n_(n), w_(words_for(n)), budget_(budget), nodes_(nodes) {
-    rows_.assign(static_cast<std::size_t>(n_) * static_cast<std::size_t>(w_), 0);
-  }
+  explicit BitRows(int n)
+      : n_(n),
+        w_(words_for(n)),
+        bits_(static_cast<std::size_t>(n) * static_cast<std::size_t>(w_), 0) {}
   void connect(int a, int b) {
     row(a)[b >> 6] |= Word(1) << (b & 63);
     row(b)[a >> 6] |= Word(1) << (a & 63);
   }
+  Word* row(int v) {
+    return bits_.data() + static_cast<std::size_t>(v) * static_cast<std::size_t>(w_);
+  }
+  int size() const { return n_; }
+  int words() const { return w_; }
+
+ private:
+  int n_, w_;
+  std::vector<Word> bits_;
+};
+
+// One subproblem: a local graph as rows of bits, searched by colouring bounds.
+class BitSearch {
+ public:
+  BitSearch(BitRows& g, long budget, long& nodes)
+      : n_(g.size()), w_(g.words()), g_(g), budget_(budget), nodes_(nodes) {}
   // Largest clique of the local graph if it has more than `lower` vertices; else empty.
   // Sets `complete` false when the node budget ran out.
   std::vector<int> solve(int lower, bool& complete) {
@@ -54,9 +70,7 @@ class BitSearch {
   }
 
  private:
-  Word* row(int v) {
-    return rows_.data() + static_cast<std::size_t>(v) * static_cast<std::size_t>(w_);
-  }
+  Word* row(int v) { return g_.row(v); }
 
   struct Level {
     std::vector<Word> P, U, Q;
@@ -120,11 +134,11 @@ class BitSearch {
   }
 
   int n_, w_;
+  BitRows& g_;
   long budget_;
   long& nodes_;
   int best_size_ = 0;
   std::vector<int> best_, current_;
-  std::vector<Word> rows_;
   std::vector<Level> levels_;
 };
 
@@ -135,14 +149,8 @@ class BitSearch {
 // takes or drops a vertex of largest degree.
 class MisSearch {
  public:
-  MisSearch(int n, long budget, long& nodes)
-      : n_(n), w_(words_for(n)), budget_(budget), nodes_(nodes) {
-    rows_.assign(static_cast<std::size_t>(n_) * static_cast<std::size_t>(w_), 0);
-  }
-  void connect(int a, int b) {
-    row(a)[b >> 6] |= Word(1) << (b & 63);
-    row(b)[a >> 6] |= Word(1) << (a & 63);
-  }
+  MisSearch(BitRows& g, long budget, long& nodes)
+      : n_(g.size()), w_(g.words()), g_(g), budget_(budget), nodes_(nodes) {}
   // Largest independent set if it has more than `lower` vertices; else empty.
   std::vector<int> solve(int lower, bool& complete) {
     best_size_ = lower;
@@ -154,9 +162,7 @@ class MisSearch {
   }
 
  private:
-  Word* row(int v) {
-    return rows_.data() + static_cast<std::size_t>(v) * static_cast<std::size_t>(w_);
-  }
+  Word* row(int v) { return g_.row(v); }
   int degree(int v, const std::vector<Word>& P) {
     const Word* r = row(v);
     int d = 0;
@@ -235,11 +241,11 @@ class MisSearch {
   }
 
   int n_, w_;
+  BitRows& g_;
   long budget_;
   long& nodes_;
   int best_size_ = 0;
   std::vector<int> best_, current_;
-  std::vector<Word> rows_;
 };
 
 // The subproblem of v: v's later neighbours in the degeneracy order that could be in a clique
@@ -285,7 +291,7 @@ std::vector<int> solve_subproblem(const detail::LevelCsr& g, const detail::CoreD
   const bool dense = n >= kDenseMinSize && edges >= kDenseFraction * 0.5 * n * (n - 1.0);
   std::vector<int> found;
   if (dense) {
-    MisSearch search(n, budget, nodes);
+    BitRows complement(n);
     std::vector<char> row(static_cast<std::size_t>(n));
     for (int i = 0; i < n; ++i) {
       std::fill(row.begin(), row.end(), 0);
@@ -295,20 +301,20 @@ std::vector<int> solve_subproblem(const detail::LevelCsr& g, const detail::CoreD
         if (j >= 0) row[static_cast<std::size_t>(j)] = 1;
       }
       for (int j = i + 1; j < n; ++j)
-        if (!row[static_cast<std::size_t>(j)]) search.connect(i, j);
+        if (!row[static_cast<std::size_t>(j)]) complement.connect(i, j);
     }
     for (int a : cand) local[static_cast<std::size_t>(a)] = -1;
-    found = search.solve(best - 1, complete);  // with v: > best
+    found = MisSearch(complement, budget, nodes).solve(best - 1, complete);  // with v: > best
   } else {
-    BitSearch search(n, budget, nodes);
+    BitRows local_graph(n);
     for (int i = 0; i < n; ++i)
       for (const int* w = g.begin(cand[static_cast<std::size_t>(i)]);
            w != g.end(cand[static_cast<std::size_t>(i)]); ++w) {
         const int j = local[static_cast<std::size_t>(*w)];
-        if (j > i) search.connect(i, j);
+        if (j > i) local_graph.connect(i, j);
       }
     for (int a : cand) local[static_cast<std::size_t>(a)] = -1;
-    found = search.solve(best - 1, complete);  // with v: > best
+    found = BitSearch(local_graph, budget, nodes).solve(best - 1, complete);  // with v: > best
   }
   if (found.empty()) return {};
   std::vector<int> clique{v};

@@ -1,12 +1,5 @@
 #include "pagor/landmarks.hpp"
 
-#include <pcl/features/fpfh.h>
-#include <pcl/features/normal_3d.h>
-#include <pcl/point_cloud.h>
-#include <pcl/point_types.h>
-#include <pcl/search/kdtree.h>
-#include <pcl/segmentation/extract_clusters.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -18,6 +11,7 @@
 #include "pagor/kdtree.hpp"
 #include "pagor/voxel_grid.hpp"
 #include "pagor/work_budget.hpp"
+#include "point_features.hpp"
 
 namespace pagor {
 namespace {
@@ -27,20 +21,16 @@ double ms_since(Clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 }
 
-// The points relative to a local origin: PCL's normals and FPFH accumulate in float, which loses
-// a georeferenced cloud (300 km from the origin) to cancellation. The origin is the first point
+// The points relative to a local origin: normals and FPFH accumulate in float, which loses a
+// georeferenced cloud (300 km from the origin) to cancellation. The origin is the first point
 // rounded to a multiple of 1024 m, so the subtraction is exact in float and clouds within 512 m
-// of the origin are passed as they are. Only relative positions are used from the PCL cloud; the
-// landmarks' centroids come from `points` themselves.
-pcl::PointCloud<pcl::PointXYZ>::Ptr to_pcl(const std::vector<Eigen::Vector3f>& points) {
-  pcl::PointCloud<pcl::PointXYZ>::Ptr out(new pcl::PointCloud<pcl::PointXYZ>);
-  out->resize(points.size());
+// of the origin are used as they are. Only relative positions are used from these points; the
+// landmarks' centroids come from the input points themselves.
+std::vector<Eigen::Vector3f> local_points(const std::vector<Eigen::Vector3f>& points) {
+  std::vector<Eigen::Vector3f> out(points.size());
   Eigen::Vector3f origin = Eigen::Vector3f::Zero();
   if (!points.empty()) origin = (points.front() / 1024.0f).array().round().matrix() * 1024.0f;
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    const Eigen::Vector3f p = points[i] - origin;
-    (*out)[i] = pcl::PointXYZ(p.x(), p.y(), p.z());
-  }
+  for (std::size_t i = 0; i < points.size(); ++i) out[i] = points[i] - origin;
   return out;
 }
 
@@ -67,33 +57,23 @@ void add_clusters(int class_index, const ClassParams& p, const VoxelDownsample& 
   check_radius_work(ds.points, p.cluster_tolerance,
                     "landmarks.classes[" + std::to_string(class_index) + "].cluster_tolerance",
                     "class '" + p.name + "'");
-  auto cloud = to_pcl(ds.points);
-  pcl::search::KdTree<pcl::PointXYZ>::Ptr tree(new pcl::search::KdTree<pcl::PointXYZ>);
-  tree->setInputCloud(cloud);
-  pcl::EuclideanClusterExtraction<pcl::PointXYZ> ec;
-  ec.setClusterTolerance(p.cluster_tolerance);
-  ec.setMinClusterSize(p.min_points);
-  ec.setMaxClusterSize(p.max_points);
-  ec.setSearchMethod(tree);
-  ec.setInputCloud(cloud);
-  std::vector<pcl::PointIndices> clusters;
-  ec.extract(clusters);
-
-  for (const auto& c : clusters) {
+  const auto clusters = detail::euclidean_clusters(local_points(ds.points), p.cluster_tolerance,
+                                                   p.min_points, p.max_points);
+  for (const std::vector<int>& c : clusters) {
     Landmark lm;
     lm.class_index = class_index;
     lm.kind = LandmarkKind::cluster;
     Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-    for (int v : c.indices) mean += ds.points[static_cast<std::size_t>(v)].cast<double>();
-    mean /= static_cast<double>(c.indices.size());
+    for (int v : c) mean += ds.points[static_cast<std::size_t>(v)].cast<double>();
+    mean /= static_cast<double>(c.size());
     Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
-    for (int v : c.indices) {
+    for (int v : c) {
       const Eigen::Vector3d d = ds.points[static_cast<std::size_t>(v)].cast<double>() - mean;
       cov += d * d.transpose();
     }
     lm.centroid = mean;
-    lm.covariance = cov / static_cast<double>(c.indices.size());
-    for (int v : c.indices) {
+    lm.covariance = cov / static_cast<double>(c.size());
+    for (int v : c) {
       const auto& m = members[static_cast<std::size_t>(v)];
       lm.point_indices.insert(lm.point_indices.end(), m.begin(), m.end());
     }
@@ -138,32 +118,15 @@ void add_keypoints(int class_index, const ClassParams& p, const VoxelDownsample&
   check_radius_work(ds.points, p.feature_radius,
                     "landmarks.classes[" + std::to_string(class_index) + "].feature_radius",
                     "class '" + p.name + "'");
-  auto cloud = to_pcl(ds.points);
-  pcl::search::KdTree<pcl::PointXYZ>::Ptr tree(new pcl::search::KdTree<pcl::PointXYZ>);
-  tree->setInputCloud(cloud);
-  pcl::PointCloud<pcl::Normal>::Ptr normals(new pcl::PointCloud<pcl::Normal>);
-  pcl::NormalEstimation<pcl::PointXYZ, pcl::Normal> ne;
-  ne.setInputCloud(cloud);
-  ne.setSearchMethod(tree);
-  ne.setRadiusSearch(p.normal_radius);
-  ne.compute(*normals);
-
+  const std::vector<Eigen::Vector3f> local = local_points(ds.points);
+  const std::vector<Eigen::Vector3f> normals = detail::estimate_normals(local, p.normal_radius);
   const std::vector<int> keypoints = spread_keypoints(ds, p.voxel_size, p.max_keypoints);
-  pcl::IndicesPtr indices(new std::vector<int>(keypoints));
-  pcl::PointCloud<pcl::FPFHSignature33> features;
-  pcl::FPFHEstimation<pcl::PointXYZ, pcl::Normal, pcl::FPFHSignature33> fe;
-  fe.setInputCloud(cloud);
-  fe.setIndices(indices);
-  fe.setInputNormals(normals);
-  fe.setSearchMethod(tree);
-  fe.setRadiusSearch(p.feature_radius);
-  fe.compute(features);
-
+  const std::vector<detail::Fpfh> features =
+      detail::compute_fpfh(local, normals, keypoints, p.feature_radius);
   for (std::size_t k = 0; k < keypoints.size(); ++k) {
     const auto v = static_cast<std::size_t>(keypoints[k]);
-    const auto& n = (*normals)[v];
-    const float* h = features[k].histogram;
-    if (!std::isfinite(n.normal_x) ||
+    const float* h = features[k].data();
+    if (!normals[v].allFinite() ||
         !std::all_of(h, h + 33, [](float x) { return std::isfinite(x); }))
       continue;  // too few neighbours for a normal or a descriptor
     if (std::all_of(h, h + 33, [](float x) { return x == 0.0f; })) continue;

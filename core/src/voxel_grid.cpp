@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <numeric>
 #include <string>
 #include <unordered_map>
 
@@ -104,6 +105,98 @@ VoxelDownsample voxel_downsample(const std::vector<Eigen::Vector3f>& points, dou
     bin<WideKey, WideHash>(n, point, key, out);
   }
   return out;
+}
+
+namespace {
+constexpr std::uint64_t kEmpty = ~std::uint64_t(0);
+constexpr float kMaxCells = 1048576.0f;  // 2^20 cells per axis, keys of 3 x 21 bits
+
+std::uint64_t hash_key(std::uint64_t k) {
+  k ^= k >> 31;
+  k *= 0x9E3779B97F4A7C15ull;
+  return k ^ (k >> 29);
+}
+}  // namespace
+
+// Cells are numbered from 1 so that the neighbours of the lowest cell have valid keys.
+std::uint64_t RadiusGrid::key_of(const Eigen::Vector3f& p) const {
+  const auto axis = [&](int a) {
+    const float c = std::floor((p[a] - lo_[a]) / cell_);  // queries off the grid are clamped
+    return static_cast<std::uint64_t>(std::min(std::max(0.0f, c), kMaxCells + 1.0f)) + 1;
+  };
+  return (axis(0) << 42) | (axis(1) << 21) | axis(2);
+}
+
+int RadiusGrid::find(std::uint64_t key) const {
+  for (std::uint64_t s = hash_key(key) & mask_;; s = (s + 1) & mask_) {
+    if (slots_[s] == key) return slot_cell_[s];
+    if (slots_[s] == kEmpty) return -1;
+  }
+}
+
+RadiusGrid::RadiusGrid(const std::vector<Eigen::Vector3f>& points, double cell)
+    : cell_(static_cast<float>(cell)) {
+  if (!(cell > 0)) throw InputError("radius grid: cell size must be > 0");
+  const std::size_t n = points.size();
+  if (n == 0) return;
+  lo_ = points[0];
+  Eigen::Vector3f hi = lo_;
+  for (const auto& p : points) {
+    lo_ = lo_.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  if (!lo_.allFinite() || !hi.allFinite())
+    throw InputError("radius grid: a coordinate is not finite");
+  cell_ = std::max(cell_, (hi - lo_).maxCoeff() / kMaxCells);
+  std::vector<std::pair<std::uint64_t, int>> keyed(n);
+  for (std::size_t i = 0; i < n; ++i) keyed[i] = {key_of(points[i]), static_cast<int>(i)};
+  std::sort(keyed.begin(), keyed.end());
+  sorted_.resize(n);
+  index_.resize(n);
+  std::vector<std::uint64_t> keys;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (i == 0 || keyed[i].first != keyed[i - 1].first) {
+      keys.push_back(keyed[i].first);
+      start_.push_back(static_cast<int>(i));
+    }
+    index_[i] = keyed[i].second;
+    sorted_[i] = points[static_cast<std::size_t>(keyed[i].second)];
+  }
+  start_.push_back(static_cast<int>(n));
+  std::size_t capacity = 16;
+  while (capacity < 2 * keys.size()) capacity *= 2;
+  mask_ = capacity - 1;
+  slots_.assign(capacity, kEmpty);
+  slot_cell_.assign(capacity, -1);
+  for (std::size_t c = 0; c < keys.size(); ++c) {
+    std::uint64_t s = hash_key(keys[c]) & mask_;
+    while (slots_[s] != kEmpty) s = (s + 1) & mask_;
+    slots_[s] = keys[c];
+    slot_cell_[s] = static_cast<int>(c);
+  }
+}
+
+void RadiusGrid::within(const Eigen::Vector3f& q, float radius, std::vector<int>& index,
+                        std::vector<float>& distance_sq) const {
+  if (sorted_.empty()) return;
+  const float r2 = radius * radius;
+  const std::uint64_t center = key_of(q);
+  constexpr std::uint64_t kAxis = (std::uint64_t(1) << 21) - 1;
+  const std::uint64_t c[3] = {center >> 42, (center >> 21) & kAxis, center & kAxis};
+  for (std::uint64_t x = c[0] - 1; x <= c[0] + 1; ++x)
+    for (std::uint64_t y = c[1] - 1; y <= c[1] + 1; ++y)
+      for (std::uint64_t z = c[2] - 1; z <= c[2] + 1; ++z) {
+        const int cell = find((x << 42) | (y << 21) | z);
+        if (cell < 0) continue;
+        const int end = start_[static_cast<std::size_t>(cell) + 1];
+        for (int i = start_[static_cast<std::size_t>(cell)]; i < end; ++i) {
+          const float d2 = (sorted_[static_cast<std::size_t>(i)] - q).squaredNorm();
+          if (d2 < r2) {
+            index.push_back(index_[static_cast<std::size_t>(i)]);
+            distance_sq.push_back(d2);
+          }
+        }
+      }
 }
 
 }  // namespace pagor

@@ -1,8 +1,10 @@
 #pragma once
 /// \file voxel_grid.hpp
-/// Voxel downsampling that remembers which voxel every input point fell into.
+/// Voxel downsampling that remembers which voxel every input point fell into, and a fixed-radius
+/// neighbour search over points hashed on a grid.
 
 #include <Eigen/Core>
+#include <cstdint>
 #include <vector>
 
 namespace pagor {
@@ -23,5 +25,37 @@ struct VoxelDownsample {
 /// Throws InputError when a lattice index would exceed 2^52 or a coordinate is not finite.
 VoxelDownsample voxel_downsample(const std::vector<Eigen::Vector3f>& points, double voxel_size,
                                  const std::vector<int>* subset = nullptr);
+
+/// Fixed-radius neighbour search: the points hashed on cells of a grid at least as coarse as the
+/// search radius, so a search looks at the 27 cells around the query (what a kd-tree's radius
+/// search does with a tree walk). Points are kept relative to their lowest corner in float.
+class RadiusGrid {
+ public:
+  /// Hashes `points` on cells of `cell` [m] (> 0); the cell grows when the cloud is more than
+  /// 2^20 cells wide, which keeps every search correct and only scans more points.
+  RadiusGrid(const std::vector<Eigen::Vector3f>& points, double cell);
+
+  /// The points strictly closer than `radius` [m] (at most the cell) to `q`, appended to `index`
+  /// (input indices) and `distance_sq` [m^2], in no particular order; a point of the input
+  /// finds itself at distance 0.
+  void within(const Eigen::Vector3f& q, float radius, std::vector<int>& index,
+              std::vector<float>& distance_sq) const;
+
+  /// Cell size actually used [m].
+  float cell() const { return cell_; }
+
+ private:
+  std::uint64_t key_of(const Eigen::Vector3f& p) const;
+  int find(std::uint64_t key) const;  // cell number, or -1
+
+  float cell_ = 1.0f;
+  Eigen::Vector3f lo_ = Eigen::Vector3f::Zero();
+  std::vector<Eigen::Vector3f> sorted_;  // the points, cell by cell
+  std::vector<int> index_;               // input index of sorted_[i]
+  std::vector<int> start_;               // cell c holds sorted_[start_[c], start_[c + 1])
+  std::vector<std::uint64_t> slots_;     // open-addressing table of cell keys
+  std::vector<int> slot_cell_;           // the cell of each slot
+  std::uint64_t mask_ = 0;
+};
 
 }  // namespace pagor
