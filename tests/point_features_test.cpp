@@ -4,6 +4,7 @@
 
 #include <pcl/features/fpfh.h>
 #include <pcl/features/normal_3d.h>
+#include <pcl/kdtree/kdtree_flann.h>
 #include <pcl/search/kdtree.h>
 #include <pcl/segmentation/extract_clusters.h>
 
@@ -12,9 +13,13 @@
 #include <cmath>
 #include <filesystem>
 #include <random>
+#include <set>
 
 #include "pagor/config.hpp"
+#include "pagor/correspondences.hpp"
+#include "pagor/kdtree.hpp"
 #include "pagor/kitti.hpp"
+#include "pagor/landmarks.hpp"
 #include "pagor/voxel_grid.hpp"
 #include "point_features.hpp"
 #include "test_util.hpp"
@@ -180,4 +185,97 @@ TEST_CASE("FPFH descriptors are PCL's") {
     INFO(pts.size() << " points: largest difference " << worst << " (bins of a third sum to 100)");
     CHECK(worst < 1e-3f);
   }
+}
+
+TEST_CASE("the spacing estimate is the median nearest-neighbour distance of its queries") {
+  // The definition, with a kd-tree: an even sample of at most 16384 points, 1000 evenly spaced
+  // queries, the median distance scaled back by the square root of the thinning.
+  const auto reference = [](const Points& pts) {
+    const std::size_t thin = std::max<std::size_t>(1, pts.size() / 16384);
+    Points sample;
+    for (std::size_t i = 0; i < pts.size(); i += thin) sample.push_back(pts[i]);
+    const KdTree3f tree(sample);
+    std::vector<float> d;
+    for (std::size_t i = 0; i < sample.size(); i += std::max<std::size_t>(1, sample.size() / 1000))
+      d.push_back(std::sqrt(tree.nearest(sample[i], HUGE_VALF, static_cast<int>(i)).second));
+    std::nth_element(d.begin(), d.begin() + static_cast<long>(d.size() / 2), d.end());
+    return d[d.size() / 2] / std::sqrt(static_cast<double>(thin));
+  };
+  std::vector<Points> clouds = {random_scene(3, 500), random_scene(4, 40000)};
+  Points line;  // a degenerate extent: points on a line
+  for (int i = 0; i < 300; ++i) line.emplace_back(0.1f * static_cast<float>(i * i % 97), 0, 0);
+  clouds.push_back(line);
+  if (std::filesystem::exists(test::kitti_root() + "/sequences/00/velodyne/000000.bin"))
+    clouds.push_back(KittiSequence(test::kitti_root(), "00").load_frame(0).cloud.points);
+  for (const Points& pts : clouds) {
+    INFO(pts.size() << " points");
+    CHECK(estimate_spacing(pts) == Approx(reference(pts)).epsilon(1e-6));
+  }
+}
+
+TEST_CASE("descriptor matching gives FLANN's mutual nearest neighbours") {
+  if (!std::filesystem::exists(test::kitti_root() + "/sequences/00/velodyne/000000.bin")) return;
+  const KittiSequence seq(test::kitti_root(), "00");
+  const Config config = default_config();
+  const LandmarkSet s =
+      extract_landmarks(seq.load_frame(0).cloud, config.label_scheme, config.landmarks);
+  const LandmarkSet t =
+      extract_landmarks(seq.load_frame(20).cloud, config.label_scheme, config.landmarks);
+  const int building = static_cast<int>(config.landmarks.classes.size()) - 1;
+  REQUIRE(config.landmarks.classes.back().method == LandmarkMethod::fpfh);
+  // The reference: FLANN's exact kd-tree both ways, mutual matches, best 300 by distance.
+  const auto cloud_of = [&](const LandmarkSet& set, std::vector<int>& idx) {
+    pcl::PointCloud<pcl::FPFHSignature33>::Ptr c(new pcl::PointCloud<pcl::FPFHSignature33>);
+    for (std::size_t i = 0; i < set.landmarks.size(); ++i)
+      if (set.landmarks[i].class_index == building) {
+        idx.push_back(static_cast<int>(i));
+        pcl::FPFHSignature33 d;
+        std::copy(set.descriptors[i].begin(), set.descriptors[i].end(), d.histogram);
+        c->push_back(d);
+      }
+    return c;
+  };
+  std::vector<int> si, ti;
+  const auto sc = cloud_of(s, si), tc = cloud_of(t, ti);
+  pcl::KdTreeFLANN<pcl::FPFHSignature33> s_tree, t_tree;
+  s_tree.setInputCloud(sc);
+  t_tree.setInputCloud(tc);
+  std::vector<int> k(1);
+  std::vector<float> d(1);
+  std::vector<std::pair<float, std::pair<int, int>>> expected;
+  for (std::size_t a = 0; a < sc->size(); ++a) {
+    t_tree.nearestKSearch((*sc)[a], 1, k, d);
+    const int b = k[0];
+    const float dist = d[0];
+    s_tree.nearestKSearch((*tc)[static_cast<std::size_t>(b)], 1, k, d);
+    if (k[0] == static_cast<int>(a))
+      expected.push_back({dist, {si[a], ti[static_cast<std::size_t>(b)]}});
+  }
+  std::sort(expected.begin(), expected.end());
+  expected.resize(
+      std::min<std::size_t>(expected.size(), config.correspondences.fpfh_max_per_class));
+  std::set<std::pair<int, int>> want, got;
+  for (const auto& e : expected) want.insert(e.second);
+  for (const Correspondence& c : match_landmarks(s, t, config.correspondences).items)
+    if (c.class_index == building) got.insert({c.source, c.target});
+  // Where two descriptors are identical (isolated points give the same degenerate histogram)
+  // either match is exact; FLANN takes the one its tree visits first, we the lowest index.
+  const auto same_descriptors = [](const LandmarkSet& set, int a, int b) {
+    return set.descriptors[static_cast<std::size_t>(a)] ==
+           set.descriptors[static_cast<std::size_t>(b)];
+  };
+  std::size_t ties = 0;
+  for (const auto& [a, b] : want)
+    if (!got.count({a, b}))
+      for (const auto& [c, d] : got)
+        if (!want.count({c, d}) &&
+            ((a == c && same_descriptors(t, b, d)) || (b == d && same_descriptors(s, a, c)))) {
+          got.erase({c, d});
+          got.insert({a, b});
+          ++ties;
+          break;
+        }
+  INFO("FLANN " << want.size() << " matches, " << ties << " exact ties taken the other way");
+  CHECK(want.size() > 100);
+  CHECK(got == want);
 }

@@ -66,7 +66,8 @@ std::vector<Padded, Eigen::aligned_allocator<Padded>> padded(const LandmarkSet& 
 
 // Exact nearest neighbours both ways in one pass over all pairs (the 33-D descriptors defeat a
 // kd-tree; a linear scan is what FLANN's exact search amounts to): for each source descriptor
-// its nearest target (index, squared distance), and for each target its nearest source.
+// its nearest target (index, squared distance), and for each target its nearest source. Of equal
+// distances (identical descriptors) the first wins, where FLANN's tree order decides.
 struct NearestBothWays {
   std::vector<std::pair<int, float>> forward, backward;
 };

@@ -8,7 +8,6 @@
 #include <unordered_set>
 
 #include "pagor/errors.hpp"
-#include "pagor/kdtree.hpp"
 #include "pagor/voxel_grid.hpp"
 #include "pagor/work_budget.hpp"
 #include "point_features.hpp"
@@ -34,12 +33,16 @@ std::vector<Eigen::Vector3f> local_points(const std::vector<Eigen::Vector3f>& po
   return out;
 }
 
-// Indices of the points whose semantic id is one of `ids`.
+// Indices of the points whose semantic id is one of `ids` (a table over the 16-bit ids).
 std::vector<int> points_of_class(const PointCloud& cloud, const std::vector<std::uint32_t>& ids) {
-  std::unordered_set<std::uint32_t> wanted(ids.begin(), ids.end());
+  std::vector<char> wanted(1u << 16, 0);
+  for (std::uint32_t id : ids)
+    if (id < wanted.size()) wanted[id] = 1;
   std::vector<int> out;
-  for (std::size_t i = 0; i < cloud.size(); ++i)
-    if (wanted.count(semantic_id(cloud.labels[i]))) out.push_back(static_cast<int>(i));
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    const std::uint32_t id = semantic_id(cloud.labels[i]);
+    if (id < wanted.size() && wanted[id]) out.push_back(static_cast<int>(i));
+  }
   return out;
 }
 
@@ -187,14 +190,27 @@ double estimate_spacing(const std::vector<Eigen::Vector3f>& points,
   for (std::size_t i = 0; i < n; i += thin)
     sample.push_back(points[subset ? static_cast<std::size_t>((*subset)[i]) : i]);
   if (sample.size() < 2) return 0.0;
-  const KdTree3f tree(sample);
   const std::size_t stride = std::max<std::size_t>(1, sample.size() / kQueries);
+  // Each query's nearest neighbour on a grid whose cell grows until more than half of the queries
+  // have theirs within one cell: the others are farther, so the median is then exact. The first
+  // cell is an eighth of the spacing of a square surface of the sample's extent.
+  Eigen::Vector3f lo = sample[0], hi = lo;
+  for (const auto& p : sample) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  double cell = std::max(1e-3, static_cast<double>((hi - lo).maxCoeff()) /
+                                   std::sqrt(static_cast<double>(sample.size())) / 8);
   std::vector<float> d;
-  for (std::size_t i = 0; i < sample.size(); i += stride) {
-    const auto [index, d2] = tree.nearest(sample[i], HUGE_VALF, static_cast<int>(i));
-    if (index >= 0) d.push_back(std::sqrt(d2));
+  for (;;) {
+    const RadiusGrid grid(sample, cell);
+    d.clear();
+    std::size_t found = 0;
+    for (std::size_t i = 0; i < sample.size(); i += stride) {
+      const auto [index, d2] = grid.nearest(sample[i], grid.cell(), static_cast<int>(i));
+      d.push_back(index >= 0 ? std::sqrt(d2) : HUGE_VALF);
+      found += index >= 0;
+    }
+    if (found > d.size() / 2) break;
+    cell *= 2;
   }
-  if (d.empty()) return 0.0;
   std::nth_element(d.begin(), d.begin() + static_cast<long>(d.size() / 2), d.end());
   return d[d.size() / 2] / std::sqrt(static_cast<double>(thin));
 }
@@ -244,8 +260,17 @@ ClassParams params_for_spacing(const ClassParams& p, double spacing, const Landm
 std::string label_scheme_mismatch(const PointCloud& cloud, const LabelScheme& scheme,
                                   const LandmarkParams& params) {
   if (!cloud.has_labels() || cloud.empty()) return {};
+  std::vector<std::size_t> counts(1u << 16, 0);
   std::map<std::uint32_t, std::size_t> histogram;
-  for (std::uint32_t l : cloud.labels) ++histogram[semantic_id(l)];
+  for (std::uint32_t l : cloud.labels) {
+    const std::uint32_t id = semantic_id(l);
+    if (id < counts.size())
+      ++counts[id];
+    else
+      ++histogram[id];
+  }
+  for (std::uint32_t id = 0; id < counts.size(); ++id)
+    if (counts[id]) histogram[id] = counts[id];
   // Fraction of the points whose ids belong to the classes `wanted` accepts.
   const auto share = [&](const LabelScheme& s, const auto& wanted) {
     std::unordered_set<std::uint32_t> ids;
@@ -335,12 +360,13 @@ void add_fallback_landmarks(const PointCloud& cloud, const LabelScheme& scheme,
   const FallbackParams& fb = params.fallback;
   std::vector<int> subset;
   if (cloud.has_labels()) {
-    std::unordered_set<std::uint32_t> ground;
+    std::vector<char> ground(1u << 16, 0);  // over the 16-bit semantic ids
     for (const auto& name : fb.ground_classes)
       if (scheme.find(name) >= 0)
-        for (std::uint32_t id : scheme.ids_of(name)) ground.insert(id);
+        for (std::uint32_t id : scheme.ids_of(name))
+          if (id < ground.size()) ground[id] = 1;
     for (std::size_t i = 0; i < cloud.size(); ++i)
-      if (!ground.count(semantic_id(cloud.labels[i]))) subset.push_back(static_cast<int>(i));
+      if (!ground[semantic_id(cloud.labels[i])]) subset.push_back(static_cast<int>(i));
   } else if (!cloud.empty()) {
     const float top = ground_layer_top(cloud.points, static_cast<float>(fb.ground_height));
     for (std::size_t i = 0; i < cloud.size(); ++i)

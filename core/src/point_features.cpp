@@ -181,13 +181,21 @@ std::vector<Fpfh> compute_fpfh(const std::vector<Eigen::Vector3f>& points,
     float* h = hist.data() + static_cast<std::size_t>(row[static_cast<std::size_t>(p)]) * 33;
     for (int b : bins_of(f)) h[b] += 1.0f;
   };
+  std::vector<int> keypoint_of(points.size(), -1);  // keypoints' lists are searched already
+  for (std::size_t k = 0; k < keypoints.size(); ++k)
+    keypoint_of[static_cast<std::size_t>(keypoints[k])] = static_cast<int>(k);
   for (std::size_t p = 0; p < points.size(); ++p) {
     if (row[p] < 0) continue;
-    found.clear();
-    d2.clear();
-    grid.within(points[p], r, found, d2);
+    const std::vector<int>* list = &found;
+    if (keypoint_of[p] >= 0) {
+      list = &near[static_cast<std::size_t>(keypoint_of[p])];
+    } else {
+      found.clear();
+      d2.clear();
+      grid.within(points[p], r, found, d2);
+    }
     const Eigen::Vector4f pp = point4(points[p]), np = normal4(normals[p]);
-    for (int q : found) {
+    for (int q : *list) {
       const auto uq = static_cast<std::size_t>(q);
       if (uq == p || (row[uq] >= 0 && uq < p)) continue;  // itself, or done from q's side
       bool tie = false;
@@ -196,8 +204,8 @@ std::vector<Fpfh> compute_fpfh(const std::vector<Eigen::Vector3f>& points,
       add(static_cast<int>(p), f);
       if (row[uq] >= 0) add(q, tie ? pair_features(pq, nq, pp, np, true, nullptr) : f);
     }
-    if (found.size() > 1) {
-      const float incr = 100.0f / static_cast<float>(found.size() - 1);
+    if (list->size() > 1) {
+      const float incr = 100.0f / static_cast<float>(list->size() - 1);
       float* h = hist.data() + static_cast<std::size_t>(row[p]) * 33;
       for (int b = 0; b < 33; ++b) h[b] *= incr;
     }
@@ -205,22 +213,20 @@ std::vector<Fpfh> compute_fpfh(const std::vector<Eigen::Vector3f>& points,
   // FPFH: the neighbours' SPFH weighted by 1 / squared distance, each third scaled to sum 100.
   for (std::size_t k = 0; k < keypoints.size(); ++k) {
     float fpfh[33] = {};
-    double sum[3] = {0, 0, 0};
     for (std::size_t a = 0; a < near[k].size(); ++a) {
       if (near_d2[k][a] == 0) continue;
       const float weight = 1.0f / near_d2[k][a];
       const float* h =
           hist.data() + static_cast<std::size_t>(row[static_cast<std::size_t>(near[k][a])]) * 33;
-      for (int b = 0; b < 33; ++b) {
-        const float v = h[b] * weight;
-        sum[b / kBins] += v;
-        fpfh[b] += v;
-      }
+      for (int b = 0; b < 33; ++b) fpfh[b] += h[b] * weight;
     }
-    for (int t = 0; t < 3; ++t)
-      if (sum[t] != 0) sum[t] = 100.0 / sum[t];
-    for (int b = 0; b < 33; ++b)
-      out[k][static_cast<std::size_t>(b)] = static_cast<float>(fpfh[b] * sum[b / kBins]);
+    for (int t = 0; t < 3; ++t) {
+      double sum = 0;
+      for (int b = t * kBins; b < (t + 1) * kBins; ++b) sum += fpfh[b];
+      if (sum != 0) sum = 100.0 / sum;
+      for (int b = t * kBins; b < (t + 1) * kBins; ++b)
+        out[k][static_cast<std::size_t>(b)] = static_cast<float>(fpfh[b] * sum);
+    }
   }
   return out;
 }

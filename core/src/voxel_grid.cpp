@@ -148,55 +148,68 @@ RadiusGrid::RadiusGrid(const std::vector<Eigen::Vector3f>& points, double cell)
   if (!lo_.allFinite() || !hi.allFinite())
     throw InputError("radius grid: a coordinate is not finite");
   cell_ = std::max(cell_, (hi - lo_).maxCoeff() / kMaxCells);
-  std::vector<std::pair<std::uint64_t, int>> keyed(n);
-  for (std::size_t i = 0; i < n; ++i) keyed[i] = {key_of(points[i]), static_cast<int>(i)};
-  std::sort(keyed.begin(), keyed.end());
-  sorted_.resize(n);
-  index_.resize(n);
-  std::vector<std::uint64_t> keys;
-  for (std::size_t i = 0; i < n; ++i) {
-    if (i == 0 || keyed[i].first != keyed[i - 1].first) {
-      keys.push_back(keyed[i].first);
-      start_.push_back(static_cast<int>(i));
-    }
-    index_[i] = keyed[i].second;
-    sorted_[i] = points[static_cast<std::size_t>(keyed[i].second)];
-  }
-  start_.push_back(static_cast<int>(n));
+  // Cells numbered in order of first appearance through the hash table, then the points
+  // scattered cell by cell (a counting sort: linear in the points).
   std::size_t capacity = 16;
-  while (capacity < 2 * keys.size()) capacity *= 2;
+  while (capacity < 2 * n) capacity *= 2;
   mask_ = capacity - 1;
   slots_.assign(capacity, kEmpty);
   slot_cell_.assign(capacity, -1);
-  for (std::size_t c = 0; c < keys.size(); ++c) {
-    std::uint64_t s = hash_key(keys[c]) & mask_;
-    while (slots_[s] != kEmpty) s = (s + 1) & mask_;
-    slots_[s] = keys[c];
-    slot_cell_[s] = static_cast<int>(c);
+  std::vector<int> cell_of(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::uint64_t key = key_of(points[i]);
+    std::uint64_t s = hash_key(key) & mask_;
+    while (slots_[s] != kEmpty && slots_[s] != key) s = (s + 1) & mask_;
+    if (slots_[s] == kEmpty) {
+      slots_[s] = key;
+      slot_cell_[s] = static_cast<int>(start_.size());
+      start_.push_back(0);
+    }
+    cell_of[i] = slot_cell_[s];
+    ++start_[static_cast<std::size_t>(cell_of[i])];
   }
+  int total = 0;  // counts -> starts
+  for (int& c : start_) {
+    const int count = c;
+    c = total;
+    total += count;
+  }
+  start_.push_back(total);
+  std::vector<int> fill(start_.begin(), start_.end() - 1);
+  sorted_.resize(n);
+  index_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto at = static_cast<std::size_t>(fill[static_cast<std::size_t>(cell_of[i])]++);
+    sorted_[at] = points[i];
+    index_[at] = static_cast<int>(i);
+  }
+}
+
+std::pair<int, float> RadiusGrid::nearest(const Eigen::Vector3f& q, float radius,
+                                          int exclude) const {
+  std::pair<int, float> best{-1, radius * radius};
+  for_cells_around(q, [&](int begin, int end) {
+    for (int i = begin; i < end; ++i) {
+      const float d2 = (sorted_[static_cast<std::size_t>(i)] - q).squaredNorm();
+      if (d2 < best.second && index_[static_cast<std::size_t>(i)] != exclude)
+        best = {index_[static_cast<std::size_t>(i)], d2};
+    }
+  });
+  return best;
 }
 
 void RadiusGrid::within(const Eigen::Vector3f& q, float radius, std::vector<int>& index,
                         std::vector<float>& distance_sq) const {
-  if (sorted_.empty()) return;
   const float r2 = radius * radius;
-  const std::uint64_t center = key_of(q);
-  constexpr std::uint64_t kAxis = (std::uint64_t(1) << 21) - 1;
-  const std::uint64_t c[3] = {center >> 42, (center >> 21) & kAxis, center & kAxis};
-  for (std::uint64_t x = c[0] - 1; x <= c[0] + 1; ++x)
-    for (std::uint64_t y = c[1] - 1; y <= c[1] + 1; ++y)
-      for (std::uint64_t z = c[2] - 1; z <= c[2] + 1; ++z) {
-        const int cell = find((x << 42) | (y << 21) | z);
-        if (cell < 0) continue;
-        const int end = start_[static_cast<std::size_t>(cell) + 1];
-        for (int i = start_[static_cast<std::size_t>(cell)]; i < end; ++i) {
-          const float d2 = (sorted_[static_cast<std::size_t>(i)] - q).squaredNorm();
-          if (d2 < r2) {
-            index.push_back(index_[static_cast<std::size_t>(i)]);
-            distance_sq.push_back(d2);
-          }
-        }
+  for_cells_around(q, [&](int begin, int end) {
+    for (int i = begin; i < end; ++i) {
+      const float d2 = (sorted_[static_cast<std::size_t>(i)] - q).squaredNorm();
+      if (d2 < r2) {
+        index.push_back(index_[static_cast<std::size_t>(i)]);
+        distance_sq.push_back(d2);
       }
+    }
+  });
 }
 
 }  // namespace pagor

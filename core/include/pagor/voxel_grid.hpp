@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace pagor {
@@ -41,12 +42,31 @@ class RadiusGrid {
   void within(const Eigen::Vector3f& q, float radius, std::vector<int>& index,
               std::vector<float>& distance_sq) const;
 
+  /// The point nearest to `q` strictly closer than `radius` [m] (at most the cell), skipping the
+  /// input point `exclude`: its input index and squared distance, or -1 and radius^2.
+  std::pair<int, float> nearest(const Eigen::Vector3f& q, float radius, int exclude = -1) const;
+
   /// Cell size actually used [m].
   float cell() const { return cell_; }
 
  private:
   std::uint64_t key_of(const Eigen::Vector3f& p) const;
   int find(std::uint64_t key) const;  // cell number, or -1
+  // Calls f(begin, end) with the range of sorted_ of each occupied cell of the 27 around q.
+  template <class F>
+  void for_cells_around(const Eigen::Vector3f& q, F&& f) const {
+    if (sorted_.empty()) return;
+    const std::uint64_t center = key_of(q);
+    constexpr std::uint64_t kAxis = (std::uint64_t(1) << 21) - 1;
+    const std::uint64_t c[3] = {center >> 42, (center >> 21) & kAxis, center & kAxis};
+    for (std::uint64_t x = c[0] - 1; x <= c[0] + 1; ++x)
+      for (std::uint64_t y = c[1] - 1; y <= c[1] + 1; ++y)
+        for (std::uint64_t z = c[2] - 1; z <= c[2] + 1; ++z) {
+          const int cell = find((x << 42) | (y << 21) | z);
+          if (cell >= 0)
+            f(start_[static_cast<std::size_t>(cell)], start_[static_cast<std::size_t>(cell) + 1]);
+        }
+  }
 
   float cell_ = 1.0f;
   Eigen::Vector3f lo_ = Eigen::Vector3f::Zero();
