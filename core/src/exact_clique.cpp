@@ -322,7 +322,33 @@ std::vector<int> solve_subproblem(const detail::LevelCsr& g, const detail::CoreD
   return clique;
 }
 
+// The exact search from the clique `best`: one subproblem per vertex that could be in a larger
+// one, from the end of the degeneracy order (the densest part first, where large cliques are).
+std::vector<int> search_from(const detail::LevelCsr& csr, const detail::CoreDecomposition& cd,
+                             std::vector<int> best, long max_nodes, bool& optimal) {
+  optimal = true;
+  std::vector<int> local(static_cast<std::size_t>(csr.size()), -1);
+  long nodes = 0;
+  for (int i = csr.size() - 1; i >= 0 && optimal; --i) {
+    const int v = cd.order[static_cast<std::size_t>(i)];
+    const int size = static_cast<int>(best.size());
+    if (cd.core[static_cast<std::size_t>(v)] < size) continue;  // in no clique larger than best
+    std::vector<int> c = solve_subproblem(csr, cd, v, size, max_nodes, nodes, optimal, local);
+    if (c.size() > best.size()) best = std::move(c);
+  }
+  std::sort(best.begin(), best.end());
+  return best;
+}
+
 }  // namespace
+
+std::vector<int> detail::larger_clique(const PyramidGraph& g, int level, std::vector<int> best,
+                                       long max_nodes, bool& optimal) {
+  optimal = true;
+  if (g.vertices == 0) return best;
+  const detail::LevelCsr csr = detail::level_csr(g, level);
+  return search_from(csr, detail::core_decomposition(csr), std::move(best), max_nodes, optimal);
+}
 
 CliqueResult exact_max_clique(const PyramidGraph& g, int level, const CliqueParams& p) {
   const auto t0 = std::chrono::steady_clock::now();
@@ -333,22 +359,8 @@ CliqueResult exact_max_clique(const PyramidGraph& g, int level, const CliquePara
     const detail::LevelCsr csr = detail::level_csr(g, level);
     const detail::CoreDecomposition cd = detail::core_decomposition(csr);
     detail::Marks marks(g.vertices);
-    std::vector<int> best = detail::greedy_clique(csr, cd.core, 32, marks);
-    std::vector<int> local(static_cast<std::size_t>(g.vertices), -1);
-    long nodes = 0;
-    bool complete = true;
-    // From the end of the degeneracy order: the densest part first, where large cliques are.
-    for (int i = g.vertices - 1; i >= 0 && complete; --i) {
-      const int v = cd.order[static_cast<std::size_t>(i)];
-      const int size = static_cast<int>(best.size());
-      if (cd.core[static_cast<std::size_t>(v)] < size) continue;  // in no clique larger than best
-      std::vector<int> c =
-          solve_subproblem(csr, cd, v, size, p.exact_max_nodes, nodes, complete, local);
-      if (c.size() > best.size()) best = std::move(c);
-    }
-    std::sort(best.begin(), best.end());
-    r.vertices = std::move(best);
-    r.optimal = complete;
+    r.vertices = search_from(csr, cd, detail::greedy_clique(csr, cd.core, 32, marks),
+                             p.exact_max_nodes, r.optimal);
   }
   r.time_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
