@@ -10,6 +10,8 @@
 #include <fstream>
 #include <random>
 
+#include "pagor/kitti.hpp"
+
 namespace pagor::bench {
 
 double Timing::median() const {
@@ -127,6 +129,57 @@ std::string fmt(double v, int decimals) {
   char buf[64];
   std::snprintf(buf, sizeof(buf), "%.*f", decimals, v);
   return buf;
+}
+
+bool SolverComparison::same_sizes() const {
+  bool same = a.size() == b.size();
+  for (std::size_t l = 0; same && l < a.size(); ++l)
+    same = a[l].vertices.size() == b[l].vertices.size();
+  return same;
+}
+
+bool SolverComparison::same_sets() const {
+  bool same = a.size() == b.size();
+  for (std::size_t l = 0; same && l < a.size(); ++l) same = a[l].vertices == b[l].vertices;
+  return same;
+}
+
+SolverComparison compare_solvers(const PyramidGraph& g, const CliqueParams& a,
+                                 const CliqueParams& b, int reps) {
+  SolverComparison out;
+  out.time_a = measure([&] { out.a = solve_pyramid(g, a); }, reps);
+  out.time_b = measure([&] { out.b = solve_pyramid(g, b); }, reps);
+  return out;
+}
+
+SolverComparison cascaded_vs_independent(const PyramidGraph& g, int reps, CliqueParams base) {
+  CliqueParams independent = base;
+  base.solver = CliqueSolver::cascaded;
+  independent.solver = CliqueSolver::independent;
+  return compare_solvers(g, base, independent, reps);
+}
+
+std::string sizes(const std::vector<CliqueResult>& cliques) {
+  std::string out;
+  for (const auto& c : cliques) out += (out.empty() ? "" : ",") + std::to_string(c.vertices.size());
+  return out;
+}
+
+int gradient_steps(const std::vector<CliqueResult>& cliques) {
+  int n = 0;
+  for (const auto& c : cliques) n += c.gradient_steps;
+  return n;
+}
+
+std::optional<std::pair<LoadedCloud, LoadedCloud>> kitti_pair(const std::string& root, int s,
+                                                              int t) {
+  try {
+    const KittiSequence seq(root, "00");
+    return std::make_pair(seq.load_frame(s), seq.load_frame(t));
+  } catch (const std::exception& e) {
+    std::printf("(skipped: %s)\n", e.what());
+    return std::nullopt;
+  }
 }
 
 }  // namespace pagor::bench

@@ -272,4 +272,10 @@ bool is_clique(const Graph& g, const std::vector<int>& vertices, Marks& marks) {
   return true;
 }
 
+/// Exact search for a clique larger than `best` on `level` (the exact solver, started from
+/// `best`): the largest clique found, `best` itself when there is none; `optimal` tells whether
+/// the search finished within `max_nodes` branch-and-bound nodes.
+std::vector<int> larger_clique(const PyramidGraph& g, int level, std::vector<int> best,
+                               long max_nodes, bool& optimal);
+
 }  // namespace pagor::detail

@@ -1,9 +1,7 @@
 #include "pagor/correspondences.hpp"
 
-#include <pcl/kdtree/kdtree_flann.h>
-#include <pcl/point_types.h>
-
 #include <Eigen/Eigenvalues>
+#include <Eigen/StdVector>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -53,25 +51,41 @@ void all_to_all(const LandmarkSet& s, const LandmarkSet& t, const std::vector<in
   }
 }
 
-pcl::PointCloud<pcl::FPFHSignature33>::Ptr descriptor_cloud(const LandmarkSet& set,
-                                                            const std::vector<int>& idx) {
-  pcl::PointCloud<pcl::FPFHSignature33>::Ptr cloud(new pcl::PointCloud<pcl::FPFHSignature33>);
-  cloud->resize(idx.size());
+// Descriptors of the landmarks `idx`, padded to kStride floats (zeros) for vector arithmetic.
+constexpr int kStride = 36;
+using Padded = Eigen::Matrix<float, kStride, 1>;
+std::vector<Padded, Eigen::aligned_allocator<Padded>> padded(const LandmarkSet& set,
+                                                             const std::vector<int>& idx) {
+  std::vector<Padded, Eigen::aligned_allocator<Padded>> out(idx.size(), Padded::Zero());
   for (std::size_t k = 0; k < idx.size(); ++k) {
     const auto& d = set.descriptors[static_cast<std::size_t>(idx[k])];
-    std::copy(d.begin(), d.end(), (*cloud)[k].histogram);
+    std::copy(d.begin(), d.begin() + std::min<std::size_t>(d.size(), kStride), out[k].data());
   }
-  return cloud;
+  return out;
 }
 
-// Nearest descriptor in `tree` for each descriptor of `queries`: index and squared distance.
-std::vector<std::pair<int, float>> nearest(const pcl::KdTreeFLANN<pcl::FPFHSignature33>& tree,
-                                           const pcl::PointCloud<pcl::FPFHSignature33>& queries) {
-  std::vector<std::pair<int, float>> out(queries.size(), {-1, 0.0f});
-  std::vector<int> k(1);
-  std::vector<float> d(1);
-  for (std::size_t i = 0; i < queries.size(); ++i)
-    if (tree.nearestKSearch(queries[i], 1, k, d) == 1) out[i] = {k[0], d[0]};
+// Exact nearest neighbours both ways in one pass over all pairs (the 33-D descriptors defeat a
+// kd-tree; a linear scan is what FLANN's exact search amounts to): for each source descriptor
+// its nearest target (index, squared distance), and for each target its nearest source. Of equal
+// distances (identical descriptors) the first wins, where FLANN's tree order decides.
+struct NearestBothWays {
+  std::vector<std::pair<int, float>> forward, backward;
+};
+NearestBothWays nearest_both_ways(const LandmarkSet& s, const std::vector<int>& si,
+                                  const LandmarkSet& t, const std::vector<int>& ti) {
+  const auto a = padded(s, si), b = padded(t, ti);
+  NearestBothWays out;
+  out.forward.assign(a.size(), {-1, HUGE_VALF});
+  out.backward.assign(b.size(), {-1, HUGE_VALF});
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    auto& f = out.forward[i];
+    for (std::size_t j = 0; j < b.size(); ++j) {
+      const float d2 = (a[i] - b[j]).squaredNorm();
+      if (d2 < f.second) f = {static_cast<int>(j), d2};
+      auto& g = out.backward[j];
+      if (d2 < g.second) g = {static_cast<int>(i), d2};
+    }
+  }
   return out;
 }
 
@@ -79,16 +93,7 @@ void fpfh_matches(const LandmarkSet& s, const LandmarkSet& t, const std::vector<
                   const std::vector<int>& ti, const CorrespondenceParams& params,
                   std::vector<Correspondence>& out) {
   if (si.empty() || ti.empty()) return;
-  const auto sd = descriptor_cloud(s, si);
-  const auto td = descriptor_cloud(t, ti);
-  pcl::KdTreeFLANN<pcl::FPFHSignature33> t_tree, s_tree;
-  t_tree.setInputCloud(td);
-  const auto forward = nearest(t_tree, *sd);
-  std::vector<std::pair<int, float>> backward;
-  if (params.fpfh_mutual) {
-    s_tree.setInputCloud(sd);
-    backward = nearest(s_tree, *td);
-  }
+  const auto [forward, backward] = nearest_both_ways(s, si, t, ti);
   std::vector<std::pair<float, std::pair<int, int>>> matches;  // (distance, (source k, target k))
   for (std::size_t a = 0; a < forward.size(); ++a) {
     const int b = forward[a].first;

@@ -28,17 +28,33 @@ int words_for(int n) {
   return (n + 63) / 64;
 }
 
-// One subproblem: a local graph as rows of bits, searched by colouring bounds.
-class BitSearch {
+// A local graph of n vertices as rows of bits (row v: the neighbours of v).
+class BitRows {
  public:
-  BitSearch(int n, long budget, long& nodes)
-      : n_(n), w_(words_for(n)), budget_(budget), nodes_(nodes) {
-    rows_.assign(static_cast<std::size_t>(n_) * static_cast<std::size_t>(w_), 0);
-  }
+  explicit BitRows(int n)
+      : n_(n),
+        w_(words_for(n)),
+        bits_(static_cast<std::size_t>(n) * static_cast<std::size_t>(w_), 0) {}
   void connect(int a, int b) {
     row(a)[b >> 6] |= Word(1) << (b & 63);
     row(b)[a >> 6] |= Word(1) << (a & 63);
   }
+  Word* row(int v) {
+    return bits_.data() + static_cast<std::size_t>(v) * static_cast<std::size_t>(w_);
+  }
+  int size() const { return n_; }
+  int words() const { return w_; }
+
+ private:
+  int n_, w_;
+  std::vector<Word> bits_;
+};
+
+// One subproblem: a local graph as rows of bits, searched by colouring bounds.
+class BitSearch {
+ public:
+  BitSearch(BitRows& g, long budget, long& nodes)
+      : n_(g.size()), w_(g.words()), g_(g), budget_(budget), nodes_(nodes) {}
   // Largest clique of the local graph if it has more than `lower` vertices; else empty.
   // Sets `complete` false when the node budget ran out.
   std::vector<int> solve(int lower, bool& complete) {
@@ -54,9 +70,7 @@ class BitSearch {
   }
 
  private:
-  Word* row(int v) {
-    return rows_.data() + static_cast<std::size_t>(v) * static_cast<std::size_t>(w_);
-  }
+  Word* row(int v) { return g_.row(v); }
 
   struct Level {
     std::vector<Word> P, U, Q;
@@ -120,11 +134,11 @@ class BitSearch {
   }
 
   int n_, w_;
+  BitRows& g_;
   long budget_;
   long& nodes_;
   int best_size_ = 0;
   std::vector<int> best_, current_;
-  std::vector<Word> rows_;
   std::vector<Level> levels_;
 };
 
@@ -135,14 +149,8 @@ class BitSearch {
 // takes or drops a vertex of largest degree.
 class MisSearch {
  public:
-  MisSearch(int n, long budget, long& nodes)
-      : n_(n), w_(words_for(n)), budget_(budget), nodes_(nodes) {
-    rows_.assign(static_cast<std::size_t>(n_) * static_cast<std::size_t>(w_), 0);
-  }
-  void connect(int a, int b) {
-    row(a)[b >> 6] |= Word(1) << (b & 63);
-    row(b)[a >> 6] |= Word(1) << (a & 63);
-  }
+  MisSearch(BitRows& g, long budget, long& nodes)
+      : n_(g.size()), w_(g.words()), g_(g), budget_(budget), nodes_(nodes) {}
   // Largest independent set if it has more than `lower` vertices; else empty.
   std::vector<int> solve(int lower, bool& complete) {
     best_size_ = lower;
@@ -154,9 +162,7 @@ class MisSearch {
   }
 
  private:
-  Word* row(int v) {
-    return rows_.data() + static_cast<std::size_t>(v) * static_cast<std::size_t>(w_);
-  }
+  Word* row(int v) { return g_.row(v); }
   int degree(int v, const std::vector<Word>& P) {
     const Word* r = row(v);
     int d = 0;
@@ -235,11 +241,11 @@ class MisSearch {
   }
 
   int n_, w_;
+  BitRows& g_;
   long budget_;
   long& nodes_;
   int best_size_ = 0;
   std::vector<int> best_, current_;
-  std::vector<Word> rows_;
 };
 
 // The subproblem of v: v's later neighbours in the degeneracy order that could be in a clique
@@ -285,7 +291,7 @@ std::vector<int> solve_subproblem(const detail::LevelCsr& g, const detail::CoreD
   const bool dense = n >= kDenseMinSize && edges >= kDenseFraction * 0.5 * n * (n - 1.0);
   std::vector<int> found;
   if (dense) {
-    MisSearch search(n, budget, nodes);
+    BitRows complement(n);
     std::vector<char> row(static_cast<std::size_t>(n));
     for (int i = 0; i < n; ++i) {
       std::fill(row.begin(), row.end(), 0);
@@ -295,20 +301,20 @@ std::vector<int> solve_subproblem(const detail::LevelCsr& g, const detail::CoreD
         if (j >= 0) row[static_cast<std::size_t>(j)] = 1;
       }
       for (int j = i + 1; j < n; ++j)
-        if (!row[static_cast<std::size_t>(j)]) search.connect(i, j);
+        if (!row[static_cast<std::size_t>(j)]) complement.connect(i, j);
     }
     for (int a : cand) local[static_cast<std::size_t>(a)] = -1;
-    found = search.solve(best - 1, complete);  // with v: > best
+    found = MisSearch(complement, budget, nodes).solve(best - 1, complete);  // with v: > best
   } else {
-    BitSearch search(n, budget, nodes);
+    BitRows local_graph(n);
     for (int i = 0; i < n; ++i)
       for (const int* w = g.begin(cand[static_cast<std::size_t>(i)]);
            w != g.end(cand[static_cast<std::size_t>(i)]); ++w) {
         const int j = local[static_cast<std::size_t>(*w)];
-        if (j > i) search.connect(i, j);
+        if (j > i) local_graph.connect(i, j);
       }
     for (int a : cand) local[static_cast<std::size_t>(a)] = -1;
-    found = search.solve(best - 1, complete);  // with v: > best
+    found = BitSearch(local_graph, budget, nodes).solve(best - 1, complete);  // with v: > best
   }
   if (found.empty()) return {};
   std::vector<int> clique{v};
@@ -316,7 +322,33 @@ std::vector<int> solve_subproblem(const detail::LevelCsr& g, const detail::CoreD
   return clique;
 }
 
+// The exact search from the clique `best`: one subproblem per vertex that could be in a larger
+// one, from the end of the degeneracy order (the densest part first, where large cliques are).
+std::vector<int> search_from(const detail::LevelCsr& csr, const detail::CoreDecomposition& cd,
+                             std::vector<int> best, long max_nodes, bool& optimal) {
+  optimal = true;
+  std::vector<int> local(static_cast<std::size_t>(csr.size()), -1);
+  long nodes = 0;
+  for (int i = csr.size() - 1; i >= 0 && optimal; --i) {
+    const int v = cd.order[static_cast<std::size_t>(i)];
+    const int size = static_cast<int>(best.size());
+    if (cd.core[static_cast<std::size_t>(v)] < size) continue;  // in no clique larger than best
+    std::vector<int> c = solve_subproblem(csr, cd, v, size, max_nodes, nodes, optimal, local);
+    if (c.size() > best.size()) best = std::move(c);
+  }
+  std::sort(best.begin(), best.end());
+  return best;
+}
+
 }  // namespace
+
+std::vector<int> detail::larger_clique(const PyramidGraph& g, int level, std::vector<int> best,
+                                       long max_nodes, bool& optimal) {
+  optimal = true;
+  if (g.vertices == 0) return best;
+  const detail::LevelCsr csr = detail::level_csr(g, level);
+  return search_from(csr, detail::core_decomposition(csr), std::move(best), max_nodes, optimal);
+}
 
 CliqueResult exact_max_clique(const PyramidGraph& g, int level, const CliqueParams& p) {
   const auto t0 = std::chrono::steady_clock::now();
@@ -327,22 +359,8 @@ CliqueResult exact_max_clique(const PyramidGraph& g, int level, const CliquePara
     const detail::LevelCsr csr = detail::level_csr(g, level);
     const detail::CoreDecomposition cd = detail::core_decomposition(csr);
     detail::Marks marks(g.vertices);
-    std::vector<int> best = detail::greedy_clique(csr, cd.core, 32, marks);
-    std::vector<int> local(static_cast<std::size_t>(g.vertices), -1);
-    long nodes = 0;
-    bool complete = true;
-    // From the end of the degeneracy order: the densest part first, where large cliques are.
-    for (int i = g.vertices - 1; i >= 0 && complete; --i) {
-      const int v = cd.order[static_cast<std::size_t>(i)];
-      const int size = static_cast<int>(best.size());
-      if (cd.core[static_cast<std::size_t>(v)] < size) continue;  // in no clique larger than best
-      std::vector<int> c =
-          solve_subproblem(csr, cd, v, size, p.exact_max_nodes, nodes, complete, local);
-      if (c.size() > best.size()) best = std::move(c);
-    }
-    std::sort(best.begin(), best.end());
-    r.vertices = std::move(best);
-    r.optimal = complete;
+    r.vertices = search_from(csr, cd, detail::greedy_clique(csr, cd.core, 32, marks),
+                             p.exact_max_nodes, r.optimal);
   }
   r.time_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();

@@ -1,52 +1,45 @@
 #include "pagor/kdtree.hpp"
 
 #include <algorithm>
-#include <numeric>
 
 namespace pagor {
 
-KdTree3f::KdTree3f(const std::vector<Eigen::Vector3f>& points, int leaf_size)
-    : points_(points), index_(points.size()) {
-  std::iota(index_.begin(), index_.end(), 0);
-  if (!points_.empty()) {
-    nodes_.reserve(2 * points_.size() / static_cast<std::size_t>(std::max(1, leaf_size)) + 1);
-    build(0, static_cast<int>(points_.size()), std::max(1, leaf_size));
+KdTree3f::KdTree3f(const std::vector<Eigen::Vector3f>& points, int leaf_size) {
+  std::vector<Item> items(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) items[i] = Item{points[i], static_cast<int>(i)};
+  if (!items.empty()) {
+    nodes_.reserve(2 * items.size() / static_cast<std::size_t>(std::max(1, leaf_size)) + 1);
+    build(items, 0, static_cast<int>(items.size()), std::max(1, leaf_size));
+  }
+  points_.resize(items.size());
+  index_.resize(items.size());
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    points_[i] = items[i].p;
+    index_[i] = items[i].index;
   }
 }
 
-int KdTree3f::build(int begin, int end, int leaf_size) {
+int KdTree3f::build(std::vector<Item>& items, int begin, int end, int leaf_size) {
   const int id = static_cast<int>(nodes_.size());
   nodes_.emplace_back();
   if (end - begin <= leaf_size) {
     nodes_[static_cast<std::size_t>(id)] = Node{0.0f, -1, begin, end};
     return id;
   }
-  // Split the widest axis at the median.
-  Eigen::Vector3f lo = points_[static_cast<std::size_t>(begin)], hi = lo;
+  // Split the widest axis at the median (points and their indices move together, in place).
+  Eigen::Vector3f lo = items[static_cast<std::size_t>(begin)].p, hi = lo;
   for (int i = begin + 1; i < end; ++i) {
-    lo = lo.cwiseMin(points_[static_cast<std::size_t>(i)]);
-    hi = hi.cwiseMax(points_[static_cast<std::size_t>(i)]);
+    lo = lo.cwiseMin(items[static_cast<std::size_t>(i)].p);
+    hi = hi.cwiseMax(items[static_cast<std::size_t>(i)].p);
   }
   int axis = 0;
   (hi - lo).maxCoeff(&axis);
   const int mid = begin + (end - begin) / 2;
-  // Sort a permutation, then apply it to points and indices together.
-  std::vector<int> order(static_cast<std::size_t>(end - begin));
-  std::iota(order.begin(), order.end(), begin);
-  std::nth_element(order.begin(), order.begin() + (mid - begin), order.end(), [&](int x, int y) {
-    return points_[static_cast<std::size_t>(x)][axis] < points_[static_cast<std::size_t>(y)][axis];
-  });
-  std::vector<Eigen::Vector3f> p(order.size());
-  std::vector<int> idx(order.size());
-  for (std::size_t k = 0; k < order.size(); ++k) {
-    p[k] = points_[static_cast<std::size_t>(order[k])];
-    idx[k] = index_[static_cast<std::size_t>(order[k])];
-  }
-  std::copy(p.begin(), p.end(), points_.begin() + begin);
-  std::copy(idx.begin(), idx.end(), index_.begin() + begin);
-  const float split = points_[static_cast<std::size_t>(mid)][axis];
-  const int left = build(begin, mid, leaf_size);
-  const int right = build(mid, end, leaf_size);
+  std::nth_element(items.begin() + begin, items.begin() + mid, items.begin() + end,
+                   [axis](const Item& x, const Item& y) { return x.p[axis] < y.p[axis]; });
+  const float split = items[static_cast<std::size_t>(mid)].p[axis];
+  const int left = build(items, begin, mid, leaf_size);
+  const int right = build(items, mid, end, leaf_size);
   nodes_[static_cast<std::size_t>(id)] = Node{split, axis, left, right};
   return id;
 }

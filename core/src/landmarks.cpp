@@ -1,12 +1,5 @@
 #include "pagor/landmarks.hpp"
 
-#include <pcl/features/fpfh.h>
-#include <pcl/features/normal_3d.h>
-#include <pcl/point_cloud.h>
-#include <pcl/point_types.h>
-#include <pcl/search/kdtree.h>
-#include <pcl/segmentation/extract_clusters.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -15,9 +8,9 @@
 #include <unordered_set>
 
 #include "pagor/errors.hpp"
-#include "pagor/kdtree.hpp"
 #include "pagor/voxel_grid.hpp"
 #include "pagor/work_budget.hpp"
+#include "point_features.hpp"
 
 namespace pagor {
 namespace {
@@ -27,29 +20,29 @@ double ms_since(Clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 }
 
-// The points relative to a local origin: PCL's normals and FPFH accumulate in float, which loses
-// a georeferenced cloud (300 km from the origin) to cancellation. The origin is the first point
+// The points relative to a local origin: normals and FPFH accumulate in float, which loses a
+// georeferenced cloud (300 km from the origin) to cancellation. The origin is the first point
 // rounded to a multiple of 1024 m, so the subtraction is exact in float and clouds within 512 m
-// of the origin are passed as they are. Only relative positions are used from the PCL cloud; the
-// landmarks' centroids come from `points` themselves.
-pcl::PointCloud<pcl::PointXYZ>::Ptr to_pcl(const std::vector<Eigen::Vector3f>& points) {
-  pcl::PointCloud<pcl::PointXYZ>::Ptr out(new pcl::PointCloud<pcl::PointXYZ>);
-  out->resize(points.size());
+// of the origin are used as they are. Only relative positions are used from these points; the
+// landmarks' centroids come from the input points themselves.
+std::vector<Eigen::Vector3f> local_points(const std::vector<Eigen::Vector3f>& points) {
+  std::vector<Eigen::Vector3f> out(points.size());
   Eigen::Vector3f origin = Eigen::Vector3f::Zero();
   if (!points.empty()) origin = (points.front() / 1024.0f).array().round().matrix() * 1024.0f;
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    const Eigen::Vector3f p = points[i] - origin;
-    (*out)[i] = pcl::PointXYZ(p.x(), p.y(), p.z());
-  }
+  for (std::size_t i = 0; i < points.size(); ++i) out[i] = points[i] - origin;
   return out;
 }
 
-// Indices of the points whose semantic id is one of `ids`.
+// Indices of the points whose semantic id is one of `ids` (a table over the 16-bit ids).
 std::vector<int> points_of_class(const PointCloud& cloud, const std::vector<std::uint32_t>& ids) {
-  std::unordered_set<std::uint32_t> wanted(ids.begin(), ids.end());
+  std::vector<char> wanted(1u << 16, 0);
+  for (std::uint32_t id : ids)
+    if (id < wanted.size()) wanted[id] = 1;
   std::vector<int> out;
-  for (std::size_t i = 0; i < cloud.size(); ++i)
-    if (wanted.count(semantic_id(cloud.labels[i]))) out.push_back(static_cast<int>(i));
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    const std::uint32_t id = semantic_id(cloud.labels[i]);
+    if (id < wanted.size() && wanted[id]) out.push_back(static_cast<int>(i));
+  }
   return out;
 }
 
@@ -67,33 +60,23 @@ void add_clusters(int class_index, const ClassParams& p, const VoxelDownsample& 
   check_radius_work(ds.points, p.cluster_tolerance,
                     "landmarks.classes[" + std::to_string(class_index) + "].cluster_tolerance",
                     "class '" + p.name + "'");
-  auto cloud = to_pcl(ds.points);
-  pcl::search::KdTree<pcl::PointXYZ>::Ptr tree(new pcl::search::KdTree<pcl::PointXYZ>);
-  tree->setInputCloud(cloud);
-  pcl::EuclideanClusterExtraction<pcl::PointXYZ> ec;
-  ec.setClusterTolerance(p.cluster_tolerance);
-  ec.setMinClusterSize(p.min_points);
-  ec.setMaxClusterSize(p.max_points);
-  ec.setSearchMethod(tree);
-  ec.setInputCloud(cloud);
-  std::vector<pcl::PointIndices> clusters;
-  ec.extract(clusters);
-
-  for (const auto& c : clusters) {
+  const auto clusters = detail::euclidean_clusters(local_points(ds.points), p.cluster_tolerance,
+                                                   p.min_points, p.max_points);
+  for (const std::vector<int>& c : clusters) {
     Landmark lm;
     lm.class_index = class_index;
     lm.kind = LandmarkKind::cluster;
     Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-    for (int v : c.indices) mean += ds.points[static_cast<std::size_t>(v)].cast<double>();
-    mean /= static_cast<double>(c.indices.size());
+    for (int v : c) mean += ds.points[static_cast<std::size_t>(v)].cast<double>();
+    mean /= static_cast<double>(c.size());
     Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
-    for (int v : c.indices) {
+    for (int v : c) {
       const Eigen::Vector3d d = ds.points[static_cast<std::size_t>(v)].cast<double>() - mean;
       cov += d * d.transpose();
     }
     lm.centroid = mean;
-    lm.covariance = cov / static_cast<double>(c.indices.size());
-    for (int v : c.indices) {
+    lm.covariance = cov / static_cast<double>(c.size());
+    for (int v : c) {
       const auto& m = members[static_cast<std::size_t>(v)];
       lm.point_indices.insert(lm.point_indices.end(), m.begin(), m.end());
     }
@@ -138,32 +121,15 @@ void add_keypoints(int class_index, const ClassParams& p, const VoxelDownsample&
   check_radius_work(ds.points, p.feature_radius,
                     "landmarks.classes[" + std::to_string(class_index) + "].feature_radius",
                     "class '" + p.name + "'");
-  auto cloud = to_pcl(ds.points);
-  pcl::search::KdTree<pcl::PointXYZ>::Ptr tree(new pcl::search::KdTree<pcl::PointXYZ>);
-  tree->setInputCloud(cloud);
-  pcl::PointCloud<pcl::Normal>::Ptr normals(new pcl::PointCloud<pcl::Normal>);
-  pcl::NormalEstimation<pcl::PointXYZ, pcl::Normal> ne;
-  ne.setInputCloud(cloud);
-  ne.setSearchMethod(tree);
-  ne.setRadiusSearch(p.normal_radius);
-  ne.compute(*normals);
-
+  const std::vector<Eigen::Vector3f> local = local_points(ds.points);
+  const std::vector<Eigen::Vector3f> normals = detail::estimate_normals(local, p.normal_radius);
   const std::vector<int> keypoints = spread_keypoints(ds, p.voxel_size, p.max_keypoints);
-  pcl::IndicesPtr indices(new std::vector<int>(keypoints));
-  pcl::PointCloud<pcl::FPFHSignature33> features;
-  pcl::FPFHEstimation<pcl::PointXYZ, pcl::Normal, pcl::FPFHSignature33> fe;
-  fe.setInputCloud(cloud);
-  fe.setIndices(indices);
-  fe.setInputNormals(normals);
-  fe.setSearchMethod(tree);
-  fe.setRadiusSearch(p.feature_radius);
-  fe.compute(features);
-
+  const std::vector<detail::Fpfh> features =
+      detail::compute_fpfh(local, normals, keypoints, p.feature_radius);
   for (std::size_t k = 0; k < keypoints.size(); ++k) {
     const auto v = static_cast<std::size_t>(keypoints[k]);
-    const auto& n = (*normals)[v];
-    const float* h = features[k].histogram;
-    if (!std::isfinite(n.normal_x) ||
+    const float* h = features[k].data();
+    if (!normals[v].allFinite() ||
         !std::all_of(h, h + 33, [](float x) { return std::isfinite(x); }))
       continue;  // too few neighbours for a normal or a descriptor
     if (std::all_of(h, h + 33, [](float x) { return x == 0.0f; })) continue;
@@ -224,14 +190,27 @@ double estimate_spacing(const std::vector<Eigen::Vector3f>& points,
   for (std::size_t i = 0; i < n; i += thin)
     sample.push_back(points[subset ? static_cast<std::size_t>((*subset)[i]) : i]);
   if (sample.size() < 2) return 0.0;
-  const KdTree3f tree(sample);
   const std::size_t stride = std::max<std::size_t>(1, sample.size() / kQueries);
+  // Each query's nearest neighbour on a grid whose cell grows until more than half of the queries
+  // have theirs within one cell: the others are farther, so the median is then exact. The first
+  // cell is an eighth of the spacing of a square surface of the sample's extent.
+  Eigen::Vector3f lo = sample[0], hi = lo;
+  for (const auto& p : sample) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  double cell = std::max(1e-3, static_cast<double>((hi - lo).maxCoeff()) /
+                                   std::sqrt(static_cast<double>(sample.size())) / 8);
   std::vector<float> d;
-  for (std::size_t i = 0; i < sample.size(); i += stride) {
-    const auto [index, d2] = tree.nearest(sample[i], HUGE_VALF, static_cast<int>(i));
-    if (index >= 0) d.push_back(std::sqrt(d2));
+  for (;;) {
+    const RadiusGrid grid(sample, cell);
+    d.clear();
+    std::size_t found = 0;
+    for (std::size_t i = 0; i < sample.size(); i += stride) {
+      const auto [index, d2] = grid.nearest(sample[i], grid.cell(), static_cast<int>(i));
+      d.push_back(index >= 0 ? std::sqrt(d2) : HUGE_VALF);
+      found += index >= 0;
+    }
+    if (found > d.size() / 2) break;
+    cell *= 2;
   }
-  if (d.empty()) return 0.0;
   std::nth_element(d.begin(), d.begin() + static_cast<long>(d.size() / 2), d.end());
   return d[d.size() / 2] / std::sqrt(static_cast<double>(thin));
 }
@@ -281,8 +260,17 @@ ClassParams params_for_spacing(const ClassParams& p, double spacing, const Landm
 std::string label_scheme_mismatch(const PointCloud& cloud, const LabelScheme& scheme,
                                   const LandmarkParams& params) {
   if (!cloud.has_labels() || cloud.empty()) return {};
+  std::vector<std::size_t> counts(1u << 16, 0);
   std::map<std::uint32_t, std::size_t> histogram;
-  for (std::uint32_t l : cloud.labels) ++histogram[semantic_id(l)];
+  for (std::uint32_t l : cloud.labels) {
+    const std::uint32_t id = semantic_id(l);
+    if (id < counts.size())
+      ++counts[id];
+    else
+      ++histogram[id];
+  }
+  for (std::uint32_t id = 0; id < counts.size(); ++id)
+    if (counts[id]) histogram[id] = counts[id];
   // Fraction of the points whose ids belong to the classes `wanted` accepts.
   const auto share = [&](const LabelScheme& s, const auto& wanted) {
     std::unordered_set<std::uint32_t> ids;
@@ -372,12 +360,13 @@ void add_fallback_landmarks(const PointCloud& cloud, const LabelScheme& scheme,
   const FallbackParams& fb = params.fallback;
   std::vector<int> subset;
   if (cloud.has_labels()) {
-    std::unordered_set<std::uint32_t> ground;
+    std::vector<char> ground(1u << 16, 0);  // over the 16-bit semantic ids
     for (const auto& name : fb.ground_classes)
       if (scheme.find(name) >= 0)
-        for (std::uint32_t id : scheme.ids_of(name)) ground.insert(id);
+        for (std::uint32_t id : scheme.ids_of(name))
+          if (id < ground.size()) ground[id] = 1;
     for (std::size_t i = 0; i < cloud.size(); ++i)
-      if (!ground.count(semantic_id(cloud.labels[i]))) subset.push_back(static_cast<int>(i));
+      if (!ground[semantic_id(cloud.labels[i])]) subset.push_back(static_cast<int>(i));
   } else if (!cloud.empty()) {
     const float top = ground_layer_top(cloud.points, static_cast<float>(fb.ground_height));
     for (std::size_t i = 0; i < cloud.size(); ++i)

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <numeric>
 #include <string>
 #include <unordered_map>
 
@@ -104,6 +105,111 @@ VoxelDownsample voxel_downsample(const std::vector<Eigen::Vector3f>& points, dou
     bin<WideKey, WideHash>(n, point, key, out);
   }
   return out;
+}
+
+namespace {
+constexpr std::uint64_t kEmpty = ~std::uint64_t(0);
+constexpr float kMaxCells = 1048576.0f;  // 2^20 cells per axis, keys of 3 x 21 bits
+
+std::uint64_t hash_key(std::uint64_t k) {
+  k ^= k >> 31;
+  k *= 0x9E3779B97F4A7C15ull;
+  return k ^ (k >> 29);
+}
+}  // namespace
+
+// Cells are numbered from 1 so that the neighbours of the lowest cell have valid keys.
+std::uint64_t RadiusGrid::key_of(const Eigen::Vector3f& p) const {
+  const auto axis = [&](int a) {
+    const float c = std::floor((p[a] - lo_[a]) / cell_);  // queries off the grid are clamped
+    return static_cast<std::uint64_t>(std::min(std::max(0.0f, c), kMaxCells + 1.0f)) + 1;
+  };
+  return (axis(0) << 42) | (axis(1) << 21) | axis(2);
+}
+
+int RadiusGrid::find(std::uint64_t key) const {
+  for (std::uint64_t s = hash_key(key) & mask_;; s = (s + 1) & mask_) {
+    if (slots_[s] == key) return slot_cell_[s];
+    if (slots_[s] == kEmpty) return -1;
+  }
+}
+
+RadiusGrid::RadiusGrid(const std::vector<Eigen::Vector3f>& points, double cell)
+    : cell_(static_cast<float>(cell)) {
+  if (!(cell > 0)) throw InputError("radius grid: cell size must be > 0");
+  const std::size_t n = points.size();
+  if (n == 0) return;
+  lo_ = points[0];
+  Eigen::Vector3f hi = lo_;
+  for (const auto& p : points) {
+    lo_ = lo_.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  if (!lo_.allFinite() || !hi.allFinite())
+    throw InputError("radius grid: a coordinate is not finite");
+  cell_ = std::max(cell_, (hi - lo_).maxCoeff() / kMaxCells);
+  // Cells numbered in order of first appearance through the hash table, then the points
+  // scattered cell by cell (a counting sort: linear in the points).
+  std::size_t capacity = 16;
+  while (capacity < 2 * n) capacity *= 2;
+  mask_ = capacity - 1;
+  slots_.assign(capacity, kEmpty);
+  slot_cell_.assign(capacity, -1);
+  std::vector<int> cell_of(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::uint64_t key = key_of(points[i]);
+    std::uint64_t s = hash_key(key) & mask_;
+    while (slots_[s] != kEmpty && slots_[s] != key) s = (s + 1) & mask_;
+    if (slots_[s] == kEmpty) {
+      slots_[s] = key;
+      slot_cell_[s] = static_cast<int>(start_.size());
+      start_.push_back(0);
+    }
+    cell_of[i] = slot_cell_[s];
+    ++start_[static_cast<std::size_t>(cell_of[i])];
+  }
+  int total = 0;  // counts -> starts
+  for (int& c : start_) {
+    const int count = c;
+    c = total;
+    total += count;
+  }
+  start_.push_back(total);
+  std::vector<int> fill(start_.begin(), start_.end() - 1);
+  sorted_.resize(n);
+  index_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto at = static_cast<std::size_t>(fill[static_cast<std::size_t>(cell_of[i])]++);
+    sorted_[at] = points[i];
+    index_[at] = static_cast<int>(i);
+  }
+}
+
+std::pair<int, float> RadiusGrid::nearest(const Eigen::Vector3f& q, float radius,
+                                          int exclude) const {
+  std::pair<int, float> best{-1, radius * radius};
+  for_cells_around(q, [&](int begin, int end) {
+    for (int i = begin; i < end; ++i) {
+      const float d2 = (sorted_[static_cast<std::size_t>(i)] - q).squaredNorm();
+      if (d2 < best.second && index_[static_cast<std::size_t>(i)] != exclude)
+        best = {index_[static_cast<std::size_t>(i)], d2};
+    }
+  });
+  return best;
+}
+
+void RadiusGrid::within(const Eigen::Vector3f& q, float radius, std::vector<int>& index,
+                        std::vector<float>& distance_sq) const {
+  const float r2 = radius * radius;
+  for_cells_around(q, [&](int begin, int end) {
+    for (int i = begin; i < end; ++i) {
+      const float d2 = (sorted_[static_cast<std::size_t>(i)] - q).squaredNorm();
+      if (d2 < r2) {
+        index.push_back(index_[static_cast<std::size_t>(i)]);
+        distance_sq.push_back(d2);
+      }
+    }
+  });
 }
 
 }  // namespace pagor

@@ -32,7 +32,11 @@ class KdTree3f {
     int axis = -1;     // 0, 1, 2; -1 for a leaf
     int a = 0, b = 0;  // inner: children; leaf: [a, b) range of points_
   };
-  int build(int begin, int end, int leaf_size);
+  struct Item {
+    Eigen::Vector3f p;
+    int index;
+  };
+  int build(std::vector<Item>& items, int begin, int end, int leaf_size);
 
   std::vector<Eigen::Vector3f> points_;  // reordered so that each leaf is contiguous
   std::vector<int> index_;               // original index of points_[i]

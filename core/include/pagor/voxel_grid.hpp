@@ -1,8 +1,11 @@
 #pragma once
 /// \file voxel_grid.hpp
-/// Voxel downsampling that remembers which voxel every input point fell into.
+/// Voxel downsampling that remembers which voxel every input point fell into, and a fixed-radius
+/// neighbour search over points hashed on a grid.
 
 #include <Eigen/Core>
+#include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace pagor {
@@ -23,5 +26,56 @@ struct VoxelDownsample {
 /// Throws InputError when a lattice index would exceed 2^52 or a coordinate is not finite.
 VoxelDownsample voxel_downsample(const std::vector<Eigen::Vector3f>& points, double voxel_size,
                                  const std::vector<int>* subset = nullptr);
+
+/// Fixed-radius neighbour search: the points hashed on cells of a grid at least as coarse as the
+/// search radius, so a search looks at the 27 cells around the query (what a kd-tree's radius
+/// search does with a tree walk). Points are kept relative to their lowest corner in float.
+class RadiusGrid {
+ public:
+  /// Hashes `points` on cells of `cell` [m] (> 0); the cell grows when the cloud is more than
+  /// 2^20 cells wide, which keeps every search correct and only scans more points.
+  RadiusGrid(const std::vector<Eigen::Vector3f>& points, double cell);
+
+  /// The points strictly closer than `radius` [m] (at most the cell) to `q`, appended to `index`
+  /// (input indices) and `distance_sq` [m^2], in no particular order; a point of the input
+  /// finds itself at distance 0.
+  void within(const Eigen::Vector3f& q, float radius, std::vector<int>& index,
+              std::vector<float>& distance_sq) const;
+
+  /// The point nearest to `q` strictly closer than `radius` [m] (at most the cell), skipping the
+  /// input point `exclude`: its input index and squared distance, or -1 and radius^2.
+  std::pair<int, float> nearest(const Eigen::Vector3f& q, float radius, int exclude = -1) const;
+
+  /// Cell size actually used [m].
+  float cell() const { return cell_; }
+
+ private:
+  std::uint64_t key_of(const Eigen::Vector3f& p) const;
+  int find(std::uint64_t key) const;  // cell number, or -1
+  // Calls f(begin, end) with the range of sorted_ of each occupied cell of the 27 around q.
+  template <class F>
+  void for_cells_around(const Eigen::Vector3f& q, F&& f) const {
+    if (sorted_.empty()) return;
+    const std::uint64_t center = key_of(q);
+    constexpr std::uint64_t kAxis = (std::uint64_t(1) << 21) - 1;
+    const std::uint64_t c[3] = {center >> 42, (center >> 21) & kAxis, center & kAxis};
+    for (std::uint64_t x = c[0] - 1; x <= c[0] + 1; ++x)
+      for (std::uint64_t y = c[1] - 1; y <= c[1] + 1; ++y)
+        for (std::uint64_t z = c[2] - 1; z <= c[2] + 1; ++z) {
+          const int cell = find((x << 42) | (y << 21) | z);
+          if (cell >= 0)
+            f(start_[static_cast<std::size_t>(cell)], start_[static_cast<std::size_t>(cell) + 1]);
+        }
+  }
+
+  float cell_ = 1.0f;
+  Eigen::Vector3f lo_ = Eigen::Vector3f::Zero();
+  std::vector<Eigen::Vector3f> sorted_;  // the points, cell by cell
+  std::vector<int> index_;               // input index of sorted_[i]
+  std::vector<int> start_;               // cell c holds sorted_[start_[c], start_[c + 1])
+  std::vector<std::uint64_t> slots_;     // open-addressing table of cell keys
+  std::vector<int> slot_cell_;           // the cell of each slot
+  std::uint64_t mask_ = 0;
+};
 
 }  // namespace pagor

@@ -1,0 +1,234 @@
+#include "point_features.hpp"
+
+#include <pcl/common/centroid.h>
+#include <pcl/features/normal_3d.h>
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "pagor/voxel_grid.hpp"
+
+namespace pagor::detail {
+namespace {
+
+constexpr int kBins = 11;  // per feature, as PCL's FPFH
+
+// PCL's computePairFeatures (pcl/features/pfh_tools.h) on 4-vectors with w = 0, so that every
+// operation is the one PCL performs. The order of the pair is decided as PCL does by comparing
+// acos(|cos|) of the two normals with the line; as acos decreases, |cos| decides the same except
+// within a few ulps. There (and for NaN normals) the test is PCL's, and `tie` is set: the pair
+// seen from the other point may then differ, so the caller computes it again.
+struct PairFeatures {
+  float f1 = 0, f2 = 0, f3 = 0;
+};
+PairFeatures pair_features(const Eigen::Vector4f& p1, const Eigen::Vector4f& n1,
+                           const Eigen::Vector4f& p2, const Eigen::Vector4f& n2, bool exact,
+                           bool* tie) {
+  PairFeatures f;
+  Eigen::Vector4f dp2p1 = p2 - p1;
+  dp2p1[3] = 0.0f;
+  const float f4 = dp2p1.norm();
+  if (f4 == 0.0f) return f;
+  Eigen::Vector4f n1_copy = n1, n2_copy = n2;
+  const float angle1 = n1_copy.dot(dp2p1) / f4;
+  const float angle2 = n2_copy.dot(dp2p1) / f4;
+  const float a1 = std::fabs(angle1), a2 = std::fabs(angle2);
+  bool swap;
+  if (exact || !(std::fabs(a1 - a2) > 1e-6f)) {  // also NaN normals: PCL's own test
+    swap = std::acos(a1) > std::acos(a2);
+    if (tie) *tie = true;
+  } else {
+    swap = a1 < a2;
+  }
+  if (swap) {
+    n1_copy = n2;
+    n2_copy = n1;
+    dp2p1 *= -1;
+    f.f3 = -angle2;
+  } else {
+    f.f3 = angle1;
+  }
+  Eigen::Vector4f v = dp2p1.cross3(n1_copy);
+  v[3] = 0.0f;
+  const float v_norm = v.norm();
+  if (v_norm == 0.0f) return PairFeatures{};
+  v /= v_norm;
+  Eigen::Vector4f w = n1_copy.cross3(v);
+  v[3] = 0.0f;
+  f.f2 = v.dot(n2_copy);
+  w[3] = 0.0f;
+  f.f1 = std::atan2(w.dot(n2_copy), n1_copy.dot(n2_copy));
+  return f;
+}
+
+// PCL's binning: floor, then clamped to [0, bins); NaN (a NaN normal) lands in bin 0, as the
+// conversion of NaN to int (INT_MIN) does in PCL.
+int bin_of(double x) {
+  if (!(x >= 0.0)) return 0;
+  return std::min(kBins - 1, static_cast<int>(std::floor(x)));
+}
+std::array<int, 3> bins_of(const PairFeatures& f) {
+  const float d_pi = 1.0f / (2.0f * static_cast<float>(M_PI));
+  return {bin_of(kBins * ((f.f1 + M_PI) * d_pi)), kBins + bin_of(kBins * ((f.f2 + 1.0) * 0.5)),
+          2 * kBins + bin_of(kBins * ((f.f3 + 1.0) * 0.5))};
+}
+
+Eigen::Vector4f point4(const Eigen::Vector3f& p) {
+  return Eigen::Vector4f(p.x(), p.y(), p.z(), 1.0f);
+}
+Eigen::Vector4f normal4(const Eigen::Vector3f& n) {
+  return Eigen::Vector4f(n.x(), n.y(), n.z(), 0.0f);
+}
+
+}  // namespace
+
+std::vector<std::vector<int>> euclidean_clusters(const std::vector<Eigen::Vector3f>& points,
+                                                 double tolerance, int min_size, int max_size) {
+  std::vector<std::vector<int>> clusters;
+  if (points.empty() || !(tolerance > 0)) return clusters;
+  const RadiusGrid grid(points, tolerance);
+  const float r = static_cast<float>(tolerance);
+  std::vector<char> seen(points.size(), 0);
+  std::vector<int> queue, found;
+  std::vector<float> d2;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (seen[i]) continue;
+    queue.assign(1, static_cast<int>(i));
+    seen[i] = 1;
+    for (std::size_t k = 0; k < queue.size(); ++k) {
+      found.clear();
+      d2.clear();
+      grid.within(points[static_cast<std::size_t>(queue[k])], r, found, d2);
+      for (int j : found)
+        if (!seen[static_cast<std::size_t>(j)]) {
+          seen[static_cast<std::size_t>(j)] = 1;
+          queue.push_back(j);
+        }
+    }
+    const int size = static_cast<int>(queue.size());
+    if (size < min_size || size > max_size) continue;
+    std::sort(queue.begin(), queue.end());
+    clusters.push_back(queue);
+  }
+  std::stable_sort(clusters.begin(), clusters.end(),
+                   [](const auto& a, const auto& b) { return a.size() > b.size(); });
+  return clusters;
+}
+
+std::vector<Eigen::Vector3f> estimate_normals(const std::vector<Eigen::Vector3f>& points,
+                                              double radius) {
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  std::vector<Eigen::Vector3f> normals(points.size(), Eigen::Vector3f::Constant(nan));
+  if (points.empty()) return normals;
+  pcl::PointCloud<pcl::PointXYZ> cloud;
+  cloud.resize(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i)
+    cloud[i] = pcl::PointXYZ(points[i].x(), points[i].y(), points[i].z());
+  const RadiusGrid grid(points, radius);
+  pcl::Indices found;
+  std::vector<float> d2;
+  std::vector<std::pair<float, int>> order;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    found.clear();
+    d2.clear();
+    grid.within(points[i], static_cast<float>(radius), found, d2);
+    // In FLANN's order (by distance, then index): the covariance sums in float, and a nearly
+    // degenerate neighbourhood's normal depends on the order of the sum.
+    order.clear();
+    for (std::size_t k = 0; k < found.size(); ++k) order.emplace_back(d2[k], found[k]);
+    std::sort(order.begin(), order.end());
+    for (std::size_t k = 0; k < found.size(); ++k) found[k] = order[k].second;
+    EIGEN_ALIGN16 Eigen::Matrix3f covariance;
+    Eigen::Vector4f centroid;
+    if (found.size() < 3 ||
+        pcl::computeMeanAndCovarianceMatrix(cloud, found, covariance, centroid) == 0)
+      continue;
+    float nx, ny, nz, curvature;
+    pcl::solvePlaneParameters(covariance, nx, ny, nz, curvature);
+    pcl::flipNormalTowardsViewpoint(cloud[i], 0.0f, 0.0f, 0.0f, nx, ny, nz);
+    normals[i] = Eigen::Vector3f(nx, ny, nz);
+  }
+  return normals;
+}
+
+std::vector<Fpfh> compute_fpfh(const std::vector<Eigen::Vector3f>& points,
+                               const std::vector<Eigen::Vector3f>& normals,
+                               const std::vector<int>& keypoints, double radius) {
+  std::vector<Fpfh> out(keypoints.size());
+  if (points.empty() || keypoints.empty()) return out;
+  const RadiusGrid grid(points, radius);
+  const float r = static_cast<float>(radius);
+  // The keypoints' neighbourhoods; every point in one needs its SPFH (a row).
+  std::vector<std::vector<int>> near(keypoints.size());
+  std::vector<std::vector<float>> near_d2(keypoints.size());
+  std::vector<int> row(points.size(), -1);
+  for (std::size_t k = 0; k < keypoints.size(); ++k) {
+    grid.within(points[static_cast<std::size_t>(keypoints[k])], r, near[k], near_d2[k]);
+    for (int j : near[k]) row[static_cast<std::size_t>(j)] = 0;
+  }
+  int rows = 0;
+  for (int& x : row)
+    if (x == 0) x = rows++;
+  // SPFH: bin counts, each pair's features computed once for both of its points when both need
+  // them (they are symmetric), then scaled by 100 / (neighbours - 1) as PCL's increments.
+  std::vector<float> hist(static_cast<std::size_t>(rows) * 33, 0.0f);
+  std::vector<int> found;
+  std::vector<float> d2;
+  const auto add = [&](int p, const PairFeatures& f) {
+    float* h = hist.data() + static_cast<std::size_t>(row[static_cast<std::size_t>(p)]) * 33;
+    for (int b : bins_of(f)) h[b] += 1.0f;
+  };
+  std::vector<int> keypoint_of(points.size(), -1);  // keypoints' lists are searched already
+  for (std::size_t k = 0; k < keypoints.size(); ++k)
+    keypoint_of[static_cast<std::size_t>(keypoints[k])] = static_cast<int>(k);
+  for (std::size_t p = 0; p < points.size(); ++p) {
+    if (row[p] < 0) continue;
+    const std::vector<int>* list = &found;
+    if (keypoint_of[p] >= 0) {
+      list = &near[static_cast<std::size_t>(keypoint_of[p])];
+    } else {
+      found.clear();
+      d2.clear();
+      grid.within(points[p], r, found, d2);
+    }
+    const Eigen::Vector4f pp = point4(points[p]), np = normal4(normals[p]);
+    for (int q : *list) {
+      const auto uq = static_cast<std::size_t>(q);
+      if (uq == p || (row[uq] >= 0 && uq < p)) continue;  // itself, or done from q's side
+      bool tie = false;
+      const Eigen::Vector4f pq = point4(points[uq]), nq = normal4(normals[uq]);
+      const PairFeatures f = pair_features(pp, np, pq, nq, false, &tie);
+      add(static_cast<int>(p), f);
+      if (row[uq] >= 0) add(q, tie ? pair_features(pq, nq, pp, np, true, nullptr) : f);
+    }
+    if (list->size() > 1) {
+      const float incr = 100.0f / static_cast<float>(list->size() - 1);
+      float* h = hist.data() + static_cast<std::size_t>(row[p]) * 33;
+      for (int b = 0; b < 33; ++b) h[b] *= incr;
+    }
+  }
+  // FPFH: the neighbours' SPFH weighted by 1 / squared distance, each third scaled to sum 100.
+  for (std::size_t k = 0; k < keypoints.size(); ++k) {
+    float fpfh[33] = {};
+    for (std::size_t a = 0; a < near[k].size(); ++a) {
+      if (near_d2[k][a] == 0) continue;
+      const float weight = 1.0f / near_d2[k][a];
+      const float* h =
+          hist.data() + static_cast<std::size_t>(row[static_cast<std::size_t>(near[k][a])]) * 33;
+      for (int b = 0; b < 33; ++b) fpfh[b] += h[b] * weight;
+    }
+    for (int t = 0; t < 3; ++t) {
+      double sum = 0;
+      for (int b = t * kBins; b < (t + 1) * kBins; ++b) sum += fpfh[b];
+      if (sum != 0) sum = 100.0 / sum;
+      for (int b = t * kBins; b < (t + 1) * kBins; ++b)
+        out[k][static_cast<std::size_t>(b)] = static_cast<float>(fpfh[b] * sum);
+    }
+  }
+  return out;
+}
+
+}  // namespace pagor::detail
