@@ -175,6 +175,7 @@ void bottom_panel_switch(UiContext& ui) {
   ui::radio("diagnosis##bottom", &which, 1,
             "Which stage failed and why, against the ground truth (needs one)");
   ui.state.view.diagnosis.panel = which == 1;
+  ImGui::SameLine(0.0f, 24.0f);  // the panel's first line follows on this one
 }
 
 void diagnosis_panel(UiContext& ui) {
