@@ -112,8 +112,8 @@ int levels_table(const Diagnosis& d, int shown) {
   const float h = ImGui::GetTextLineHeightWithSpacing() * (static_cast<float>(d.levels.size()) + 3);
   if (!ImGui::BeginTable("diag_levels", 10, flags, ImVec2(0, h))) return -1;
   ImGui::TableSetupScrollFreeze(1, 1);
-  for (const char* c : {"level", "\xce\xb5", "true", "consist.", "clique (true)",
-                        "prec./rec. [%]", "errors", "D [m]", "GNC (true)", "verts"})
+  for (const char* c : {"level", "\xce\xb5", "true", "consist.", "clique (true)", "prec./rec. [%]",
+                        "errors", "D [m]", "GNC (true)", "verts"})
     ImGui::TableSetupColumn(c);
   ImGui::TableHeadersRow();
   for (std::size_t l = 0; l < d.levels.size(); ++l)
