@@ -46,6 +46,9 @@ PairOutcome resumed_outcome(const PairEntry& entry, const nlohmann::json& line) 
   if (a != line.end() && a->is_object()) o.accepted = a->value("accepted", false);
   const auto level = line.find("selected_level");
   if (level != line.end() && level->is_number_integer()) o.selected_level = level->get<int>();
+  const auto diagnosis = line.find("diagnosis");
+  if (diagnosis != line.end() && diagnosis->is_object())
+    o.diagnosis = diagnosis->value("verdict", std::string());
   o.report_json = line.dump();
   return o;
 }
@@ -55,14 +58,16 @@ void print_row(const PairOutcome& o) {
   const char* truth = o.negative ? "neg" : (o.has_ground_truth ? (o.success ? "yes" : "no") : "-");
   char time[16] = "resumed";
   if (o.timed) std::snprintf(time, sizeof(time), "%.1f", o.total_ms);
+  const char* diagnosis = o.diagnosis.empty() ? "-" : o.diagnosis.c_str();
   if (o.error)
-    std::printf("%-14s %6d %10.2f %11.2f %8s %6s %8s %10s\n", o.name.c_str(), o.selected_level,
+    std::printf("%-14s %6d %10.2f %11.2f %8s %6s %8s %10s  %s\n", o.name.c_str(), o.selected_level,
                 o.error->translation, o.error->rotation_deg, truth, o.upper_bound ? "yes" : "no",
-                verdict, time);
+                verdict, time, diagnosis);
   else
-    std::printf("%-14s %6s %10s %11s %8s %6s %8s %10s\n", o.name.c_str(),
+    std::printf("%-14s %6s %10s %11s %8s %6s %8s %10s  %s\n", o.name.c_str(),
                 o.selected_level >= 0 ? std::to_string(o.selected_level).c_str() : "-", "-", "-",
-                truth, o.has_ground_truth ? (o.upper_bound ? "yes" : "no") : "-", verdict, time);
+                truth, o.has_ground_truth ? (o.upper_bound ? "yes" : "no") : "-", verdict, time,
+                diagnosis);
   std::fflush(stdout);
 }
 
@@ -86,6 +91,25 @@ void print_summary(const BenchmarkSummary& s, const Config& config) {
     std::printf("%-18s %10.2f %12.2f\n", stage_name(static_cast<Stage>(i)),
                 s.mean_ms[static_cast<std::size_t>(i)], s.median_ms[static_cast<std::size_t>(i)]);
   std::printf("%-18s %10.2f %12.2f\n", "total", s.mean_total_ms, s.median_total_ms);
+}
+
+// How many pairs each diagnosis verdict got, e.g. "diagnosis: 9 success, 1 clique-missed".
+void print_diagnosis_counts(const std::vector<PairOutcome>& outcomes) {
+  std::vector<std::pair<std::string, int>> counts;
+  for (const PairOutcome& o : outcomes) {
+    if (o.diagnosis.empty()) continue;
+    auto it = std::find_if(counts.begin(), counts.end(),
+                           [&](const auto& c) { return c.first == o.diagnosis; });
+    if (it == counts.end())
+      counts.push_back({o.diagnosis, 1});
+    else
+      ++it->second;
+  }
+  if (counts.empty()) return;
+  std::printf("diagnosis (pairs with ground truth):");
+  for (std::size_t i = 0; i < counts.size(); ++i)
+    std::printf("%s %d %s", i ? "," : "", counts[i].second, counts[i].first.c_str());
+  std::printf("\n");
 }
 
 }  // namespace
@@ -114,8 +138,8 @@ int run_bench(const Args& args) {
                     fingerprint(set.origin + "\n" + config_to_json(config, -1)));
 
   Pipeline pipeline(config, args.get_int("threads", 1));
-  std::printf("%-14s %6s %10s %11s %8s %6s %8s %10s\n", "pair", "level", "t err [m]", "r err [deg]",
-              "success", "bound", "verdict", "time [ms]");
+  std::printf("%-14s %6s %10s %11s %8s %6s %8s %10s  %s\n", "pair", "level", "t err [m]",
+              "r err [deg]", "success", "bound", "verdict", "time [ms]", "diagnosis");
   std::vector<PairOutcome> outcomes;
   const bool progress = isatty(STDERR_FILENO);  // in a log it would run into the next line
   for (std::size_t k = 0; k < set.pairs.size(); ++k) {
@@ -145,6 +169,7 @@ int run_bench(const Args& args) {
     throw InputError(set.origin +
                      ": no pair could be loaded (first: " + outcomes.front().load_error + ")");
   print_summary(s, config);
+  print_diagnosis_counts(outcomes);
   const auto resumed = std::count_if(outcomes.begin(), outcomes.end(),
                                      [](const PairOutcome& o) { return !o.timed; });
   if (resumed > 0)

@@ -4,8 +4,10 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <nlohmann/json.hpp>
 
 #include "command.hpp"
+#include "pagor/diagnosis.hpp"
 #include "pagor/errors.hpp"
 #include "pagor/evaluation.hpp"
 #include "pagor/pipeline.hpp"
@@ -150,9 +152,16 @@ int run_register(const Args& args) {
     warn(w);
   }
   print_registration(pipeline);
+  const std::optional<Diagnosis> diagnosis = diagnose(pipeline);
+  if (diagnosis)
+    std::printf("diagnosis: %s: %s\n", verdict_sentence(diagnosis->verdict),
+                diagnosis->explanation.c_str());
   if (args.has("json")) {
-    write_text_file(args.get("json"),
-                    registration_report_json(pipeline, pair.source_name, pair.target_name) + "\n");
+    auto report = nlohmann::json::parse(
+        registration_report_json(pipeline, pair.source_name, pair.target_name));
+    report["diagnosis"] =
+        diagnosis ? nlohmann::json::parse(diagnosis_json(*diagnosis)) : nlohmann::json();
+    write_text_file(args.get("json"), report.dump(2) + "\n");
     std::printf("wrote %s\n", args.get("json").c_str());
   }
   return 0;

@@ -18,6 +18,22 @@ enum class ColorMode { by_class, by_cloud };
 /// the refined selection (the candidate where refinement did not apply).
 enum class PoseShown { selected, ground_truth, identity, refined };
 
+/// Which correspondences the diagnosis filter keeps (by their ground-truth residual).
+enum class TruthFilter { all, inliers, outliers };
+/// What the source cloud is coloured by: its class (or cloud), or each verification point's
+/// contribution min(d, mu) to D under the shown level's candidate or under the ground truth.
+enum class Contribution { off, candidate, ground_truth };
+
+/// The diagnosis items of the view (diagnosis_panel.cpp); they need a ground truth.
+struct DiagnosisView {
+  bool panel = false;              ///< the bottom panel shows the diagnosis instead of the pyramid
+  bool color_by_residual = false;  ///< correspondence lines coloured by ground-truth residual
+  std::string class_name;          ///< only this class's correspondences (empty: every class)
+  TruthFilter truth = TruthFilter::all;  ///< only true / only false correspondences
+  bool edges_on_hover = true;  ///< a hovered correspondence shows its graph edges at the level
+  Contribution contribution = Contribution::off;  ///< colour the source by its part of D
+};
+
 /// Which layers of the 3D view are drawn.
 struct Layers {
   bool source = true;
@@ -37,6 +53,7 @@ struct ViewState {
   ColorMode color = ColorMode::by_class;
   PoseShown pose = PoseShown::selected;  ///< how the source cloud is placed
   int level = -1;                        ///< pyramid level shown; -1 follows the selected one
+  DiagnosisView diagnosis;               ///< diagnosis panel and 3D-view items
 };
 
 /// Where the splitters are; kept in the session.

@@ -42,6 +42,11 @@ void session_panel(UiContext& ui);
 /// Undo/redo and the last runs with their outcome.
 void history_panel(UiContext& ui);
 void pyramid_panel(UiContext& ui);
+/// The diagnosis against the ground truth (diagnosis_panel.cpp) and the 3D view's diagnosis items.
+void diagnosis_panel(UiContext& ui);
+/// Radio buttons choosing what the bottom panel shows: the pyramid or the diagnosis (the panel's
+/// first line continues on their line).
+void bottom_panel_switch(UiContext& ui);
 void status_bar(UiContext& ui);
 /// The 3D view: renders the scene into its framebuffer, shows it, handles camera input and hover.
 void scene_window(UiContext& ui);

@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <vector>
 
+#include "diagnosis_overlay.hpp"
+
 namespace pagor::studio {
 namespace {
 
@@ -155,18 +157,24 @@ int draw_correspondence_lines(ImDrawList* dl, const ViewRect& r, const Snapshot&
     dl->AddLine(a, b, color, width);
     ++drawn;
   };
+  const DiagnosisView& dv = view.diagnosis;
   if (view.layers.all_correspondences)
     for (std::size_t i = 0; i < s.correspondences.size(); ++i) {
-      if (in_clique[i]) continue;
+      if (in_clique[i] || !diagnosis_keeps(s, dv, i)) continue;
       const Correspondence& c = s.correspondences[i];
       const auto& name = s.source_landmarks.classes[static_cast<std::size_t>(c.class_index)].name;
-      line(c, col(colors.of(name), 70), std::max(1.0f, view.line_width * 0.4f), false);
+      line(c, diagnosis_line_color(s, dv, i, col(colors.of(name), 70), 110),
+           std::max(1.0f, view.line_width * 0.4f), false);
     }
   const double tolerance = s.config.evaluation.max_translation_error;
   for (int v : clique) {
-    const Correspondence& c = s.correspondences[static_cast<std::size_t>(v)];
+    const auto i = static_cast<std::size_t>(v);
+    if (!diagnosis_keeps(s, dv, i)) continue;
+    const Correspondence& c = s.correspondences[i];
     const bool outlier = s.ground_truth && !true_inlier(c, *s.ground_truth, tolerance);
-    line(c, col(outlier ? Palette::clique_outlier : Palette::clique), view.line_width, true);
+    line(c,
+         diagnosis_line_color(s, dv, i, col(outlier ? Palette::clique_outlier : Palette::clique)),
+         view.line_width, true);
   }
   return drawn;
 }
@@ -187,12 +195,16 @@ void draw_legend(ImDrawList* dl, ImVec2 at, const Snapshot& s, const ViewState& 
         points.push_back({col(colors.of(c.name)), c.name + " (landmarks only)"});
     points.push_back({IM_COL32(120, 120, 120, 255), "other labels"});
   }
-  const int lines = 1 + (gt ? 1 : 0) + (view.layers.all_correspondences ? 1 : 0);
+  const bool by_residual = view.diagnosis.color_by_residual && s.diagnosis;  // its own legend
+  const int lines =
+      (by_residual ? 0 : 1 + (gt ? 1 : 0)) + (view.layers.all_correspondences ? 1 : 0);
   const float h = 17.0f * static_cast<float>(lines + points.size()) + 4.0f;
   dl->AddRectFilled(ImVec2(at.x - 4, at.y - 4), ImVec2(at.x + 190, at.y + h),
                     IM_COL32(0, 0, 0, 150), 4.0f);
-  legend_item(dl, at, col(Palette::clique), gt ? "clique, true inlier" : "clique", true);
-  if (gt) legend_item(dl, at, col(Palette::clique_outlier), "clique, outlier (truth)", true);
+  if (!by_residual) {
+    legend_item(dl, at, col(Palette::clique), gt ? "clique, true inlier" : "clique", true);
+    if (gt) legend_item(dl, at, col(Palette::clique_outlier), "clique, outlier (truth)", true);
+  }
   if (view.layers.all_correspondences)
     legend_item(dl, at, IM_COL32(200, 200, 200, 160), "other corr. (class)", true);
   for (const auto& [c, name] : points) legend_item(dl, at, c, name.c_str(), false);

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <unordered_map>
 
+#include "diagnosis_overlay.hpp"
 #include "resources.hpp"
 #include "shader_program.hpp"
 
@@ -79,8 +80,8 @@ bool SceneView::init(const Gl& gl, std::string& error) {
   u_use_uniform_ = gl.GetUniformLocation(program_, "u_use_uniform_color");
   u_color_ = gl.GetUniformLocation(program_, "u_color");
   u_round_ = gl.GetUniformLocation(program_, "u_round");
-  for (Buffer* b :
-       {&source_, &target_, &landmarks_src_, &landmarks_tgt_, &keypoints_src_, &keypoints_tgt_}) {
+  for (Buffer* b : {&source_, &target_, &landmarks_src_, &landmarks_tgt_, &keypoints_src_,
+                    &keypoints_tgt_, &contribution_}) {
     gl.GenVertexArrays(1, &b->vao);
     gl.GenBuffers(1, &b->vbo);
     gl.BindVertexArray(b->vao);
@@ -97,8 +98,8 @@ bool SceneView::init(const Gl& gl, std::string& error) {
 
 void SceneView::shutdown() {
   if (!gl_) return;
-  for (Buffer* b :
-       {&source_, &target_, &landmarks_src_, &landmarks_tgt_, &keypoints_src_, &keypoints_tgt_}) {
+  for (Buffer* b : {&source_, &target_, &landmarks_src_, &landmarks_tgt_, &keypoints_src_,
+                    &keypoints_tgt_, &contribution_}) {
     gl_->DeleteBuffers(1, &b->vbo);
     gl_->DeleteVertexArrays(1, &b->vao);
   }
@@ -135,6 +136,7 @@ void SceneView::update(const Snapshot& s, const ViewState& view, const Transform
     ++cloud_uploads_;
   }
 
+  update_contribution(s, view);
   // Landmarks: small; again when the snapshot, the level, the pose or the colouring change.
   const int level = shown_level(view, s.selected, static_cast<int>(s.levels.size()));
   std::string key = std::to_string(level) + (view.layers.all_correspondences ? "a" : "c") +
@@ -172,6 +174,32 @@ void SceneView::update(const Snapshot& s, const ViewState& view, const Transform
          landmark_vertices(s.source_landmarks, used_src, true, LandmarkKind::keypoint));
   upload(keypoints_tgt_,
          landmark_vertices(s.target_landmarks, used_tgt, false, LandmarkKind::keypoint));
+}
+
+void SceneView::update_contribution(const Snapshot& s, const ViewState& view) {
+  const Contribution mode = view.diagnosis.contribution;
+  const int level = shown_level(view, s.selected, static_cast<int>(s.levels.size()));
+  const std::string key = std::to_string(s.request) + "/" + std::to_string(static_cast<int>(mode)) +
+                          "/" + std::to_string(level);
+  if (key == contribution_key_) return;
+  contribution_key_ = key;
+  const std::vector<float>* part = nullptr;
+  if (mode == Contribution::ground_truth && s.ground_truth) {
+    part = &s.gt_contribution;
+    contribution_pose_ = *s.ground_truth;
+  } else if (mode == Contribution::candidate && level >= 0 &&
+             static_cast<std::size_t>(level) < s.contributions.size()) {
+    part = &s.contributions[static_cast<std::size_t>(level)];
+    contribution_pose_ = s.levels[static_cast<std::size_t>(level)].pose.T_target_source;
+  }
+  std::vector<float> v;
+  if (part && s.verification_source && part->size() == s.verification_source->size()) {
+    const float mu = static_cast<float>(s.config.verification.mu);
+    v.reserve(part->size() * kFloatsPerVertex);
+    for (std::size_t i = 0; i < part->size(); ++i)
+      push(v, (*s.verification_source)[i], diagnosis_colormap((*part)[i] / mu));
+  }
+  upload(contribution_, v);
 }
 
 float SceneView::ground_z(const Snapshot& s) {
@@ -247,7 +275,10 @@ void SceneView::render(int width, int height, const Camera& camera, const ViewSt
   const bool by_cloud = view.color == ColorMode::by_cloud;
   if (view.layers.target)
     draw(target_, GL_POINTS, vp, view.point_size, false, by_cloud ? &Palette::target : nullptr);
-  if (view.layers.source)
+  if (view.layers.source && view.diagnosis.contribution != Contribution::off)
+    draw(contribution_, GL_POINTS, vp * contribution_pose_.cast<float>(), view.point_size + 1.0f,
+         false, nullptr);
+  else if (view.layers.source)
     draw(source_, GL_POINTS, source_mvp, view.point_size, false,
          by_cloud ? &Palette::source : nullptr);
   // Landmarks on top of the clouds (lines are drawn over everything by the overlay).

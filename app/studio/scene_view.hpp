@@ -78,6 +78,8 @@ class SceneView {
   void draw(const Buffer& b, GLenum mode, const Eigen::Matrix4f& mvp, float size, bool round,
             const Rgba* uniform_color);
   void resize(int width, int height);
+  /// The verification points coloured by their contribution to D (ViewState::diagnosis).
+  void update_contribution(const Snapshot& s, const ViewState& view);
 
   const Gl* gl_ = nullptr;
   ClassColors class_colors_;
@@ -85,6 +87,9 @@ class SceneView {
   GLint u_mvp_ = -1, u_point_size_ = -1, u_use_uniform_ = -1, u_color_ = -1, u_round_ = -1;
   int fb_width_ = 0, fb_height_ = 0;
   Buffer source_, target_, landmarks_src_, landmarks_tgt_, keypoints_src_, keypoints_tgt_;
+  Buffer contribution_;  ///< drawn instead of the source when not empty
+  Transform contribution_pose_ = Transform::Identity();  ///< the pose the contribution is under
+  std::string contribution_key_;
   std::uint64_t ground_generation_ = 0;
   float ground_z_ = 0.0f;
   std::uint64_t cloud_generation_ = 0;

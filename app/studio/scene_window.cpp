@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "diagnosis_overlay.hpp"
 #include "pagor/trim.hpp"
 #include "panels.hpp"
 #include "scene_overlay.hpp"
@@ -121,8 +122,13 @@ void scene_window(UiContext& ui) {
   if (state.view.grid) draw_grid_axes_scale(dl, rect, state.camera, ui.scene.ground_z(*s));
   const int shown = shown_level(state.view, s->selected, static_cast<int>(s->levels.size()));
   draw_correspondence_lines(dl, rect, *s, state.view, pose, shown, ui.scene.class_colors());
-  if (state.view.legend && w >= 360 && h >= 220)  // a small view keeps its picture
+  if (state.view.legend && w >= 360 && h >= 220) {  // a small view keeps its picture
     draw_legend(dl, ImVec2(origin.x + 10, origin.y + 10), *s, state.view, ui.scene.class_colors());
+    const float dh = diagnosis_legend_height(*s, state.view);
+    if (dh > 0)  // bottom right, clear of the scale bar
+      draw_diagnosis_legend(dl, ImVec2(origin.x + w - 196, origin.y + h - dh - 8), *s, state.view,
+                            shown);
+  }
   dl->PopClipRect();
   if (!hovered) return;
 
@@ -173,6 +179,7 @@ void scene_window(UiContext& ui) {
   for (std::size_t i = 0; i < s->correspondences.size(); ++i) {
     const bool member = std::binary_search(clique.begin(), clique.end(), static_cast<int>(i));
     if (!member && !state.view.layers.all_correspondences) continue;
+    if (!diagnosis_keeps(*s, state.view.diagnosis, i)) continue;
     Eigen::Vector2f a, b;
     const Correspondence& c = s->correspondences[i];
     if (!project_to_screen(vp, transform_point(pose, c.p), static_cast<float>(w),
@@ -186,8 +193,19 @@ void scene_window(UiContext& ui) {
     }
   }
   if (best_index >= 0) {
+    int true_neighbours = -1, edges = -1;
+    if (state.view.diagnosis.edges_on_hover) {
+      dl->PushClipRect(origin, ImVec2(origin.x + w, origin.y + h), true);
+      edges = draw_hover_edges(dl, rect, *s, pose, level, best_index, true_neighbours);
+      dl->PopClipRect();
+    }
     ImGui::BeginTooltip();
     correspondence_tooltip(*s, best_index, level);
+    if (edges >= 0)
+      ImGui::Text("graph edges at level %d: %d (cyan)%s", level, edges,
+                  true_neighbours >= 0
+                      ? (", " + std::to_string(true_neighbours) + " to true ones").c_str()
+                      : "");
     ImGui::EndTooltip();
   }
 }

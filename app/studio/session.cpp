@@ -33,6 +33,24 @@ const char* pose_name(PoseShown p) {
                                         : "identity";
 }
 
+const char* truth_name(TruthFilter t) {
+  return t == TruthFilter::inliers ? "inliers" : t == TruthFilter::outliers ? "outliers" : "all";
+}
+const char* contribution_name(Contribution c) {
+  return c == Contribution::candidate      ? "candidate"
+         : c == Contribution::ground_truth ? "ground_truth"
+                                           : "off";
+}
+
+json diagnosis_view_json(const DiagnosisView& d) {
+  return {{"panel", d.panel},
+          {"color_by_residual", d.color_by_residual},
+          {"class", d.class_name},
+          {"truth", truth_name(d.truth)},
+          {"edges_on_hover", d.edges_on_hover},
+          {"contribution", contribution_name(d.contribution)}};
+}
+
 json data_json(const PairSource& d) {
   switch (d.kind) {
     case PairSource::Kind::kitti:
@@ -189,11 +207,37 @@ void read_camera(const json& c, const std::string& where, Camera& cam) {
   cam.top_down = get_bool(c, "top_down", where, cam.top_down);
 }
 
+// One of `names` (their index), naming the file and key when it is none of them.
+int get_choice(const json& j, const char* key, const std::string& where,
+               const std::vector<std::string>& names) {
+  const std::string value = get_string(j, key, where, names.front());
+  const auto it = std::find(names.begin(), names.end(), value);
+  if (it != names.end()) return static_cast<int>(it - names.begin());
+  std::string list;
+  for (const auto& n : names) list += (list.empty() ? "\"" : ", \"") + n + "\"";
+  throw InputError(key_path(where, key) + ": expected one of " + list + ", got \"" + value + "\"");
+}
+
+void read_diagnosis_view(const json& d, const std::string& where, ViewState& view) {
+  if (!d.is_object()) throw InputError(where + ": expected an object");
+  reject_unknown(
+      d, where, {"panel", "color_by_residual", "class", "truth", "edges_on_hover", "contribution"});
+  DiagnosisView& dv = view.diagnosis;
+  dv.panel = get_bool(d, "panel", where, false);
+  dv.color_by_residual = get_bool(d, "color_by_residual", where, false);
+  dv.class_name = get_string(d, "class", where, "");
+  dv.truth =
+      static_cast<TruthFilter>(get_choice(d, "truth", where, {"all", "inliers", "outliers"}));
+  dv.edges_on_hover = get_bool(d, "edges_on_hover", where, true);
+  dv.contribution = static_cast<Contribution>(
+      get_choice(d, "contribution", where, {"off", "candidate", "ground_truth"}));
+}
+
 void read_view(const json& v, const std::string& where, ViewState& view) {
   if (!v.is_object()) throw InputError(where + ": expected an object");
   reject_unknown(v, where,
                  {"layers", "point_size", "landmark_size", "line_width", "grid", "legend", "color",
-                  "pose", "level"});
+                  "pose", "level", "diagnosis"});
   if (const json* l = find(v, "layers")) {
     const std::string lw = where + ".layers";
     if (!l->is_object()) throw InputError(lw + ": expected an object");
@@ -230,6 +274,7 @@ void read_view(const json& v, const std::string& where, ViewState& view) {
               : pose == "refined"    ? PoseShown::refined
                                      : PoseShown::selected;
   view.level = get_int(v, "level", where, -1, -1, 31);
+  if (const json* d = find(v, "diagnosis")) read_diagnosis_view(*d, where + ".diagnosis", view);
 }
 
 }  // namespace
@@ -284,7 +329,8 @@ void save_session(const AppState& s, const std::string& path) {
               {"legend", s.view.legend},
               {"color", color_name(s.view.color)},
               {"pose", pose_name(s.view.pose)},
-              {"level", s.view.level}}},
+              {"level", s.view.level},
+              {"diagnosis", diagnosis_view_json(s.view.diagnosis)}}},
             {"layout",
              {{"left_width", number(s.layout.left_width)},
               {"scene_share", number(s.layout.scene_share)}}},

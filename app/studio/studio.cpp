@@ -308,7 +308,11 @@ void Studio::layout_windows(UiContext& ui, float W, float H) {
   ImGui::PopStyleVar(2);
 
   place(x, scene_h + kSplitter, w, H - scene_h - kSplitter);
-  if (ImGui::Begin("Pyramid", nullptr, kPanelFlags)) pyramid_panel(ui);
+  const bool diagnosis = state_.view.diagnosis.panel;
+  if (ImGui::Begin(diagnosis ? "Diagnosis" : "Pyramid", nullptr, kPanelFlags)) {
+    bottom_panel_switch(ui);
+    diagnosis ? diagnosis_panel(ui) : pyramid_panel(ui);
+  }
   ImGui::End();
 
   place(0, H, W, kStatusHeight);

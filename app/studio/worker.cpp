@@ -130,6 +130,25 @@ void Worker::handle(Request request) {
   snapshot_ = std::move(snap);
 }
 
+namespace {
+
+// The diagnosis and each verification point's contribution to D, for the diagnosis panel and
+// the 3D view; computed here, on the worker thread, never in the UI.
+void add_diagnosis(const Pipeline& p, Snapshot& s) {
+  s.diagnosis = diagnose(p);
+  s.graph = std::make_shared<const PyramidGraph>(p.graph());
+  const Verifier* v = p.verifier();
+  if (!v) return;
+  s.verification_source = std::make_shared<const std::vector<Eigen::Vector3f>>(v->source_points());
+  const double mu = p.config().verification.mu;
+  for (const PoseEstimate& e : p.poses())
+    s.contributions.push_back(e.valid ? point_contributions(*v, e.T_target_source, mu)
+                                      : std::vector<float>());
+  if (p.ground_truth()) s.gt_contribution = point_contributions(*v, *p.ground_truth(), mu);
+}
+
+}  // namespace
+
 std::shared_ptr<Snapshot> Worker::make_snapshot(std::uint64_t request) const {
   const Pipeline& p = pipeline_;
   auto s = std::make_shared<Snapshot>();
@@ -166,6 +185,7 @@ std::shared_ptr<Snapshot> Worker::make_snapshot(std::uint64_t request) const {
     s->stage_ms[static_cast<std::size_t>(i)] = p.time_ms(static_cast<Stage>(i));
   s->verification_points = p.verifier() ? p.verifier()->source_points().size() : 0;
   s->warnings = p.warnings();
+  add_diagnosis(p, *s);
   return s;
 }
 

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "pagor/dataset.hpp"
+#include "pagor/diagnosis.hpp"
 #include "pagor/pipeline.hpp"
 
 namespace pagor::studio {
@@ -51,6 +52,13 @@ struct Snapshot {
   std::array<bool, kStageCount> stage_ran{};   ///< which stages this run recomputed
   std::size_t verification_points = 0;
   std::vector<std::string> warnings;
+  // Diagnosis (computed by the worker after the run; see diagnosis.hpp).
+  std::optional<Diagnosis> diagnosis;         ///< with ground truth
+  std::shared_ptr<const PyramidGraph> graph;  ///< edges around a hovered correspondence
+  std::shared_ptr<const std::vector<Eigen::Vector3f>> verification_source;  ///< D's points
+  /// Per level, each verification point's min(d, mu) under its candidate [m] (empty: invalid).
+  std::vector<std::vector<float>> contributions;
+  std::vector<float> gt_contribution;  ///< the same under the ground truth (empty without)
 };
 
 /// What the worker is doing.

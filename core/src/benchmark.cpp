@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <nlohmann/json.hpp>
 
+#include "pagor/diagnosis.hpp"
 #include "pagor/errors.hpp"
 #include "pagor/report.hpp"
 
@@ -52,6 +53,9 @@ PairOutcome run_pair(Pipeline& pipeline, const PairEntry& entry) {
   auto j = nlohmann::json::parse(
       registration_report_json(pipeline, pair.source_name, pair.target_name, -1));
   j.erase("config");
+  const std::optional<Diagnosis> diagnosis = diagnose(pipeline);
+  if (diagnosis) o.diagnosis = verdict_name(diagnosis->verdict);
+  j["diagnosis"] = diagnosis ? nlohmann::json::parse(diagnosis_json(*diagnosis)) : nlohmann::json();
   j["pair"] = entry.name;
   if (entry.negative) j["negative"] = true;
   o.report_json = j.dump();

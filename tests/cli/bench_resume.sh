@@ -41,6 +41,10 @@ echo "resumed: $out holds $pairs lines"
 "$PAGOR" bench --kitti-root "$KITTI" --pairs "$KITTI/pairs_00_dev.txt" --out "$out" --resume >"$WORK/run3.log" 2>&1 ||
   fail "second resume failed"
 grep -q "of which $pairs taken from" "$WORK/run3.log" || fail "second resume re-ran pairs"
+# Each line carries the pair's diagnosis, and a resumed pair keeps its verdict column.
+[ "$(grep -c '"diagnosis":{"' "$out")" -eq "$pairs" ] || fail "$out lacks a diagnosis per pair"
+[ "$(grep -Ec 'resumed +(success|too-few-true|not-consistent|clique-missed|pose-wrong|verification-wrong)$' "$WORK/run3.log")" -eq "$pairs" ] ||
+  fail "a resumed pair lost its diagnosis verdict"
 
 # --json under a 4 KiB file-size limit: one error line, exit 1, the previous result kept.
 json="$WORK/result.json"

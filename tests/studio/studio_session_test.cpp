@@ -67,6 +67,10 @@ TEST_CASE("session reader rejects wrong values at their key") {
   CHECK_THAT(err(R"({"view": {"point_size": -1}})"), Catch::Contains("view.point_size"));
   CHECK_THAT(err(R"({"view": {"level": 99}})"), Catch::Contains("view.level"));
   CHECK_THAT(err(R"({"view": {"color": "purple"}})"), Catch::Contains("view.color"));
+  CHECK_THAT(err(R"({"view": {"diagnosis": {"truth": "maybe"}}})"),
+             Catch::Contains("view.diagnosis.truth") && Catch::Contains("\"outliers\""));
+  CHECK_THAT(err(R"({"view": {"diagnosis": {"panel": 1}}})"),
+             Catch::Contains("view.diagnosis.panel"));
   CHECK_THAT(err(R"({"camera": {"distance": 0}})"), Catch::Contains("camera.distance"));
   CHECK_THAT(err(R"({"camera": {"target": [1, 2, 1e300]}})"), Catch::Contains("camera.target[2]"));
   CHECK_THAT(err(R"({"data": {"kind": "synthetic", "seed": -3}})"), Catch::Contains("data.seed"));
@@ -92,6 +96,8 @@ TEST_CASE("a session round-trips and writes numbers in their shortest exact form
   s.camera.distance = 41.7f;
   s.layout.left_width = 287.3f;
   s.layout.scene_share = 0.55f;
+  s.view.diagnosis = {
+      true, true, "pole", studio::TruthFilter::outliers, false, studio::Contribution::ground_truth};
   s.width = 1000;
   s.height = 700;
   const std::string path = tmp.file("round.json");
@@ -111,6 +117,12 @@ TEST_CASE("a session round-trips and writes numbers in their shortest exact form
   CHECK(r.camera.distance == s.camera.distance);
   CHECK(r.layout.left_width == s.layout.left_width);
   CHECK(r.layout.scene_share == s.layout.scene_share);
+  CHECK(r.view.diagnosis.panel);
+  CHECK(r.view.diagnosis.color_by_residual);
+  CHECK(r.view.diagnosis.class_name == "pole");
+  CHECK(r.view.diagnosis.truth == studio::TruthFilter::outliers);
+  CHECK_FALSE(r.view.diagnosis.edges_on_hover);
+  CHECK(r.view.diagnosis.contribution == studio::Contribution::ground_truth);
   CHECK(r.width == 1000);
   CHECK(r.height == 700);
 }

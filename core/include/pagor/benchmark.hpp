@@ -26,14 +26,16 @@ struct PairOutcome {
   bool success = false;            ///< selected pose within the criterion
   bool upper_bound = false;        ///< any level's candidate within the criterion
   bool accepted = false;           ///< the acceptance verdict on the selected pose
-  bool timed = true;               ///< false: taken from an earlier run; its times are not counted
+  std::string diagnosis;  ///< verdict_name() of the diagnosis (diagnosis.hpp); empty without truth
+  bool timed = true;      ///< false: taken from an earlier run; its times are not counted
   std::array<double, kStageCount> stage_ms{};  ///< wall time per stage [ms]
   double total_ms = 0.0;                       ///< sum of the stage times [ms]
   std::string report_json;  ///< the pagor.register/1 result without its config, one line
 };
 
-/// Loads a pair and runs it through `pipeline` with the pipeline's configuration. A pair whose
-/// files cannot be read comes back with `loaded == false` and the reason; other errors throw.
+/// Loads a pair and runs it through `pipeline` with the pipeline's configuration, and diagnoses it
+/// when it has ground truth (the report's `diagnosis`, null without). A pair whose files cannot
+/// be read comes back with `loaded == false` and the reason; other errors throw.
 PairOutcome run_pair(Pipeline& pipeline, const PairEntry& entry);
 
 /// Rates and times over a set of outcomes.
