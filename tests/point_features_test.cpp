@@ -267,10 +267,10 @@ TEST_CASE("descriptor matching gives FLANN's mutual nearest neighbours") {
   std::size_t ties = 0;
   for (const auto& [a, b] : want)
     if (!got.count({a, b}))
-      for (const auto& [c, d] : got)
-        if (!want.count({c, d}) &&
-            ((a == c && same_descriptors(t, b, d)) || (b == d && same_descriptors(s, a, c)))) {
-          got.erase({c, d});
+      for (const auto& [c, e] : got)
+        if (!want.count({c, e}) &&
+            ((a == c && same_descriptors(t, b, e)) || (b == e && same_descriptors(s, a, c)))) {
+          got.erase({c, e});  // and leave the loop: the iterator is gone
           got.insert({a, b});
           ++ties;
           break;
