@@ -10,8 +10,8 @@
 #include <cstdio>
 #include <vector>
 
-#include "pagor/errors.hpp"
 #include "benchmark_view.hpp"
+#include "pagor/errors.hpp"
 #include "panels.hpp"
 #include "plot_export.hpp"
 #include "resources.hpp"
@@ -139,8 +139,8 @@ void Studio::write_plot_exports(int width, int height) {
     const int w = std::min(width, kPlotPngWidth), h = std::min(height, kPlotPngHeight);
     try {
       write_png_file(e.path, render_plot_rgba(gl_, imgui_renderer_, e.plot, w, h), w, h);
-      state_.message = "wrote " + e.path + " (" + std::to_string(w) + "x" + std::to_string(h) +
-                       " px)";
+      state_.message =
+          "wrote " + e.path + " (" + std::to_string(w) + "x" + std::to_string(h) + " px)";
       state_.message_is_error = false;
     } catch (const Error& ex) {
       state_.message = ex.what();

@@ -9,10 +9,10 @@
 
 #include "app_state.hpp"
 #include "bench_worker.hpp"
-#include "plot.hpp"
 #include "gl.hpp"
 #include "history.hpp"
 #include "imgui_renderer.hpp"
+#include "plot.hpp"
 #include "scene_view.hpp"
 #include "worker.hpp"
 
