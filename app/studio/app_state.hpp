@@ -62,15 +62,17 @@ struct BenchViewState {
   std::string path;       ///< the manifest, KITTI pairs file or `pagor bench --out` results
   std::string kitti_root = "../shared/data/kitti";  ///< kitti_pairs: the KITTI root
   std::string sequence = "00";                      ///< kitti_pairs: the sequence
-  bool open = false;   ///< a set is open (re-opened when a session is loaded)
-  std::string filter;  ///< rows whose pair name contains this
-  int show = 0;        ///< 0 all, 1 failures, 2 successes, 3 accepted, 4 rejected
-  int sort = 0;        ///< column index of benchmark_view's columns
+  std::string config_path;  ///< a configuration JSON the user loads for the set
+  bool open = false;        ///< a set is open (re-opened when a session is loaded)
+  std::string filter;       ///< rows whose pair name contains this
+  int show = 0;             ///< 0 all, 1 failures, 2 successes, 3 accepted, 4 rejected
+  int sort = 0;             ///< column index of benchmark_view's columns
   bool descending = false;
   int budget_mib = 1024;                 ///< memory budget of the per-pair caches [MiB]
   std::string plot_path = "pagor-plot";  ///< exports go to PATH-<plot>.png / .csv
   std::string sweep_mu = "0.5,1,2";      ///< sweep: mu values [m]
   std::string sweep_thresholds;          ///< sweep: threshold sets ("a,b;c,d"), empty: current
+  int sweep_pair = 0;                    ///< sweep: the pair whose D is plotted
 };
 
 struct AppState {

@@ -1,6 +1,7 @@
 #include "bench_plots.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace pagor::studio {
 namespace {
@@ -28,6 +29,41 @@ Plot sweep_success_plot(const SweepResult& result) {
   return p;
 }
 
+namespace {
+
+// What a line plot puts on x: mu, or the single threshold, when the settings differ in that
+// alone (and take at least two values).
+enum class Axis { none, mu, epsilon };
+
+Axis line_axis(const SweepResult& result) {
+  if (result.settings.size() < 2) return Axis::none;
+  const auto without = [](Config c, Axis a) {
+    if (a == Axis::mu) c.verification.mu = 0;
+    if (a == Axis::epsilon) c.graph.thresholds = {1.0};
+    return config_to_json(c, -1);
+  };
+  for (Axis a : {Axis::mu, Axis::epsilon}) {
+    const std::string first = without(result.settings[0].setting.config, a);
+    bool same = true;
+    for (const SweepSettingResult& r : result.settings)
+      same = same && without(r.setting.config, a) == first &&
+             (a != Axis::epsilon || r.setting.config.graph.thresholds.size() == 1);
+    if (same) return a;
+  }
+  return Axis::none;
+}
+
+double axis_value(const Config& c, Axis a) {
+  return a == Axis::mu ? c.verification.mu : c.graph.thresholds.front();
+}
+
+void set_axis(Plot& p, Axis a, const Config& c) {
+  p.x_label = a == Axis::mu ? "mu" : "epsilon";
+  p.x_unit = a == Axis::mu ? "m" : (c.graph.trim == TrimKind::ratio ? "ratio" : "m");
+}
+
+}  // namespace
+
 Plot sweep_line_plot(const SweepResult& result) {
   Plot p;
   p.kind = PlotKind::lines;
@@ -35,24 +71,37 @@ Plot sweep_line_plot(const SweepResult& result) {
   p.value_unit = "%";
   p.value_min = 0.0;
   p.value_max = 100.0;
-  if (result.settings.size() < 2) return p;
-  const Config& a = result.settings[0].setting.config;
-  const Config& b = result.settings[1].setting.config;
-  const bool mu = a.verification.mu != b.verification.mu;
-  const bool eps = a.graph.thresholds.size() == 1 && a.graph.thresholds != b.graph.thresholds;
-  if (!mu && !eps) return p;
-  p.title = mu ? "Success against mu" : "Success against a single epsilon";
-  p.x_label = mu ? "mu" : "epsilon";
-  p.x_unit = mu ? "m" : (a.graph.trim == TrimKind::ratio ? "ratio" : "m");
+  const Axis a = line_axis(result);
+  if (a == Axis::none) return p;
+  p.title = a == Axis::mu ? "Success against mu" : "Success against a single epsilon";
+  set_axis(p, a, result.settings[0].setting.config);
   p.series = {{"success", {}, {}}, {"upper bound", {}, {}}};
   for (const SweepSettingResult& r : result.settings) {
-    const Config& c = r.setting.config;
-    if (c.graph.thresholds.empty()) return Plot{};
-    const double x = mu ? c.verification.mu : c.graph.thresholds.front();
+    const double x = axis_value(r.setting.config, a);
     p.series[0].x.push_back(x);
     p.series[1].x.push_back(x);
     p.series[0].y.push_back(percent(r.summary.successes, r.summary.with_truth));
     p.series[1].y.push_back(percent(r.summary.upper_bound, r.summary.with_truth));
+  }
+  return p;
+}
+
+Plot sweep_pair_plot(const SweepResult& result, std::size_t pair) {
+  Plot p;
+  p.kind = PlotKind::lines;
+  p.value_label = "D of the selected pose";
+  p.value_unit = "m";
+  const Axis a = line_axis(result);
+  if (a == Axis::none || result.settings[0].outcomes.size() <= pair) return p;
+  p.title = "Pair " + result.settings[0].outcomes[pair].name + ": D and success";
+  set_axis(p, a, result.settings[0].setting.config);
+  p.series = {{"success", {}, {}, true}, {"failure", {}, {}, true}};
+  for (const SweepSettingResult& r : result.settings) {
+    const PairOutcome& o = r.outcomes[pair];
+    if (!o.loaded || !std::isfinite(o.score)) continue;
+    PlotSeries& s = p.series[o.success ? 0 : 1];
+    s.x.push_back(axis_value(r.setting.config, a));
+    s.y.push_back(o.score);
   }
   return p;
 }

@@ -19,6 +19,10 @@ Plot sweep_success_plot(const SweepResult& result);
 /// Empty series when the sweep varies anything else.
 Plot sweep_line_plot(const SweepResult& result);
 
+/// One pair over mu or a single threshold (as sweep_line_plot): D of the selected pose [m],
+/// as points split by success and failure. Empty series when the sweep varies anything else.
+Plot sweep_pair_plot(const SweepResult& result, std::size_t pair);
+
 /// Bars per level: how often it was selected and how often its candidate alone would succeed
 /// [pairs], over the pairs with ground truth.
 Plot picking_plot(const std::vector<PairOutcome>& outcomes);

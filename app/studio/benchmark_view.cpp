@@ -95,6 +95,21 @@ void source_controls(UiContext& ui, BenchWorker& bench) {
     ui::input_text("KITTI root##bench", &v.kitti_root, "directory holding sequences/");
     ui::input_text("sequence##bench", &v.sequence, "KITTI sequence, e.g. 00");
   }
+  ui::input_text("parameters file##bench", &v.config_path,
+                 "a configuration JSON for this set, e.g. bench/manifests/semreg-dev.json");
+  ImGui::SameLine();
+  if (ui::button("load##bench_config", ImVec2(0, 0),
+                 "use the file's parameters in the session (absent keys: the defaults)")) {
+    try {
+      ui.state.config = load_config(resolve_path(ui.state, v.config_path));
+      ui.submit_config();
+      ui.state.message = "parameters from " + v.config_path;
+      ui.state.message_is_error = false;
+    } catch (const Error& e) {
+      ui.state.message = e.what();
+      ui.state.message_is_error = true;
+    }
+  }
   if (ui::button("open and run##bench", ImVec2(0, 0),
                  "read the file and run every pair with the current parameters")) {
     try {
@@ -165,6 +180,37 @@ void table_controls(BenchViewState& v) {
   ui::checkbox("descending##bench", &v.descending, "reverse the order");
 }
 
+// The cells after the name of a row that has an outcome.
+void row_cells(const BenchRow& r) {
+  const PairOutcome& o = r.outcome;
+  ImGui::TableNextColumn();
+  ImGui::TextUnformatted(!o.loaded ? "skipped" : o.accepted ? "accept" : "reject");
+  if (!o.loaded) ui::tooltip(o.load_error.c_str());
+  ImGui::TableNextColumn();
+  ImGui::TextUnformatted(truth_text(o));
+  ImGui::TableNextColumn();
+  if (o.error)
+    ImGui::Text("%.2f", o.error->translation);
+  else
+    ImGui::TextUnformatted("-");
+  ImGui::TableNextColumn();
+  if (o.error)
+    ImGui::Text("%.2f", o.error->rotation_deg);
+  else
+    ImGui::TextUnformatted("-");
+  ImGui::TableNextColumn();
+  if (o.selected_level >= 0)
+    ImGui::Text("%d", o.selected_level);
+  else
+    ImGui::TextUnformatted("-");
+  ImGui::TableNextColumn();
+  ImGui::Text("%.1f", 100.0 * o.margin);
+  ImGui::TableNextColumn();
+  ImGui::Text("%.0f", r.last_ms);
+  ImGui::TableNextColumn();
+  ImGui::TextUnformatted(r.cached ? "yes" : "no");
+}
+
 void rows_table(UiContext& ui, const std::vector<BenchRow>& rows, BenchWorker& bench) {
   BenchViewState& v = ui.state.bench;
   std::vector<std::size_t> order;
@@ -198,28 +244,14 @@ void rows_table(UiContext& ui, const std::vector<BenchRow>& rows, BenchWorker& b
       ui.submit_data();
     }
     if (i < set.pairs.size()) ui::tooltip("open this pair in the pair view with these parameters");
-    ImGui::TableNextColumn();
-    ImGui::TextUnformatted(!r.done ? "..." : o.accepted ? "accept" : "reject");
-    ImGui::TableNextColumn();
-    ImGui::TextUnformatted(r.done ? truth_text(o) : "...");
-    ImGui::TableNextColumn();
-    if (o.error)
-      ImGui::Text("%.2f", o.error->translation);
-    else
-      ImGui::TextUnformatted("-");
-    ImGui::TableNextColumn();
-    if (o.error)
-      ImGui::Text("%.2f", o.error->rotation_deg);
-    else
-      ImGui::TextUnformatted("-");
-    ImGui::TableNextColumn();
-    ImGui::Text("%d", o.selected_level);
-    ImGui::TableNextColumn();
-    ImGui::Text("%.1f", 100.0 * o.margin);
-    ImGui::TableNextColumn();
-    ImGui::Text("%.0f", r.last_ms);
-    ImGui::TableNextColumn();
-    ImGui::TextUnformatted(r.cached ? "yes" : "no");
+    if (!r.done) {  // not run yet with any parameters
+      for (int c = 1; c < kColumnCount; ++c) {
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted("...");
+      }
+    } else {
+      row_cells(r);
+    }
     if (!r.current) ImGui::PopStyleColor();
   }
   ImGui::EndTable();

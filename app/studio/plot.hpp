@@ -19,9 +19,10 @@ enum class PlotKind {
 };
 
 struct PlotSeries {
-  std::string label;      ///< legend entry
-  std::vector<double> x;  ///< lines: abscissae (ignored for bars)
-  std::vector<double> y;  ///< bars: one value per category; lines: one per x
+  std::string label;          ///< legend entry
+  std::vector<double> x;      ///< lines: abscissae (ignored for bars)
+  std::vector<double> y;      ///< bars: one value per category; lines: one per x
+  bool markers_only = false;  ///< lines: points without the connecting line
 };
 
 struct Plot {

@@ -265,6 +265,7 @@ json bench_json(const AppState& s) {
           {"path", b.path},
           {"kitti_root", b.kitti_root},
           {"sequence", b.sequence},
+          {"config_path", b.config_path},
           {"filter", b.filter},
           {"show", b.show},
           {"sort", b.sort},
@@ -278,7 +279,7 @@ json bench_json(const AppState& s) {
 void read_bench(const json& j, const std::string& where, AppState& s) {
   if (!j.is_object()) throw InputError(where + ": expected an object");
   reject_unknown(j, where,
-                 {"shown", "open", "source", "path", "kitti_root", "sequence", "filter", "show",
+                 {"shown", "open", "source", "path", "kitti_root", "sequence", "config_path", "filter", "show",
                   "sort", "descending", "budget_mib", "plot_path", "sweep_mu", "sweep_thresholds"});
   BenchViewState& b = s.bench;
   const std::string source = get_string(j, "source", where, "manifest");
@@ -291,6 +292,7 @@ void read_bench(const json& j, const std::string& where, AppState& s) {
   b.path = get_string(j, "path", where, b.path);
   b.kitti_root = get_string(j, "kitti_root", where, b.kitti_root);
   b.sequence = get_string(j, "sequence", where, b.sequence);
+  b.config_path = get_string(j, "config_path", where, b.config_path);
   b.open = get_bool(j, "open", where, false) && !b.path.empty();
   b.filter = get_string(j, "filter", where, "");
   b.show = get_int(j, "show", where, 0, 0, 4);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <limits>
 #include <nlohmann/json.hpp>
 
 #include "pagor/errors.hpp"
@@ -59,6 +60,10 @@ PairOutcome pair_outcome(const Pipeline& pipeline, const PairEntry& entry,
   o.upper_bound = pipeline.upper_bound_success();
   o.accepted = pipeline.acceptance().accepted;
   o.margin = pipeline.acceptance().margin;
+  const std::vector<double>& scores = pipeline.verification().scores;
+  o.score = o.selected_level >= 0 && static_cast<std::size_t>(o.selected_level) < scores.size()
+                ? scores[static_cast<std::size_t>(o.selected_level)]
+                : std::numeric_limits<double>::quiet_NaN();
   for (const auto& e : pipeline.level_errors()) o.level_success.push_back(e && e->success);
   for (int i = 0; i < kStageCount; ++i) {
     o.stage_ms[static_cast<std::size_t>(i)] = pipeline.time_ms(static_cast<Stage>(i));

@@ -2,7 +2,9 @@
 // session round trip, and a driven-UI walk over every widget of the view.
 
 #include <catch2/catch.hpp>
+#include <chrono>
 #include <fstream>
+#include <thread>
 
 #include "bench_plots.hpp"
 #include "bench_worker.hpp"
@@ -93,8 +95,8 @@ TEST_CASE("benchmark view: a sweep over the open set equals core run_sweep") {
   grid.mus = {0.5, 1.0};
   const auto settings = sweep_settings(semreg_config(), grid);
   worker.sweep(settings);
-  for (int i = 0; i < 1200 && (worker.status().sweeping || !worker.sweep_result()); ++i)
-    worker.wait_idle(0.5);
+  for (int i = 0; i < 6000 && (worker.status().sweeping || !worker.sweep_result()); ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
   const auto got = worker.sweep_result();
   REQUIRE(got);
   const SweepResult want = run_sweep(set, settings);
@@ -153,6 +155,7 @@ TEST_CASE("picking statistics count selections and lone successes per level") {
   neg.negative = true;
   neg.selected_level = 2;
   neg.level_success = {true, true, true};  // never counted: no ground truth for negatives
+  a.score = 10;
   const studio::Plot p = studio::picking_plot({a, b, neg});
   REQUIRE(p.categories.size() == 3);
   CHECK(p.series[0].y == std::vector<double>{1, 1, 0});  // selected
@@ -248,4 +251,30 @@ TEST_CASE("every widget of the benchmark view, driven") {
     if (t.rfind("Benchmark/", 0) == 0) benchmark_widgets.insert(t);
   CHECK(benchmark_widgets.size() >= 15);
   WARN("acted " << acted << ", benchmark widgets touched: " << benchmark_widgets.size());
+}
+
+TEST_CASE("sweep line plots: success and one pair's D against mu, none for mixed grids") {
+  SweepGrid grid;
+  grid.mus = {0.5, 1.0};
+  SweepResult r;
+  for (const SweepSetting& s : sweep_settings(default_config(), grid)) {
+    PairOutcome o;
+    o.name = "p";
+    o.loaded = o.has_ground_truth = true;
+    o.success = s.config.verification.mu > 0.7;
+    o.score = 100 * s.config.verification.mu;
+    SweepSettingResult sr{s, {o}, summarize({o}), 0.0};
+    r.settings.push_back(sr);
+  }
+  const studio::Plot line = studio::sweep_line_plot(r);
+  REQUIRE(line.series.size() == 2);
+  CHECK(line.x_unit == "m");
+  CHECK(line.series[0].x == std::vector<double>{0.5, 1.0});
+  CHECK(line.series[0].y == std::vector<double>{0, 100});
+  const studio::Plot pair = studio::sweep_pair_plot(r, 0);
+  REQUIRE(pair.series.size() == 2);
+  CHECK(pair.series[0].x == std::vector<double>{1.0});             // success
+  CHECK(pair.series[1].y == std::vector<double>{50.0});            // failure, D = 50 m
+  r.settings[1].setting.config.graph.trim = TrimKind::difference;  // a second dimension varies
+  CHECK(studio::sweep_line_plot(r).series.empty());
 }

@@ -46,6 +46,7 @@ void restore(UiDriver& d, const Saved& v, bool resubmit) {
   s.bench.path = v.bench.path;
   s.bench.kitti_root = v.bench.kitti_root;
   s.bench.sequence = v.bench.sequence;
+  s.bench.config_path = v.bench.config_path;
   s.bench.filter = v.bench.filter;
   s.bench.plot_path = v.bench.plot_path;
   s.bench.sweep_mu = v.bench.sweep_mu;
@@ -59,14 +60,15 @@ void act_on_text(UiDriver& d, const WidgetRecord& w) {
   d.type_into(w.id, text);
   const studio::AppState& s = d.state();
   const std::string expected = "nicht/da \xc3\xbc\xc3\xa9 \xce\xb5.pcd";
-  const bool landed =
-      s.data.kitti_root == expected || s.data.sequence == expected || s.data.source == expected ||
-      s.data.source_labels == expected || s.data.target == expected ||
-      s.data.target_labels == expected || s.data.ground_truth == expected ||
-      s.pairs_file == expected || s.session_path == expected || s.screenshot_path == expected ||
-      s.bench.path == expected || s.bench.kitti_root == expected || s.bench.sequence == expected ||
-      s.bench.filter == expected || s.bench.plot_path == expected || s.bench.sweep_mu == expected ||
-      s.bench.sweep_thresholds == expected;
+  const bool landed = s.data.kitti_root == expected || s.data.sequence == expected ||
+                      s.data.source == expected || s.data.source_labels == expected ||
+                      s.data.target == expected || s.data.target_labels == expected ||
+                      s.data.ground_truth == expected || s.pairs_file == expected ||
+                      s.session_path == expected || s.screenshot_path == expected ||
+                      s.bench.path == expected || s.bench.kitti_root == expected ||
+                      s.bench.sequence == expected || s.bench.config_path == expected ||
+                      s.bench.filter == expected || s.bench.plot_path == expected ||
+                      s.bench.sweep_mu == expected || s.bench.sweep_thresholds == expected;
   if (!landed) FAIL("typed text did not reach the state: field '" << w.label << "'");
   restore(d, before, false);
   d.frame();

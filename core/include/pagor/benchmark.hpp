@@ -33,6 +33,7 @@ struct PairOutcome {
   std::string source_name, target_name;  ///< the clouds' files or descriptions
   std::vector<bool> level_success;       ///< per level: its candidate alone within the criterion
   double margin = 0.0;  ///< D margin of the selection, fraction of mu * points (acceptance.hpp)
+  double score = 0.0;   ///< D of the selected candidate [m]; NaN when none was selected
 };
 
 /// Loads a pair and runs it through `pipeline` with the pipeline's configuration. A pair whose
