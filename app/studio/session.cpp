@@ -278,9 +278,10 @@ json bench_json(const AppState& s) {
 
 void read_bench(const json& j, const std::string& where, AppState& s) {
   if (!j.is_object()) throw InputError(where + ": expected an object");
-  reject_unknown(j, where,
-                 {"shown", "open", "source", "path", "kitti_root", "sequence", "config_path", "filter", "show",
-                  "sort", "descending", "budget_mib", "plot_path", "sweep_mu", "sweep_thresholds"});
+  reject_unknown(
+      j, where,
+      {"shown", "open", "source", "path", "kitti_root", "sequence", "config_path", "filter", "show",
+       "sort", "descending", "budget_mib", "plot_path", "sweep_mu", "sweep_thresholds"});
   BenchViewState& b = s.bench;
   const std::string source = get_string(j, "source", where, "manifest");
   if (source != "manifest" && source != "kitti_pairs" && source != "results")
