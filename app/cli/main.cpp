@@ -16,6 +16,8 @@ const std::vector<Command>& commands() {
        run_demo},
       {"register", "register a source cloud to a target cloud", register_options, run_register},
       {"bench", "run every pair of a KITTI pairs file and summarise", bench_options, run_bench},
+      {"sweep", "run a grid of settings over a pairs set (ablation table, CSV, plot)",
+       sweep_options, run_sweep_command},
       {"landmarks", "extract semantic landmarks from one cloud", landmarks_options, run_landmarks},
       {"config", "print or check a configuration", config_options, run_config},
   };

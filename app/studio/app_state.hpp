@@ -71,6 +71,29 @@ struct ViewLimits {
   static constexpr float min_scene_share = 0.2f, max_scene_share = 0.9f;
 };
 
+/// What the main area shows: the pair view (3D view and pyramid) or the benchmark view.
+enum class MainView { pair, benchmark };
+
+/// The benchmark view (benchmark_view.hpp); kept in the session.
+struct BenchViewState {
+  enum Source { manifest = 0, kitti_pairs = 1, results = 2 };
+  int source = manifest;  ///< what `path` names
+  std::string path;       ///< the manifest, KITTI pairs file or `pagor bench --out` results
+  std::string kitti_root = "../shared/data/kitti";  ///< kitti_pairs: the KITTI root
+  std::string sequence = "00";                      ///< kitti_pairs: the sequence
+  std::string config_path;  ///< a configuration JSON the user loads for the set
+  bool open = false;        ///< a set is open (re-opened when a session is loaded)
+  std::string filter;       ///< rows whose pair name contains this
+  int show = 0;             ///< 0 all, 1 failures, 2 successes, 3 accepted, 4 rejected
+  int sort = 0;             ///< column index of benchmark_view's columns
+  bool descending = false;
+  int budget_mib = 1024;                 ///< memory budget of the per-pair caches [MiB]
+  std::string plot_path = "pagor-plot";  ///< exports go to PATH-<plot>.png / .csv
+  std::string sweep_mu = "0.5,1,2";      ///< sweep: mu values [m]
+  std::string sweep_thresholds;          ///< sweep: threshold sets ("a,b;c,d"), empty: current
+  int sweep_pair = 0;                    ///< sweep: the pair whose D is plotted
+};
+
 struct AppState {
   PairSource data;       ///< as the user wrote it; relative paths are taken from `base_dir`
   std::string base_dir;  ///< directory of the loaded session file (empty: working directory)
@@ -80,6 +103,8 @@ struct AppState {
   int pair_index = -1;
 
   Config config = default_config();
+  MainView main_view = MainView::pair;
+  BenchViewState bench;
   ViewState view;
   LayoutState layout;
   Camera camera;

@@ -99,6 +99,7 @@ int run_headless(const cli::Args& args, AppState state) {
   Studio studio(gl, std::move(state));
   if (!studio.init(error)) throw Error(error);
   studio.submit_data();
+  if (studio.state().bench.open) studio.open_benchmark_now();
   const double timeout =
       args.has("timeout") ? cli::parse_int(args.get("timeout"), "--timeout") : 600;
   // Wait for the pipeline, with a progress line on stderr.
@@ -109,6 +110,12 @@ int run_headless(const cli::Args& args, AppState state) {
                  (st.activity + " " + std::to_string(int(st.fraction * 100)) + " %").c_str());
     if (std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() > timeout)
       throw Error("the computation did not finish within " + std::to_string(int(timeout)) + " s");
+  }
+  while (!studio.bench().wait_idle(0.5)) {  // the benchmark view's pairs, when one is open
+    const BenchStatus st = studio.bench().status();
+    std::fprintf(stderr, "\rbenchmark: %d / %d pairs%-30s", st.done, st.total, "");
+    if (std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() > timeout)
+      throw Error("the benchmark did not finish within " + std::to_string(int(timeout)) + " s");
   }
   std::fprintf(stderr, "\r%-60s\r", "");
   // A picture of a failed run is no result: say why and exit non-zero.
@@ -174,6 +181,7 @@ int run_window(AppState state) {
     } reset;
     if (!studio.init(error)) throw Error(error);
     studio.submit_data();
+    if (studio.state().bench.open) studio.open_benchmark_now();
     while (!glfwWindowShouldClose(window)) {
       glfwPollEvents();
       int w = 0, h = 0;

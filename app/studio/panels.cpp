@@ -112,6 +112,9 @@ void step_pair(UiContext& ui, int delta) {
 void data_panel(UiContext& ui) {
   AppState& s = ui.state;
   PairSource& d = s.data;
+  if (ui::button(s.bench.open ? "back to the benchmark" : "benchmark view...", ImVec2(-1, 0),
+                 "Many pairs at once: a pairs file or manifest, rates, plots, sweeps."))
+    s.main_view = MainView::benchmark;
   int kind = static_cast<int>(d.kind);
   ui::radio("KITTI", &kind, static_cast<int>(PairSource::Kind::kitti),
             "A pair of scans of a KITTI odometry sequence, with ground truth.");

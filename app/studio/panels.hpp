@@ -13,6 +13,9 @@
 
 namespace pagor::studio {
 
+class BenchWorker;
+struct Plot;
+
 /// What a panel may read and do during one frame.
 struct UiContext {
   AppState& state;
@@ -28,6 +31,9 @@ struct UiContext {
   const ParamHistory* params = nullptr;
   std::function<void()> undo, redo;
   std::function<void()> save_session, load_session;  ///< state.session_path
+  BenchWorker* bench = nullptr;                      ///< the benchmark view's runner
+  /// Writes a plot as PNG (rendered by the studio at the next frame) at the given path.
+  std::function<void(const Plot&, const std::string&)> export_plot;
 };
 
 /// Moves through the pairs file by `delta` (clamped) and opens that pair.
@@ -48,6 +54,8 @@ void diagnosis_panel(UiContext& ui);
 /// first line continues on their line).
 void bottom_panel_switch(UiContext& ui);
 void status_bar(UiContext& ui);
+/// The benchmark view: the open pairs set, its table, rates and plots, and sweeps.
+void benchmark_view(UiContext& ui);
 /// The 3D view: renders the scene into its framebuffer, shows it, handles camera input and hover.
 void scene_window(UiContext& ui);
 

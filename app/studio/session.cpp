@@ -303,6 +303,61 @@ int shown_level(const ViewState& view, int selected, int levels) {
   return selected < levels ? selected : -1;
 }
 
+namespace {
+
+json bench_json(const AppState& s) {
+  const BenchViewState& b = s.bench;
+  return {{"shown", s.main_view == MainView::benchmark},
+          {"open", b.open},
+          {"source", b.source == BenchViewState::kitti_pairs ? "kitti_pairs"
+                     : b.source == BenchViewState::results   ? "results"
+                                                             : "manifest"},
+          {"path", b.path},
+          {"kitti_root", b.kitti_root},
+          {"sequence", b.sequence},
+          {"config_path", b.config_path},
+          {"filter", b.filter},
+          {"show", b.show},
+          {"sort", b.sort},
+          {"descending", b.descending},
+          {"budget_mib", b.budget_mib},
+          {"plot_path", b.plot_path},
+          {"sweep_mu", b.sweep_mu},
+          {"sweep_thresholds", b.sweep_thresholds}};
+}
+
+void read_bench(const json& j, const std::string& where, AppState& s) {
+  if (!j.is_object()) throw InputError(where + ": expected an object");
+  reject_unknown(
+      j, where,
+      {"shown", "open", "source", "path", "kitti_root", "sequence", "config_path", "filter", "show",
+       "sort", "descending", "budget_mib", "plot_path", "sweep_mu", "sweep_thresholds"});
+  BenchViewState& b = s.bench;
+  const std::string source = get_string(j, "source", where, "manifest");
+  if (source != "manifest" && source != "kitti_pairs" && source != "results")
+    throw InputError(where + ": source: expected manifest, kitti_pairs or results, got \"" +
+                     source + "\"");
+  b.source = source == "kitti_pairs" ? BenchViewState::kitti_pairs
+             : source == "results"   ? BenchViewState::results
+                                     : BenchViewState::manifest;
+  b.path = get_string(j, "path", where, b.path);
+  b.kitti_root = get_string(j, "kitti_root", where, b.kitti_root);
+  b.sequence = get_string(j, "sequence", where, b.sequence);
+  b.config_path = get_string(j, "config_path", where, b.config_path);
+  b.open = get_bool(j, "open", where, false) && !b.path.empty();
+  b.filter = get_string(j, "filter", where, "");
+  b.show = get_int(j, "show", where, 0, 0, 4);
+  b.sort = get_int(j, "sort", where, 0, 0, 8);
+  b.descending = get_bool(j, "descending", where, false);
+  b.budget_mib = get_int(j, "budget_mib", where, b.budget_mib, 64, 8192);
+  b.plot_path = get_string(j, "plot_path", where, b.plot_path);
+  b.sweep_mu = get_string(j, "sweep_mu", where, b.sweep_mu);
+  b.sweep_thresholds = get_string(j, "sweep_thresholds", where, b.sweep_thresholds);
+  s.main_view = get_bool(j, "shown", where, false) && b.open ? MainView::benchmark : MainView::pair;
+}
+
+}  // namespace
+
 void save_session(const AppState& s, const std::string& path) {
   const Camera& c = s.camera;
   json j = {{"schema", "pagor.session/1"},
@@ -334,7 +389,8 @@ void save_session(const AppState& s, const std::string& path) {
             {"layout",
              {{"left_width", number(s.layout.left_width)},
               {"scene_share", number(s.layout.scene_share)}}},
-            {"window", {{"width", s.width}, {"height", s.height}}}};
+            {"window", {{"width", s.width}, {"height", s.height}}},
+            {"benchmark", bench_json(s)}};
   // A failed write (disk full, a size limit) leaves the previous session file intact.
   write_file_atomic(path, j.dump(2) + "\n");
 }
@@ -352,7 +408,8 @@ void load_session(const std::string& path, AppState& s) {
   }
   if (!j.is_object()) throw InputError(path + ": expected a JSON object");
   reject_unknown(j, path + ":",
-                 {"schema", "data", "pairs_file", "config", "camera", "view", "layout", "window"});
+                 {"schema", "data", "pairs_file", "config", "camera", "view", "layout", "window",
+                  "benchmark"});
   const std::string schema = get_string(j, "schema", path + ":", "pagor.session/1");
   if (schema != "pagor.session/1")
     throw InputError(path + ": schema: expected \"pagor.session/1\", got \"" + schema + "\"");
@@ -396,6 +453,7 @@ void load_session(const std::string& path, AppState& s) {
     next.width = get_int(*w, "width", where, next.width, kMinWidth, kMaxSide);
     next.height = get_int(*w, "height", where, next.height, kMinHeight, kMaxSide);
   }
+  if (const json* b = find(j, "benchmark")) read_bench(*b, path + ": benchmark", next);
   next.session_path = path;
   s = std::move(next);
 }

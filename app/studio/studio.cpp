@@ -10,9 +10,11 @@
 #include <cstdio>
 #include <vector>
 
+#include "benchmark_view.hpp"
 #include "pagor/atomic_file.hpp"
 #include "pagor/errors.hpp"
 #include "panels.hpp"
+#include "plot_export.hpp"
 #include "resources.hpp"
 #include "widgets.hpp"
 
@@ -118,6 +120,34 @@ void Studio::submit_config() {
     return;  // shown at the widgets and as stale results; sent once valid again
   }
   worker_.submit(std::nullopt, state_.config);
+  bench_.set_config(state_.config);  // the open benchmark set follows the parameters
+}
+
+void Studio::open_benchmark_now() {
+  try {
+    open_benchmark(state_, bench_);
+  } catch (const Error& e) {
+    state_.bench.open = false;
+    state_.message = e.what();
+    state_.message_is_error = true;
+  }
+}
+
+void Studio::write_plot_exports(int width, int height) {
+  std::vector<PlotExport> exports;
+  exports.swap(plot_exports_);
+  for (const PlotExport& e : exports) {
+    const int w = std::min(width, kPlotPngWidth), h = std::min(height, kPlotPngHeight);
+    try {
+      write_png_file(e.path, render_plot_rgba(gl_, imgui_renderer_, e.plot, w, h), w, h);
+      state_.message =
+          "wrote " + e.path + " (" + std::to_string(w) + "x" + std::to_string(h) + " px)";
+      state_.message_is_error = false;
+    } catch (const Error& ex) {
+      state_.message = ex.what();
+      state_.message_is_error = true;
+    }
+  }
 }
 
 void Studio::undo() {
@@ -156,6 +186,7 @@ void Studio::load_session_now() {
     state_.message_is_error = false;
     params_.reset(state_.config);
     if (state_.have_data) submit_data();
+    if (state_.bench.open) open_benchmark_now();
   } catch (const Error& e) {
     state_.message = e.what();
     state_.message_is_error = true;
@@ -283,6 +314,16 @@ void Studio::layout_windows(UiContext& ui, float W, float H) {
   const float x = left + kSplitter, w = std::max(1.0f, W - x);
   const float scene_h = std::floor(std::clamp(H * layout.scene_share, std::min(kMinPane, H * 0.5f),
                                               std::max(H * 0.5f, H - kMinPane - kSplitter)));
+  if (state_.main_view == MainView::benchmark) {
+    ImGui::PopStyleVar(2);
+    place(x, 0, w, H);
+    if (ImGui::Begin("Benchmark", nullptr, kPanelFlags)) benchmark_view(ui);
+    ImGui::End();
+    place(0, H, W, kStatusHeight);
+    if (ImGui::Begin("##status", nullptr, kBarFlags)) status_bar(ui);
+    ImGui::End();
+    return;
+  }
   place(x, scene_h, w, kSplitter);
   if (ImGui::Begin("##hsplit", nullptr, kBarFlags)) {
     const ImVec2 d = ui::splitter("##scene_splitter", ImVec2(w, kSplitter), false);
@@ -368,7 +409,11 @@ void Studio::frame(int width, int height) {
                [this] { undo(); },
                [this] { redo(); },
                [this] { save_session_now(); },
-               [this] { load_session_now(); }};
+               [this] { load_session_now(); },
+               &bench_,
+               [this](const Plot& plot, const std::string& path) {
+                 plot_exports_.push_back({plot, path});
+               }};
   handle_shortcuts(ui);
   const float W = static_cast<float>(width), H = static_cast<float>(height) - kStatusHeight;
   layout_windows(ui, W, H);
@@ -387,6 +432,7 @@ void Studio::frame(int width, int height) {
     state_.message_is_error = true;
     assert(!"duplicate ImGui ID");
   }
+  write_plot_exports(width, height);  // drawn over by this frame before it is shown
   gl_.BindFramebuffer(GL_FRAMEBUFFER, 0);
   gl_.Viewport(0, 0, width, height);
   gl_.ClearColor(0.08f, 0.08f, 0.09f, 1.0f);

@@ -8,9 +8,11 @@
 #include <string>
 
 #include "app_state.hpp"
+#include "bench_worker.hpp"
 #include "gl.hpp"
 #include "history.hpp"
 #include "imgui_renderer.hpp"
+#include "plot.hpp"
 #include "scene_view.hpp"
 #include "worker.hpp"
 
@@ -55,6 +57,9 @@ class Studio {
 
   AppState& state() { return state_; }
   Worker& worker() { return worker_; }
+  BenchWorker& bench() { return bench_; }
+  /// Opens the benchmark set the state names (after a session load); errors go to the status bar.
+  void open_benchmark_now();
   const SceneView& scene() const { return scene_; }
   const ParamHistory& param_history() const { return params_; }
   const RunHistory& run_history() const { return runs_; }
@@ -69,10 +74,17 @@ class Studio {
   void layout_windows(struct UiContext& ui, float width, float height);
   void help_overlay(float width, float height);
   void update_staleness(const WorkerStatus& status);
+  void write_plot_exports(int width, int height);
 
   const Gl& gl_;
   AppState state_;
   Worker worker_;
+  BenchWorker bench_;
+  struct PlotExport {
+    Plot plot;
+    std::string path;
+  };
+  std::vector<PlotExport> plot_exports_;  // rendered at the next frame
   ImGuiRenderer imgui_renderer_;
   SceneView scene_;
   std::shared_ptr<const Snapshot> snapshot_;

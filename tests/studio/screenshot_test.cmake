@@ -1,5 +1,6 @@
 # Renders one session headless and compares it with its reference PNG.
-# Variables: STUDIO, COMPARE, SESSION, REFERENCE, OUTPUT_DIR, NAME, SIZE.
+# Variables: STUDIO, COMPARE, SESSION, REFERENCE, OUTPUT_DIR, NAME, SIZE; optional IGNORE: more
+# rectangles "x,y,w,h" separated by '|' whose pixels show wall-clock times.
 file(MAKE_DIRECTORY "${OUTPUT_DIR}")
 set(actual "${OUTPUT_DIR}/${NAME}.png")
 execute_process(
@@ -14,9 +15,16 @@ string(REPLACE "x" ";" wh "${SIZE}")
 list(GET wh 0 width)
 list(GET wh 1 height)
 math(EXPR status_y "${height} - 28")
+set(more_ignores)
+if(IGNORE)
+  string(REPLACE "|" ";" rects "${IGNORE}")
+  foreach(r ${rects})
+    list(APPEND more_ignores --ignore "${r}")
+  endforeach()
+endif()
 execute_process(
   COMMAND "${COMPARE}" "${REFERENCE}" "${actual}" --diff "${OUTPUT_DIR}/${NAME}.diff.png"
-          --ignore "0,${status_y},${width},28"
+          --ignore "0,${status_y},${width},28" ${more_ignores}
   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 message("${out}${err}")
 if(NOT rc EQUAL 0)

@@ -118,7 +118,9 @@ class UiDriver {
 /// appears: clicks buttons, boxes, radios, headers, tree nodes and rows; drags every slider across
 /// its range and types out-of-range and non-numeric values into it; types valid and invalid text
 /// into fields; opens every combo and picks each choice; drags the splitters. `keep` runs after
-/// each action (e.g. to go back to the data mode under test). Returns the widgets acted on.
-int exercise_every_widget(UiDriver& d, const std::function<void()>& keep, int max_actions = 600);
+/// each action (e.g. to go back to the data mode under test); `window` limits the walk to the
+/// windows whose name starts with it. Returns the widgets acted on.
+int exercise_every_widget(UiDriver& d, const std::function<void()>& keep, int max_actions = 600,
+                          const std::string& window = "");
 
 }  // namespace pagor::test

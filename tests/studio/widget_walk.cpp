@@ -29,9 +29,10 @@ namespace {
 struct Saved {
   PairSource data;
   std::string pairs_file, session_path, screenshot_path;
+  studio::BenchViewState bench;
 };
 Saved save(const studio::AppState& s) {
-  return {s.data, s.pairs_file, s.session_path, s.screenshot_path};
+  return {s.data, s.pairs_file, s.session_path, s.screenshot_path, s.bench};
 }
 void restore(UiDriver& d, const Saved& v, bool resubmit) {
   studio::AppState& s = d.state();
@@ -42,6 +43,14 @@ void restore(UiDriver& d, const Saved& v, bool resubmit) {
   s.pairs_file = v.pairs_file;
   s.session_path = v.session_path;
   s.screenshot_path = v.screenshot_path;
+  s.bench.path = v.bench.path;
+  s.bench.kitti_root = v.bench.kitti_root;
+  s.bench.sequence = v.bench.sequence;
+  s.bench.config_path = v.bench.config_path;
+  s.bench.filter = v.bench.filter;
+  s.bench.plot_path = v.bench.plot_path;
+  s.bench.sweep_mu = v.bench.sweep_mu;
+  s.bench.sweep_thresholds = v.bench.sweep_thresholds;
   if (resubmit && data_changed) d.studio().submit_data();
 }
 
@@ -55,7 +64,11 @@ void act_on_text(UiDriver& d, const WidgetRecord& w) {
                       s.data.source == expected || s.data.source_labels == expected ||
                       s.data.target == expected || s.data.target_labels == expected ||
                       s.data.ground_truth == expected || s.pairs_file == expected ||
-                      s.session_path == expected || s.screenshot_path == expected;
+                      s.session_path == expected || s.screenshot_path == expected ||
+                      s.bench.path == expected || s.bench.kitti_root == expected ||
+                      s.bench.sequence == expected || s.bench.config_path == expected ||
+                      s.bench.filter == expected || s.bench.plot_path == expected ||
+                      s.bench.sweep_mu == expected || s.bench.sweep_thresholds == expected;
   if (!landed) FAIL("typed text did not reach the state: field '" << w.label << "'");
   restore(d, before, false);
   d.frame();
@@ -126,7 +139,8 @@ void act_on_splitter(UiDriver& d, const WidgetRecord& w) {
 
 }  // namespace
 
-int exercise_every_widget(UiDriver& d, const std::function<void()>& keep, int max_actions) {
+int exercise_every_widget(UiDriver& d, const std::function<void()>& keep, int max_actions,
+                          const std::string& window) {
   std::set<ImGuiID> done;
   int actions = 0;
   while (actions < max_actions) {
@@ -134,6 +148,7 @@ int exercise_every_widget(UiDriver& d, const std::function<void()>& keep, int ma
     for (const WidgetRecord& w : d.widgets()) {
       if (done.count(w.id) || !w.enabled) continue;
       if (w.window.rfind("##Combo", 0) == 0 || w.window.rfind("##Tooltip", 0) == 0) continue;
+      if (w.window.rfind(window, 0) != 0) continue;
       next = &w;
       break;
     }

@@ -31,12 +31,23 @@ struct PairOutcome {
   std::array<double, kStageCount> stage_ms{};  ///< wall time per stage [ms]
   double total_ms = 0.0;                       ///< sum of the stage times [ms]
   std::string report_json;  ///< the pagor.register/1 result without its config, one line
+  std::string source_name, target_name;  ///< the clouds' files or descriptions
+  std::vector<bool> level_success;       ///< per level: its candidate alone within the criterion
+  double margin = 0.0;  ///< D margin of the selection, fraction of mu * points (acceptance.hpp)
+  double score = 0.0;   ///< D of the selected candidate [m]; NaN when none was selected
 };
 
 /// Loads a pair and runs it through `pipeline` with the pipeline's configuration, and diagnoses it
 /// when it has ground truth (the report's `diagnosis`, null without). A pair whose files cannot
 /// be read comes back with `loaded == false` and the reason; other errors throw.
 PairOutcome run_pair(Pipeline& pipeline, const PairEntry& entry);
+
+/// The outcome of a pipeline that has run on `entry`'s clouds (`source_name`, `target_name` as
+/// run_pair reported them). After run_pair, a new configuration, `Pipeline::run` (which re-runs
+/// only the invalidated stages) and this give what a fresh run_pair would. Stage times are each
+/// stage's last run, so `total_ms` is the cost of a whole run with this configuration.
+PairOutcome pair_outcome(const Pipeline& pipeline, const PairEntry& entry,
+                         const std::string& source_name, const std::string& target_name);
 
 /// Rates and times over a set of outcomes.
 struct BenchmarkSummary {
@@ -59,5 +70,14 @@ struct BenchmarkSummary {
 
 /// Summarises outcomes.
 BenchmarkSummary summarize(const std::vector<PairOutcome>& outcomes);
+
+}  // namespace pagor
+
+namespace pagor {
+
+/// Reads the results a `pagor bench --out FILE` run wrote (one pagor.register/1 line per pair):
+/// names, verdicts, errors, levels and stage times, marked untimed when no timings are present.
+/// Throws InputError naming the file and line of a line that is not such a result.
+std::vector<PairOutcome> read_bench_results(const std::string& path);
 
 }  // namespace pagor

@@ -1,0 +1,280 @@
+// The benchmark view: its runner's re-evaluation against fresh runs, the plots (ticks, CSV, PNG),
+// session round trip, and a driven-UI walk over every widget of the view.
+
+#include <catch2/catch.hpp>
+#include <chrono>
+#include <fstream>
+#include <thread>
+
+#include "bench_plots.hpp"
+#include "bench_worker.hpp"
+#include "benchmark_view.hpp"
+#include "pagor/errors.hpp"
+#include "plot_export.hpp"
+#include "studio_test_util.hpp"
+#include "ui_driver.hpp"
+
+using namespace pagor;
+using namespace pagor::test;
+
+namespace {
+
+// Two semreg-dev pairs (03 and the first known negative) as a manifest in `tmp`.
+std::string small_manifest(const TempDir& tmp) {
+  const std::string d = shared_data() + "/semreg-dev/";
+  const std::string path = tmp.file("pairs.txt");
+  std::ofstream(path) << d << "03/source.pcd " << d << "03/target.pcd gt=" << d
+                      << "03/T_target_source.txt name=03\n"
+                      << d << "05/source.pcd " << d << "05/target.pcd gt=" << d
+                      << "05/T_target_source.txt name=05\n";
+  return path;
+}
+
+Config semreg_config() {
+  return load_config(PAGOR_SOURCE_DIR "/bench/manifests/semreg-dev.json");
+}
+
+void wait(studio::BenchWorker& w) {
+  REQUIRE(w.wait_idle(600));
+}
+
+}  // namespace
+
+TEST_CASE("benchmark view: a parameter change re-evaluates the set as a fresh run would") {
+  TempDir tmp;
+  const PairSet set = read_pair_manifest(small_manifest(tmp));
+  studio::BenchWorker worker;
+  Config config = semreg_config();
+  worker.open(set, config);
+  wait(worker);
+  CHECK(worker.status().cached == 2);
+  for (const Config& next : {[&] {
+                               Config c = config;
+                               c.verification.mu = 0.4;
+                               return c;
+                             }(),
+                             [&] {
+                               Config c = config;
+                               c.graph.thresholds = {0.01, 0.03};
+                               return c;
+                             }()}) {
+    worker.set_config(next);
+    wait(worker);
+    const std::vector<studio::BenchRow> rows = worker.rows();
+    REQUIRE(rows.size() == set.pairs.size());
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      Pipeline fresh(next);
+      const PairOutcome f = run_pair(fresh, set.pairs[i]);
+      const PairOutcome& o = rows[i].outcome;
+      INFO("pair " << f.name);
+      CHECK(rows[i].current);
+      CHECK(rows[i].cached);
+      CHECK(o.selected_level == f.selected_level);
+      CHECK(o.success == f.success);
+      CHECK(o.accepted == f.accepted);
+      CHECK(o.level_success == f.level_success);
+      CHECK(o.margin == f.margin);
+      REQUIRE(o.error.has_value() == f.error.has_value());
+      if (f.error) CHECK(o.error->translation == f.error->translation);
+    }
+  }
+  // A budget too small for any pipeline: pairs run from their files and are not kept.
+  worker.set_budget(1);
+  worker.open(set, config);
+  wait(worker);
+  CHECK(worker.status().cached == 0);
+  CHECK(worker.status().done == 2);
+}
+
+TEST_CASE("benchmark view: a sweep over the open set equals core run_sweep") {
+  TempDir tmp;
+  const PairSet set = read_pair_manifest(small_manifest(tmp));
+  studio::BenchWorker worker;
+  worker.open(set, semreg_config());
+  SweepGrid grid;
+  grid.mus = {0.5, 1.0};
+  const auto settings = sweep_settings(semreg_config(), grid);
+  worker.sweep(settings);
+  for (int i = 0; i < 6000 && (worker.status().sweeping || !worker.sweep_result()); ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  const auto got = worker.sweep_result();
+  REQUIRE(got);
+  const SweepResult want = run_sweep(set, settings);
+  REQUIRE(got->settings.size() == want.settings.size());
+  for (std::size_t k = 0; k < want.settings.size(); ++k) {
+    CHECK(got->settings[k].summary.successes == want.settings[k].summary.successes);
+    CHECK(got->settings[k].summary.upper_bound == want.settings[k].summary.upper_bound);
+    for (std::size_t p = 0; p < set.pairs.size(); ++p)
+      CHECK(got->settings[k].outcomes[p].selected_level ==
+            want.settings[k].outcomes[p].selected_level);
+  }
+}
+
+TEST_CASE("plots: round ticks, CSV with units, and a PNG") {
+  CHECK(studio::nice_ticks(0, 100) == std::vector<double>{0, 20, 40, 60, 80, 100});
+  CHECK(studio::nice_ticks(0.013, 0.18).front() == Approx(0.0));
+  CHECK(studio::nice_ticks(0.013, 0.18)[1] == Approx(0.05));
+  studio::Plot p;
+  p.kind = studio::PlotKind::bars;
+  p.value_label = "success";
+  p.value_unit = "%";
+  p.categories = {"mu=0.5", "mu=1"};
+  p.series = {{"success", {}, {50, 100}}, {"upper bound", {}, {100, 100}}};
+  CHECK(studio::plot_csv(p) ==
+        "\"category\",\"success [%]\",\"upper bound [%]\"\n\"mu=0.5\",50,100\n\"mu=1\",100,100\n");
+  studio::Plot l;
+  l.kind = studio::PlotKind::lines;
+  l.x_label = "mu";
+  l.x_unit = "m";
+  l.value_label = "success";
+  l.value_unit = "%";
+  l.series = {{"success", {0.5, 1}, {50, 100}}};
+  CHECK(studio::plot_csv(l) ==
+        "\"mu [m]\",\"series\",\"success [%]\"\n0.5,\"success\",50\n1,\"success\",100\n");
+
+  TempDir tmp;
+  const std::string png = tmp.file("plot.png");
+  studio::export_plot_png(p, png, 400, 300);
+  std::ifstream in(png, std::ios::binary);
+  char magic[8] = {};
+  in.read(magic, 8);
+  CHECK(std::string(magic + 1, 3) == "PNG");
+  CHECK_THROWS_AS(studio::export_plot_png(p, tmp.file("no/such/dir/plot.png"), 400, 300),
+                  InputError);
+}
+
+TEST_CASE("picking statistics count selections and lone successes per level") {
+  PairOutcome a, b, neg;
+  a.loaded = b.loaded = neg.loaded = true;
+  a.has_ground_truth = b.has_ground_truth = true;
+  a.selected_level = 1;
+  a.success = true;
+  a.level_success = {false, true, true};
+  b.selected_level = 0;
+  b.level_success = {false, false, true};
+  neg.negative = true;
+  neg.selected_level = 2;
+  neg.level_success = {true, true, true};  // never counted: no ground truth for negatives
+  a.score = 10;
+  const studio::Plot p = studio::picking_plot({a, b, neg});
+  REQUIRE(p.categories.size() == 3);
+  CHECK(p.series[0].y == std::vector<double>{1, 1, 0});  // selected
+  CHECK(p.series[1].y == std::vector<double>{0, 1, 2});  // alone would succeed
+  CHECK(p.series[2].y == std::vector<double>{0, 1, 0});  // selected and succeeded
+}
+
+TEST_CASE("benchmark view: state saved and restored with the session") {
+  TempDir tmp;
+  studio::AppState s = synthetic_state(tmp);
+  s.main_view = studio::MainView::benchmark;
+  s.bench.open = true;
+  s.bench.source = studio::BenchViewState::kitti_pairs;
+  s.bench.path = "pairs.txt";
+  s.bench.filter = "0";
+  s.bench.sort = 3;
+  s.bench.descending = true;
+  s.bench.budget_mib = 300;
+  s.bench.sweep_mu = "0.5,1";
+  studio::save_session(s, tmp.file("s.json"));
+  studio::AppState r;
+  studio::load_session(tmp.file("s.json"), r);
+  CHECK(r.main_view == studio::MainView::benchmark);
+  CHECK(r.bench.open);
+  CHECK(r.bench.source == studio::BenchViewState::kitti_pairs);
+  CHECK(r.bench.path == "pairs.txt");
+  CHECK(r.bench.filter == "0");
+  CHECK(r.bench.sort == 3);
+  CHECK(r.bench.descending);
+  CHECK(r.bench.budget_mib == 300);
+  CHECK(r.bench.sweep_mu == "0.5,1");
+  std::ofstream(tmp.file("bad.json"))
+      << R"({"schema": "pagor.session/1", "benchmark": {"show": 9}})";
+  CHECK_THROWS_WITH(studio::load_session(tmp.file("bad.json"), r),
+                    Catch::Contains("benchmark") && Catch::Contains("show"));
+}
+
+TEST_CASE("every widget of the benchmark view, driven") {
+  TempDir tmp;
+  studio::AppState s = files_state(tmp);
+  s.config = semreg_config();
+  s.bench.path = small_manifest(tmp);
+  s.bench.plot_path = tmp.file("plot");
+  UiDriver d(s);
+  d.settle();
+  REQUIRE(d.click_widget("benchmark view...", "Pagor Studio"));
+  d.frames(2);
+  REQUIRE(d.click_widget("open and run##bench", "Benchmark"));
+  const auto settle_bench = [&] {
+    for (int i = 0; i < 2400 && !d.studio().bench().wait_idle(0.05); ++i) d.frame();
+    d.frames(2);
+  };
+  settle_bench();
+  CHECK(d.studio().bench().status().done == 2);
+  // A row opens its pair in the pair view; the data panel leads back with the table kept.
+  REQUIRE(d.click_widget("03##bench_row0"));
+  d.settle();
+  CHECK(d.state().main_view == studio::MainView::pair);
+  CHECK(d.state().data.source.find("03/source.pcd") != std::string::npos);
+  REQUIRE(d.click_widget("back to the benchmark", "Pagor Studio"));
+  d.frames(2);
+  CHECK(d.studio().bench().rows().size() == 2);
+  const int acted = exercise_every_widget(
+      d,
+      [&] {
+        // Back to the view with the set open (after 'pair view', 'close' or a row click).
+        hide_clouds(d.state());
+        if (d.state().main_view == studio::MainView::benchmark && d.studio().bench().can_rerun())
+          return;
+        d.state().bench.path = small_manifest(tmp);
+        d.state().bench.source = studio::BenchViewState::manifest;
+        if (!d.studio().bench().can_rerun()) d.studio().open_benchmark_now();
+        d.state().main_view = studio::MainView::benchmark;
+        d.frames(2);
+      },
+      200, "Benchmark");
+  settle_bench();
+  // The sweep the walk started: its table applies a setting to the session.
+  d.state().bench.show = 0;
+  d.state().bench.filter.clear();
+  for (int i = 0; i < 4800 && d.studio().bench().status().sweeping; ++i) d.frame();
+  d.frames(3);
+  const auto sweep = d.studio().bench().sweep_result();
+  REQUIRE(sweep);
+  REQUIRE(d.click_widget("apply##sweep0"));
+  d.frames(2);
+  CHECK(d.state().config.verification.mu == sweep->settings[0].setting.config.verification.mu);
+  d.state().bench.source = studio::BenchViewState::kitti_pairs;
+  d.frames(2);
+  CHECK(d.find("KITTI root##bench", "Benchmark"));
+  std::set<std::string> benchmark_widgets;
+  for (const std::string& t : d.touched())
+    if (t.rfind("Benchmark/", 0) == 0) benchmark_widgets.insert(t);
+  CHECK(benchmark_widgets.size() >= 15);
+  WARN("acted " << acted << ", benchmark widgets touched: " << benchmark_widgets.size());
+}
+
+TEST_CASE("sweep line plots: success and one pair's D against mu, none for mixed grids") {
+  SweepGrid grid;
+  grid.mus = {0.5, 1.0};
+  SweepResult r;
+  for (const SweepSetting& s : sweep_settings(default_config(), grid)) {
+    PairOutcome o;
+    o.name = "p";
+    o.loaded = o.has_ground_truth = true;
+    o.success = s.config.verification.mu > 0.7;
+    o.score = 100 * s.config.verification.mu;
+    SweepSettingResult sr{s, {o}, summarize({o}), 0.0};
+    r.settings.push_back(sr);
+  }
+  const studio::Plot line = studio::sweep_line_plot(r);
+  REQUIRE(line.series.size() == 2);
+  CHECK(line.x_unit == "m");
+  CHECK(line.series[0].x == std::vector<double>{0.5, 1.0});
+  CHECK(line.series[0].y == std::vector<double>{0, 100});
+  const studio::Plot pair = studio::sweep_pair_plot(r, 0);
+  REQUIRE(pair.series.size() == 2);
+  CHECK(pair.series[0].x == std::vector<double>{1.0});             // success
+  CHECK(pair.series[1].y == std::vector<double>{50.0});            // failure, D = 50 m
+  r.settings[1].setting.config.graph.trim = TrimKind::difference;  // a second dimension varies
+  CHECK(studio::sweep_line_plot(r).series.empty());
+}
