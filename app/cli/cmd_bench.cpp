@@ -98,7 +98,7 @@ std::vector<Option> bench_options() {
           {"sequence", 1, "SEQ", "KITTI sequence (default 00)"},
           {"pairs", 1, "FILE", "KITTI pairs file: 'source target' frame numbers per line"},
           {"config", 1, "FILE", "configuration JSON (absent keys: the preset's values)"},
-          {"preset", 1, "NAME", "base configuration: default or paper (the published one)"},
+          {"preset", 1, "NAME", "base configuration: default, paper (the published one) or indoor"},
           {"out", 1, "FILE", "write one JSON line per pair (pagor.register/1 without config)"},
           {"resume", 0, "", "with --out: continue a killed run, skipping pairs already written"},
           {"threads", 1, "N", "threads for landmarks, graph and verification (default 1)"}};

@@ -35,6 +35,8 @@ int run_register(const Args& args);
 int run_register_correspondences(const Args& args, const Config& config);
 std::vector<Option> bench_options();
 int run_bench(const Args& args);
+std::vector<Option> indoor_options();
+int run_indoor(const Args& args);
 std::vector<Option> demo_options();
 int run_demo(const Args& args);
 

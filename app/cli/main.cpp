@@ -18,6 +18,8 @@ const std::vector<Command>& commands() {
       {"bench", "run every pair of a KITTI pairs file and summarise", bench_options, run_bench},
       {"landmarks", "extract semantic landmarks from one cloud", landmarks_options, run_landmarks},
       {"config", "print or check a configuration", config_options, run_config},
+      {"indoor", "generate an indoor sequence (car park, floor plan, scans) for bench",
+       indoor_options, run_indoor},
   };
   return kCommands;
 }
