@@ -191,7 +191,7 @@ struct ColumnDetectorParams {
 struct IndoorParams {
   double plan_spacing = 0.05;  ///< sampling of plan walls and column outlines [m]
   double height_min = -0.3;    ///< scan points lower than this (scan frame, z up) are left out [m]
-  double height_max = 1.5;     ///< scan points higher than this are left out [m]
+  double height_max = 1.9;     ///< scan points higher than this are left out [m]
   double floor_voxel = 0.05;   ///< 2-D grid of the projected scan [m]
   /// Find columns with the detector; false: take them from the scan's labels (`indoor` ids,
   /// column 2), fitting a circle to each labelled cluster.

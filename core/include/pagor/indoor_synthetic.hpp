@@ -76,7 +76,7 @@ struct IndoorLidarParams {
   int beams = 16;                ///< rows
   double fov_down = -15.0;       ///< lowest beam [deg]
   double fov_up = 15.0;          ///< highest beam [deg]
-  int azimuths = 900;            ///< columns over 360 deg
+  int azimuths = 1800;           ///< columns over 360 deg (VLP-16 at 10 Hz: 0.2 deg)
   double max_range = 40.0;       ///< [m]
   double range_noise = 0.02;     ///< standard deviation along the beam [m]
   double sensor_height = 0.5;    ///< above the floor [m]
