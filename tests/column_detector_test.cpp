@@ -48,8 +48,8 @@ TEST_CASE("the detector keeps columns and rejects walls, cars, concave shapes") 
   std::vector<Eigen::Vector2d> pts = facing_arc({6, 0}, 0.3, 140, 20, 0.005, rng);
   const std::size_t column_end = pts.size();
   for (int i = 0; i < 60; ++i) pts.emplace_back(-3.0, -1.5 + 0.05 * i);  // a wall
-  for (int i = 0; i < 40; ++i) pts.emplace_back(2.0 + 0.05 * i, 5.0);   // a car's side ...
-  for (int i = 0; i < 18; ++i) pts.emplace_back(2.0, 5.0 + 0.05 * i);   // ... and its end
+  for (int i = 0; i < 40; ++i) pts.emplace_back(2.0 + 0.05 * i, 5.0);    // a car's side ...
+  for (int i = 0; i < 18; ++i) pts.emplace_back(2.0, 5.0 + 0.05 * i);    // ... and its end
   // The inside of a circle seen from its centre's far side: concave towards the sensor.
   for (const auto& p : facing_arc({0, -8}, 0.3, 140, 20, 0.0, rng))
     pts.push_back(Eigen::Vector2d(0, -8) - (p - Eigen::Vector2d(0, -8)));

@@ -114,7 +114,8 @@ TEST_CASE("a malformed SVG plan names the element and its line") {
   CHECK_THAT(svg_error("<svg data-scale='1'>\n<line x1='0' y1='0' x2='1'/></svg>"),
              Catch::Contains("plan.svg:2: <line> #1: missing attribute y2"));
   CHECK_THAT(
-      svg_error("<svg data-scale='1'>\n<circle cx='0' cy='0' r='1'/>\n<circle cx='a' cy='0' r='1'/>"),
+      svg_error(
+          "<svg data-scale='1'>\n<circle cx='0' cy='0' r='1'/>\n<circle cx='a' cy='0' r='1'/>"),
       Catch::Contains("plan.svg:3: <circle> #2: attribute cx=\"a\" is not a number"));
   CHECK_THAT(svg_error("<svg data-scale='1'>\n\n<path d='M 0 0 C 1 1 2 2 3 3'/></svg>"),
              Catch::Contains("plan.svg:3: <path> #1: d: command 'C' (a curve or arc)"));

@@ -26,8 +26,8 @@ int run_threshold_comparison(const Args& args, const Config& config, const PairS
   if (tty) std::fprintf(stderr, "%40s\r", "");
   if (results.empty() || results.front().with_truth == 0)
     throw InputError(set.origin + ": no pair with ground truth could be loaded");
-  std::printf("%-22s %-10s %-13s %9s %10s %14s\n", "variant", "solver", "verification",
-              "success", "rate [%]", "mean [ms]");
+  std::printf("%-22s %-10s %-13s %9s %10s %14s\n", "variant", "solver", "verification", "success",
+              "rate [%]", "mean [ms]");
   for (std::size_t i = 0; i < results.size(); ++i) {
     const VariantResult& r = results[i];
     const Config& c = variants[i].config;
@@ -36,10 +36,11 @@ int run_threshold_comparison(const Args& args, const Config& config, const PairS
                 c.graph.thresholds.size() > 1 ? "lowest D" : "none (1 lvl)", r.successes,
                 r.with_truth, 100.0 * r.success_rate(), r.mean_ms);
   }
-  std::printf("\nsuccess: %.1f m / %.1f deg; thresholds in %s TRIM units; time: graph, clique, "
-              "pose and verification per pair\n",
-              config.evaluation.max_translation_error, config.evaluation.max_rotation_error,
-              to_string(config.graph.trim));
+  std::printf(
+      "\nsuccess: %.1f m / %.1f deg; thresholds in %s TRIM units; time: graph, clique, "
+      "pose and verification per pair\n",
+      config.evaluation.max_translation_error, config.evaluation.max_rotation_error,
+      to_string(config.graph.trim));
   return 0;
 }
 

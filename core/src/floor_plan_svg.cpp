@@ -5,9 +5,9 @@
 #include <cmath>
 #include <map>
 
-#include "parse_numbers.hpp"
 #include "pagor/errors.hpp"
 #include "pagor/floor_plan.hpp"
+#include "parse_numbers.hpp"
 
 namespace pagor {
 namespace {
@@ -292,9 +292,9 @@ FloorPlan parse_floor_plan_svg(std::string_view text, const std::string& origin)
       const double x = ctx.number(t, "x", 0.0), y = ctx.number(t, "y", 0.0);
       const double w = ctx.number(t, "width"), h = ctx.number(t, "height");
       if (!(w > 0) || !(h > 0)) ctx.fail(t, "width and height must be > 0");
-      plan.walls.push_back({{ctx.metric(x, y), ctx.metric(x + w, y), ctx.metric(x + w, y + h),
-                             ctx.metric(x, y + h)},
-                            true});
+      plan.walls.push_back(
+          {{ctx.metric(x, y), ctx.metric(x + w, y), ctx.metric(x + w, y + h), ctx.metric(x, y + h)},
+           true});
     } else if (t.name == "path") {
       path_walls(ctx, t, plan.walls);
     } else {
@@ -302,8 +302,8 @@ FloorPlan parse_floor_plan_svg(std::string_view text, const std::string& origin)
       if (t.name == "ellipse" && std::abs(ctx.number(t, "ry") - r) > 1e-9 * std::abs(r))
         ctx.fail(t, "an ellipse with rx != ry is not a circular column");
       if (!(r > 0)) ctx.fail(t, "radius must be > 0");
-      plan.columns.push_back({ctx.metric(ctx.number(t, "cx", 0.0), ctx.number(t, "cy", 0.0)),
-                              r * ctx.scale});
+      plan.columns.push_back(
+          {ctx.metric(ctx.number(t, "cx", 0.0), ctx.number(t, "cy", 0.0)), r * ctx.scale});
     }
   }
   if (!seen_svg) throw InputError(origin + ": not an SVG file (no <svg> element)");

@@ -1,10 +1,10 @@
 #include "pagor/indoor_synthetic.hpp"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <Eigen/Geometry>
 #include <limits>
 
 #include "pagor/atomic_file.hpp"
@@ -273,9 +273,9 @@ PointCloud ray_cast_indoor(const IndoorWorld& w, const Eigen::Vector3d& pose,
     const Vec2 d(std::cos(pose.z() + az), std::sin(pose.z() + az));
     const std::vector<Hit> hits = ray_hits(w, o, d);
     for (int b = 0; b < lidar.beams; ++b) {
-      const double el = (lidar.fov_down + (lidar.fov_up - lidar.fov_down) * b /
-                                              std::max(1, lidar.beams - 1)) *
-                        M_PI / 180.0;
+      const double el =
+          (lidar.fov_down + (lidar.fov_up - lidar.fov_down) * b / std::max(1, lidar.beams - 1)) *
+          M_PI / 180.0;
       const double s = std::tan(el);
       double t = kInf;
       for (const Hit& hit : hits) {
@@ -324,9 +324,8 @@ void write_indoor_sequence(const std::string& dir, const IndoorSceneParams& para
   write_floor_plan(w.plan, (fs::path(dir) / "plan.json").string());
   write_floor_plan(w.built, (fs::path(dir) / "built.json").string());
   std::string poses = "# x [m] y [m] yaw [rad] of each scan in the plan frame\n";
-  std::string pairs =
-      "# generated indoor sequence (seed " + std::to_string(params.seed) +
-      "): each scan against the floor plan; run with pagor bench --preset indoor\n";
+  std::string pairs = "# generated indoor sequence (seed " + std::to_string(params.seed) +
+                      "): each scan against the floor plan; run with pagor bench --preset indoor\n";
   char buf[160];
   for (int k = 0; k < scans; ++k) {
     const Eigen::Vector3d& pose = w.trajectory[static_cast<std::size_t>(k)];

@@ -242,8 +242,8 @@ Config load_config(const std::string& path, const std::string& base_preset = "de
 std::string config_to_json(const Config& config, int indent = 2);
 
 /// One section (`label_scheme`, `landmarks`, `correspondences`, `graph`, `clique`, `gnc`,
-/// `verification`, `acceptance`, `evaluation`, `indoor`) as compact JSON; two configs agree on a section iff
-/// these are equal. The pipeline uses it to find what a change invalidates.
+/// `verification`, `acceptance`, `evaluation`, `indoor`) as compact JSON; two configs agree on a
+/// section iff these are equal. The pipeline uses it to find what a change invalidates.
 std::string section_json(const Config& config, const std::string& section);
 
 /// Checks values (ranges, orders, class names). Throws ConfigError naming the key path.

@@ -73,14 +73,14 @@ IndoorWorld make_indoor_world(const IndoorSceneParams& params, int scans);
 
 /// The lidar.
 struct IndoorLidarParams {
-  int beams = 16;                ///< rows
-  double fov_down = -15.0;       ///< lowest beam [deg]
-  double fov_up = 15.0;          ///< highest beam [deg]
-  int azimuths = 1800;           ///< columns over 360 deg (VLP-16 at 10 Hz: 0.2 deg)
-  double max_range = 40.0;       ///< [m]
-  double range_noise = 0.02;     ///< standard deviation along the beam [m]
-  double sensor_height = 0.5;    ///< above the floor [m]
-  double dropout = 0.02;         ///< fraction of returns lost
+  int beams = 16;              ///< rows
+  double fov_down = -15.0;     ///< lowest beam [deg]
+  double fov_up = 15.0;        ///< highest beam [deg]
+  int azimuths = 1800;         ///< columns over 360 deg (VLP-16 at 10 Hz: 0.2 deg)
+  double max_range = 40.0;     ///< [m]
+  double range_noise = 0.02;   ///< standard deviation along the beam [m]
+  double sensor_height = 0.5;  ///< above the floor [m]
+  double dropout = 0.02;       ///< fraction of returns lost
 };
 
 /// One scan from pose (x, y, yaw) in the sensor frame (z up, origin at the sensor). `rng` draws
@@ -99,10 +99,10 @@ DetectionScore score_scan_columns(const IndoorWorld& world, const Eigen::Vector3
                                   int min_visible_points = 6, double match_distance = 0.15);
 
 /// Writes a sequence into `dir` (created if needed): `plan.json` (as designed), `built.json`
-/// (as built, the columns the detector should find), `scans/NNNNNN.bin` (KITTI float32 x, y, z, reflectance 0), `gt/NNNNNN.txt`
-/// (4x4 T_plan_scan), `poses.txt` (one `x y yaw[rad]` per scan) and `pairs.txt`, a manifest for
-/// `pagor bench --manifest` with each scan against the plan. Every file is written atomically.
-/// Throws InputError.
+/// (as built, the columns the detector should find), `scans/NNNNNN.bin` (KITTI float32 x, y, z,
+/// reflectance 0), `gt/NNNNNN.txt` (4x4 T_plan_scan), `poses.txt` (one `x y yaw[rad]` per scan) and
+/// `pairs.txt`, a manifest for `pagor bench --manifest` with each scan against the plan. Every file
+/// is written atomically. Throws InputError.
 void write_indoor_sequence(const std::string& dir, const IndoorSceneParams& params, int scans,
                            const IndoorLidarParams& lidar = {});
 

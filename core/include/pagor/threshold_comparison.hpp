@@ -29,9 +29,9 @@ std::vector<Variant> threshold_variants(const Config& base);
 /// What a variant achieved.
 struct VariantResult {
   std::string name;
-  int with_truth = 0;      ///< pairs with ground truth that loaded
-  int successes = 0;       ///< selected pose within the criterion
-  double mean_ms = 0.0;    ///< mean time of the stages from the graph on [ms]
+  int with_truth = 0;    ///< pairs with ground truth that loaded
+  int successes = 0;     ///< selected pose within the criterion
+  double mean_ms = 0.0;  ///< mean time of the stages from the graph on [ms]
   double success_rate() const { return with_truth ? double(successes) / with_truth : 0.0; }
 };
 
