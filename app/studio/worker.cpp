@@ -83,7 +83,7 @@ void Worker::handle(Request request) {
       status_.activity = "loading " + describe(*request.data);
     }
     try {
-      LoadedPair pair = load_pair(*request.data);
+      LoadedPair pair = load_pair(*request.data, request.config.indoor);
       if (!pair.source.cloud.has_labels())
         throw InputError(pair.source_name + ": no semantic labels");
       if (!pair.target.cloud.has_labels())
