@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Runs one libFuzzer target for a bounded time with its seed corpus (the committed seeds in
 # fuzz/corpus/<target> plus the matching files of ../shared/data), and prints its final stats.
-# usage: fuzz/run.sh BUILD_DIR TARGET SECONDS     (TARGET: pcd ply lzf config kitti_text)
+# usage: fuzz/run.sh BUILD_DIR TARGET SECONDS     (TARGET: pcd ply lzf config kitti_text floor_plan)
 # BUILD_DIR must be configured with clang and -DPAGOR_FUZZ=ON -DPAGOR_SANITIZE=ON (see README).
 # Exit status is non-zero when the fuzzer found a crash, a leak, a timeout or an out-of-memory;
 # the input is then in BUILD_DIR/fuzz-artifacts/.

@@ -122,15 +122,19 @@ std::vector<Option> bench_options() {
           {"sequence", 1, "SEQ", "KITTI sequence (default 00)"},
           {"pairs", 1, "FILE", "KITTI pairs file: 'source target' frame numbers per line"},
           {"config", 1, "FILE", "configuration JSON (absent keys: the preset's values)"},
-          {"preset", 1, "NAME", "base configuration: default or paper (the published one)"},
+          {"preset", 1, "NAME", "base configuration: default, paper (the published one) or indoor"},
           {"out", 1, "FILE", "write one JSON line per pair (pagor.register/1 without config)"},
           {"resume", 0, "", "with --out: continue a killed run, skipping pairs already written"},
-          {"threads", 1, "N", "threads for landmarks, graph and verification (default 1)"}};
+          {"threads", 1, "N", "threads for landmarks, graph and verification (default 1)"},
+          {"compare-thresholds", 0, "",
+           "instead: the pyramid vs each threshold alone vs each alone with the exact maximum "
+           "clique (TEASER++-like), success rates"}};
 }
 
 int run_bench(const Args& args) {
   const Config config = config_from_args(args);
   const PairSet set = pair_set_from_args(args);
+  if (args.has("compare-thresholds")) return run_threshold_comparison(args, config, set);
   if (args.has("resume") && !args.has("out")) throw UsageError("--resume goes with --out FILE");
   std::optional<BenchJournal> journal;
   if (args.has("out"))

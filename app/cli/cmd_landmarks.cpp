@@ -96,7 +96,7 @@ int run_landmarks(const Args& args) {
 std::vector<Option> config_options() {
   return {
       {"print-default", 0, "", "print the full default configuration as JSON"},
-      {"preset", 1, "NAME", "print a preset (default, paper) as JSON"},
+      {"preset", 1, "NAME", "print a preset (default, paper, indoor) as JSON"},
       {"check", 1, "FILE", "validate a configuration file and print it with defaults filled in"}};
 }
 

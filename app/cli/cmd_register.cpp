@@ -114,7 +114,7 @@ void print_registration(const Pipeline& p) {
 std::vector<Option> register_options() {
   std::vector<Option> o = pair_options();
   o.push_back({"config", 1, "FILE", "configuration JSON (absent keys: the preset's values)"});
-  o.push_back({"preset", 1, "NAME", "base configuration: default or paper (the published one)"});
+  o.push_back({"preset", 1, "NAME", "base configuration: default, paper (the published one) or indoor"});
   o.push_back({"json", 1, "OUT", "write the result as JSON (schema pagor.register/1)"});
   o.push_back({"threads", 1, "N", "threads for graph construction and verification (default 1)"});
   o.push_back({"correspondences", 1, "FILE",
@@ -134,7 +134,7 @@ int run_register(const Args& args) {
   const PairSource& src = *chosen;
   std::printf("pair: %s\n", describe(src).c_str());
   const auto t0 = std::chrono::steady_clock::now();
-  LoadedPair pair = load_pair(src);
+  LoadedPair pair = load_pair(src, config.indoor);
   for (const auto& w : pair.source.warnings) warn(w);
   for (const auto& w : pair.target.warnings) warn(w);
   std::printf(

@@ -159,7 +159,7 @@ int run_register_correspondences(const Args& args, const Config& config) {
               r.input.inlier.empty() ? "" : " (with inlier flags)");
   std::optional<LoadedPair> pair;
   if (const auto src = pair_source_from_args(args)) {
-    pair = load_pair(*src);
+    pair = load_pair(*src, config.indoor);
     for (const auto& w : pair->source.warnings) warn(w);
     for (const auto& w : pair->target.warnings) warn(w);
     r.ground_truth = pair->T_target_source_gt;

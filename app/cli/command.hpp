@@ -10,6 +10,7 @@
 #include "common/pair_args.hpp"
 #include "pagor/config.hpp"
 #include "pagor/dataset.hpp"
+#include "pagor/pair_set.hpp"
 
 namespace pagor::cli {
 
@@ -37,6 +38,10 @@ std::vector<Option> bench_options();
 int run_bench(const Args& args);
 std::vector<Option> sweep_options();
 int run_sweep_command(const Args& args);
+std::vector<Option> indoor_options();
+int run_indoor(const Args& args);
+/// `bench --compare-thresholds` (bench_compare.cpp).
+int run_threshold_comparison(const Args& args, const Config& config, const PairSet& set);
 std::vector<Option> demo_options();
 int run_demo(const Args& args);
 

@@ -20,6 +20,8 @@ const std::vector<Command>& commands() {
        sweep_options, run_sweep_command},
       {"landmarks", "extract semantic landmarks from one cloud", landmarks_options, run_landmarks},
       {"config", "print or check a configuration", config_options, run_config},
+      {"indoor", "generate an indoor sequence (car park, floor plan, scans) for bench",
+       indoor_options, run_indoor},
   };
   return kCommands;
 }

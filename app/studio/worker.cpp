@@ -84,7 +84,7 @@ void Worker::handle(Request request) {
     }
     try {
       // Unlabelled clouds are fine: the pipeline falls back to class-agnostic landmarks.
-      LoadedPair pair = load_pair(*request.data);
+      LoadedPair pair = load_pair(*request.data, request.config.indoor);
       source_ = std::make_shared<const PointCloud>(std::move(pair.source.cloud));
       target_ = std::make_shared<const PointCloud>(std::move(pair.target.cloud));
       ground_truth_ = pair.T_target_source_gt;

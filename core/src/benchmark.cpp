@@ -33,7 +33,7 @@ PairOutcome run_pair(Pipeline& pipeline, const PairEntry& entry) {
   o.negative = entry.negative;
   LoadedPair pair;
   try {
-    pair = load_pair(entry.source);
+    pair = load_pair(entry.source, pipeline.config().indoor);
   } catch (const InputError& e) {
     o.load_error = e.what();
     return o;

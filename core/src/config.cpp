@@ -176,6 +176,25 @@ void fields_of_evaluation(V& v, P& p) {
   v("max_rotation_error", p.max_rotation_error);
 }
 
+template <class V, class P>
+void fields_of_columns(V& v, P& p) {
+  v("cluster_tolerance", p.cluster_tolerance);
+  v("min_radius", p.min_radius);
+  v("max_radius", p.max_radius);
+  v("max_rms", p.max_rms);
+  v("min_points", p.min_points);
+  v("min_arc_deg", p.min_arc_deg);
+}
+template <class V, class P>
+void fields_of_indoor(V& v, P& p) {
+  v("plan_spacing", p.plan_spacing);
+  v("height_min", p.height_min);
+  v("height_max", p.height_max);
+  v("floor_voxel", p.floor_voxel);
+  v("detect_columns", p.detect_columns);
+  v("columns", p.columns);
+}
+
 template <class T>
 struct IsParams : std::false_type {};
 #define PAGOR_FIELDS(Type, fn)               \
@@ -200,6 +219,8 @@ PAGOR_FIELDS(VerificationParams, fields_of_verification)
 PAGOR_FIELDS(RefinementParams, fields_of_refinement)
 PAGOR_FIELDS(AcceptanceParams, fields_of_acceptance)
 PAGOR_FIELDS(EvaluationParams, fields_of_evaluation)
+PAGOR_FIELDS(ColumnDetectorParams, fields_of_columns)
+PAGOR_FIELDS(IndoorParams, fields_of_indoor)
 #undef PAGOR_FIELDS
 
 // ---- writing ----------------------------------------------------------------------------------
@@ -278,7 +299,8 @@ json encode_config(const Config& c) {
               {"verification", encode(c.verification)},
               {"refinement", encode(c.refinement)},
               {"acceptance", encode(c.acceptance)},
-              {"evaluation", encode(c.evaluation)}};
+              {"evaluation", encode(c.evaluation)},
+              {"indoor", encode(c.indoor)}};
 }
 
 // ---- reading ----------------------------------------------------------------------------------
@@ -475,8 +497,40 @@ Config default_config() {
   return c;
 }
 
+// The paper's car-park experiment: a scan against a floor plan. Columns (diameter 0.6 m) are the
+// landmarks, represented on both sides by their outline (floor_projection.hpp) so that a cluster
+// centroid is the column's centre; walls are the verification's points.
+static Config indoor_config() {
+  Config c;
+  c.label_scheme = builtin_label_scheme("indoor");
+  ClassParams column{"column", LandmarkMethod::cluster};
+  column.voxel_size = 0.05;
+  column.cluster_tolerance = 0.2;
+  column.min_points = 5;
+  column.max_points = 400;
+  c.landmarks.classes = {column};
+  c.landmarks.adapt_to_spacing = false;
+  c.landmarks.fallback.mode = FallbackMode::never;
+  c.correspondences.max_correspondences = 3000;
+  c.graph.trim = TrimKind::difference;
+  c.graph.thresholds = {0.05, 0.10, 0.15, 0.20, 0.25};
+  c.graph.min_length = 0.5;
+  c.gnc.model = PoseModel::se2;
+  c.gnc.noise_bound = 0.3;
+  c.verification.voxel_size = 0.1;
+  c.verification.mu = 0.5;
+  c.acceptance.inlier_distance = 0.2;
+  c.acceptance.min_overlap = 0.3;
+  c.acceptance.min_inliers = 3;
+  c.acceptance.min_margin = 0.0;  // calibrated on the generated car parks without it
+  c.refinement.enabled = false;   // not measured on scan-vs-plan pairs (planar points)
+  c.evaluation.max_translation_error = 1.0;
+  c.evaluation.max_rotation_error = 3.0;
+  return c;
+}
+
 std::vector<std::string> preset_names() {
-  return {"default", "paper"};
+  return {"default", "paper", "indoor"};
 }
 
 Config preset_config(const std::string& name) {
@@ -495,6 +549,7 @@ Config preset_config(const std::string& name) {
     c.refinement.enabled = false;
     return c;
   }
+  if (name == "indoor") return indoor_config();
   std::string known;
   for (const auto& n : preset_names()) known += (known.empty() ? "" : ", ") + n;
   throw ConfigError("unknown preset '" + name + "' (presets: " + known + ")");
@@ -594,6 +649,19 @@ void validate(const Config& c, const std::string& origin) {
         "must be > 0 [m]");
   check(ctx, c.evaluation.max_rotation_error > 0, "evaluation.max_rotation_error",
         "must be > 0 [deg]");
+  const IndoorParams& in = c.indoor;
+  check(ctx, in.plan_spacing >= kMinVoxelSize, "indoor.plan_spacing", "must be >= 0.001 [m]");
+  check(ctx, in.height_max > in.height_min, "indoor.height_max", "must be > height_min [m]");
+  check(ctx, in.floor_voxel >= kMinVoxelSize, "indoor.floor_voxel", "must be >= 0.001 [m]");
+  const ColumnDetectorParams& cd = in.columns;
+  check(ctx, cd.cluster_tolerance > 0, "indoor.columns.cluster_tolerance", "must be > 0 [m]");
+  check(ctx, cd.min_radius > 0, "indoor.columns.min_radius", "must be > 0 [m]");
+  check(ctx, cd.max_radius > cd.min_radius, "indoor.columns.max_radius",
+        "must be > min_radius [m]");
+  check(ctx, cd.max_rms > 0, "indoor.columns.max_rms", "must be > 0 [m]");
+  check(ctx, cd.min_points >= 3, "indoor.columns.min_points", "must be >= 3");
+  check(ctx, cd.min_arc_deg >= 0 && cd.min_arc_deg <= 360, "indoor.columns.min_arc_deg",
+        "must be in [0, 360] [deg]");
 }
 
 Config parse_config(const std::string& json_text, const std::string& origin,
@@ -634,6 +702,8 @@ Config parse_config(const std::string& json_text, const std::string& origin,
       decode(ctx, v, key, c.acceptance);
     else if (key == "evaluation")
       decode(ctx, v, key, c.evaluation);
+    else if (key == "indoor")
+      decode(ctx, v, key, c.indoor);
     else
       fail(ctx, key, "unknown key");
   }

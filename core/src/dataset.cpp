@@ -1,20 +1,31 @@
 #include "pagor/dataset.hpp"
 
 #include "pagor/errors.hpp"
+#include "pagor/floor_plan.hpp"
+#include "pagor/floor_projection.hpp"
 #include "pagor/kitti.hpp"
 #include "pagor/pair_set.hpp"
 #include "pagor/synthetic.hpp"
 
 namespace pagor {
 
-LoadedPair load_pair(const PairSource& src) {
+LoadedPair load_pair(const PairSource& src, const IndoorParams& indoor) {
   LoadedPair out;
   switch (src.kind) {
     case PairSource::Kind::files:
       if (src.source.empty() || src.target.empty())
         throw InputError("a file pair needs both a source and a target cloud");
       out.source = load_cloud(src.source, src.source_labels);
-      out.target = load_cloud(src.target, src.target_labels);
+      if (is_floor_plan_path(src.target)) {
+        out.target.cloud = sample_floor_plan(read_floor_plan(src.target), indoor.plan_spacing);
+        try {
+          out.source.cloud = prepare_floor_scan(out.source.cloud, indoor).cloud;
+        } catch (const InputError& e) {
+          throw InputError(src.source + ": " + e.what());
+        }
+      } else {
+        out.target = load_cloud(src.target, src.target_labels);
+      }
       out.source_name = src.source;
       out.target_name = src.target;
       break;

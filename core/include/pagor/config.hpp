@@ -195,6 +195,31 @@ struct EvaluationParams {
   double max_rotation_error = 5.0;     ///< [deg]
 };
 
+/// The column detector for indoor scans (column_detector.hpp): 2-D clusters of the projected scan
+/// whose extent and circle fit match a column.
+struct ColumnDetectorParams {
+  double cluster_tolerance = 0.15;  ///< max gap between points of one cluster [m]
+  double min_radius = 0.2;          ///< smallest fitted radius accepted [m]
+  double max_radius = 0.45;         ///< largest fitted radius accepted [m]
+  double max_rms = 0.03;            ///< largest RMS distance of the points to the fitted circle [m]
+  int min_points = 6;               ///< least points of a cluster (cells of the floor grid)
+  double min_arc_deg = 60.0;        ///< least angle the points cover around the centre [deg]
+};
+
+/// Indoor re-localization against a floor plan (floor_plan.hpp, floor_projection.hpp). Applies
+/// when a pair's target is a floor plan (`.json` or `.svg`): the plan is sampled into points and
+/// the scan is projected to the floor plane with its columns found.
+struct IndoorParams {
+  double plan_spacing = 0.05;  ///< sampling of plan walls and column outlines [m]
+  double height_min = -0.3;    ///< scan points lower than this (scan frame, z up) are left out [m]
+  double height_max = 1.9;     ///< scan points higher than this are left out [m]
+  double floor_voxel = 0.05;   ///< 2-D grid of the projected scan [m]
+  /// Find columns with the detector; false: take them from the scan's labels (`indoor` ids,
+  /// column 2), fitting a circle to each labelled cluster.
+  bool detect_columns = true;
+  ColumnDetectorParams columns;  ///< the detector
+};
+
 /// The whole configuration.
 struct Config {
   LabelScheme label_scheme;  ///< default: semantickitti-train
@@ -207,6 +232,7 @@ struct Config {
   RefinementParams refinement;
   AcceptanceParams acceptance;
   EvaluationParams evaluation;
+  IndoorParams indoor;  ///< scans against floor plans
 };
 
 /// The project's outdoor defaults: the paper's method with what measurement on the shared data
@@ -217,7 +243,9 @@ Config default_config();
 /// A named configuration: `default` (default_config()) or `paper` (the published outdoor
 /// configuration exactly: car, trunk, pole clusters and building FPFH at the configured voxel
 /// sizes, ratio TRIM 0.02/0.04/0.08/0.16, SE(3), truncated D with mu = 1 m, no spacing
-/// adaptation, no class-agnostic keypoints, no refinement). Throws ConfigError listing the names.
+/// adaptation, no class-agnostic keypoints, no refinement) or `indoor` (a scan against a floor
+/// plan, as the paper's car park: columns as landmarks, difference TRIM 0.05..0.25 m, SE(2),
+/// success 1 m / 3 deg). Throws ConfigError listing the names.
 Config preset_config(const std::string& name);
 
 /// Names of the presets.
@@ -236,8 +264,8 @@ Config load_config(const std::string& path, const std::string& base_preset = "de
 std::string config_to_json(const Config& config, int indent = 2);
 
 /// One section (`label_scheme`, `landmarks`, `correspondences`, `graph`, `clique`, `gnc`,
-/// `verification`, `acceptance`, `evaluation`) as compact JSON; two configs agree on a section iff
-/// these are equal. The pipeline uses it to find what a change invalidates.
+/// `verification`, `acceptance`, `evaluation`, `indoor`) as compact JSON; two configs agree on a
+/// section iff these are equal. The pipeline uses it to find what a change invalidates.
 std::string section_json(const Config& config, const std::string& section);
 
 /// Checks values (ranges, orders, class names). Throws ConfigError naming the key path.

@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "pagor/config.hpp"
 #include "pagor/io.hpp"
 #include "pagor/types.hpp"
 
@@ -35,8 +36,10 @@ struct LoadedPair {
   std::optional<Transform> T_target_source_gt;  ///< ground truth when known
 };
 
-/// Loads a pair. Throws InputError naming the file at fault.
-LoadedPair load_pair(const PairSource& src);
+/// Loads a pair. A file pair whose target is a floor plan (`.json` or `.svg`, floor_plan.hpp) is
+/// an indoor pair: the plan is sampled into points and the scan projected to the floor with its
+/// columns found, both by `indoor` (floor_projection.hpp). Throws InputError naming the file.
+LoadedPair load_pair(const PairSource& src, const IndoorParams& indoor = {});
 
 /// A one-line description, e.g. "KITTI 00: 20 -> 30".
 std::string describe(const PairSource& src);

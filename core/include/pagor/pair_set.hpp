@@ -9,6 +9,8 @@
 /// - `source_labels=FILE`, `target_labels=FILE`: SemanticKITTI `.label` files for the clouds;
 /// - `name=TEXT`: the pair's name in tables (default: the line number);
 /// - `overlap=no`: a known negative, two scans that share nothing (no `gt` then).
+/// A TARGET that is a floor plan (`.json` or `.svg`, floor_plan.hpp) makes the pair an indoor
+/// pair: the scan is registered against the plan (dataset.hpp).
 
 #include <optional>
 #include <string>

@@ -1,0 +1,83 @@
+#pragma once
+/// \file floor_plan.hpp
+/// A floor plan as the map of indoor re-localization (the paper's car-park experiment): walls as
+/// 2-D polylines and columns as circles, in metres. The plan is sampled into metric points (walls
+/// and column outlines, z = 0) labelled in the `indoor` scheme (wall 1, column 2), so the columns
+/// become landmarks of class `column` and the walls the points of the verification.
+///
+/// JSON format (`pagor.floor_plan/1`, every coordinate in metres, x right, y up):
+///
+///     {"format": "pagor.floor_plan/1",
+///      "walls":   [{"points": [[0, 0], [40, 0], [40, 25]], "closed": false}, ...],
+///      "columns": [{"center": [5.0, 5.0], "radius": 0.3}, ...]}
+///
+/// `format` and `closed` are optional; a wall needs at least two points, a column a radius > 0.
+///
+/// SVG (what CAD and drawing tools export): `<line>`, `<polyline>`, `<polygon>`, `<rect>` and
+/// `<path>` (commands M, L, H, V, Z, absolute or relative) are walls, `<circle>` (and `<ellipse>`
+/// with rx = ry) are columns. The scale is the attribute `data-scale` of the root `<svg>` (metres
+/// per SVG unit), or else `width` in m, cm or mm together with a `viewBox`. The SVG y axis points
+/// down; it is flipped so the plan has y up. Curves and `transform` attributes are rejected with a
+/// message naming the element (flatten and apply them when exporting).
+///
+/// Every malformed element is an InputError naming the file and the element (`walls[3].points[1]`
+/// in JSON; the tag, its number and line in SVG).
+
+#include <Eigen/Core>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "pagor/types.hpp"
+
+namespace pagor {
+
+/// A circular column of the plan.
+struct PlanColumn {
+  Eigen::Vector2d center = Eigen::Vector2d::Zero();  ///< [m]
+  double radius = 0.3;                               ///< [m]
+};
+
+/// A wall: a polyline of at least two vertices.
+struct PlanWall {
+  std::vector<Eigen::Vector2d> points;  ///< vertices [m]
+  bool closed = false;                  ///< whether the last vertex joins the first
+};
+
+/// A floor plan in metres.
+struct FloorPlan {
+  std::vector<PlanWall> walls;
+  std::vector<PlanColumn> columns;
+};
+
+/// Label ids the sampled plan and the projected scans carry (the `indoor` label scheme).
+constexpr std::uint32_t kWallLabel = 1;
+constexpr std::uint32_t kColumnLabel = 2;
+
+/// Parses the JSON format above. `origin` names the file in messages. Throws InputError.
+FloorPlan parse_floor_plan_json(std::string_view text, const std::string& origin);
+
+/// Parses an SVG plan (see above). Throws InputError naming the element.
+FloorPlan parse_floor_plan_svg(std::string_view text, const std::string& origin);
+
+/// Reads a plan by extension: `.json` or `.svg`. Throws InputError naming the file.
+FloorPlan read_floor_plan(const std::string& path);
+
+/// Whether a path names a floor plan rather than a cloud (extension `.json` or `.svg`).
+bool is_floor_plan_path(const std::string& path);
+
+/// The plan as JSON in the format above.
+std::string floor_plan_to_json(const FloorPlan& plan);
+
+/// Writes the plan as JSON, atomically. Throws InputError.
+void write_floor_plan(const FloorPlan& plan, const std::string& path);
+
+/// Points every `spacing` [m] along each wall (label kWallLabel) and around each column's outline
+/// (kColumnLabel, at least 8 per column), all at z = 0. `spacing` must be > 0.
+PointCloud sample_floor_plan(const FloorPlan& plan, double spacing);
+
+/// Points every `spacing` [m] around a circle, at least 8, z = 0, all with `label`.
+void sample_circle(const Eigen::Vector2d& center, double radius, double spacing,
+                   std::uint32_t label, PointCloud& out);
+
+}  // namespace pagor
