@@ -168,3 +168,22 @@ TEST_CASE("the JSON report carries the documented top-level keys") {
         "\"ground_truth\"", "\"schema\": \"pagor.register/1\"", "\"clique\""})
     CHECK_THAT(json, Catch::Contains(key));
 }
+
+TEST_CASE("two threads give the same result as one") {
+  // The parallel paths: both clouds' landmarks at once, graph rows and verification split over
+  // threads. Also what the ThreadSanitizer run exercises (README, Development).
+  SyntheticScene scene = make_synthetic_scene();
+  Pipeline one(default_config(), 1), two(default_config(), 2);
+  one.set_input(scene.source, scene.target);
+  two.set_input(scene.source, scene.target);
+  one.run();
+  two.run();
+  CHECK(two.source_landmarks().landmarks.size() == one.source_landmarks().landmarks.size());
+  CHECK(two.target_landmarks().landmarks.size() == one.target_landmarks().landmarks.size());
+  CHECK(two.correspondences().items.size() == one.correspondences().items.size());
+  CHECK(two.graph().edges_at_level == one.graph().edges_at_level);
+  CHECK(two.verification().scores == one.verification().scores);
+  CHECK(two.selected_level() == one.selected_level());
+  REQUIRE(one.selected_transform());
+  CHECK(two.selected_transform()->isApprox(*one.selected_transform()));
+}

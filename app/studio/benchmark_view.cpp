@@ -18,8 +18,9 @@ namespace pagor::studio {
 namespace {
 
 const char* const kColumns[] = {"pair",  "verdict",      "success",   "t err [m]", "r err [deg]",
-                                "level", "D margin [%]", "time [ms]", "cached"};
-constexpr int kColumnCount = 9;
+                                "level", "D margin [%]", "time [ms]", "cached",    "diagnosis"};
+constexpr int kColumnCount = 10;
+constexpr int kDiagnosisColumn = 9;  // sorted by name, like the pair
 const char* const kShow[] = {"all pairs", "failures", "successes", "accepted", "rejected"};
 constexpr float kPlotHeight = 260.0f;  // [px]
 
@@ -209,6 +210,12 @@ void row_cells(const BenchRow& r) {
   ImGui::Text("%.0f", r.last_ms);
   ImGui::TableNextColumn();
   ImGui::TextUnformatted(r.cached ? "yes" : "no");
+  ImGui::TableNextColumn();  // the stage at fault (diagnosis.hpp); needs the ground truth
+  ImGui::TextUnformatted(o.diagnosis.empty() ? "-" : o.diagnosis.c_str());
+  if (!o.diagnosis.empty())
+    ui::tooltip(
+        "the diagnosis against the ground truth: open the pair and switch the bottom "
+        "panel to 'diagnosis' for why");
 }
 
 void rows_table(UiContext& ui, const std::vector<BenchRow>& rows, BenchWorker& bench) {
@@ -216,11 +223,13 @@ void rows_table(UiContext& ui, const std::vector<BenchRow>& rows, BenchWorker& b
   std::vector<std::size_t> order;
   for (std::size_t i = 0; i < rows.size(); ++i)
     if (shown(rows[i], v)) order.push_back(i);
+  const auto text = [&](std::size_t i) -> const std::string& {
+    return v.sort == kDiagnosisColumn ? rows[i].outcome.diagnosis : rows[i].outcome.name;
+  };
+  const bool by_text = v.sort == 0 || v.sort == kDiagnosisColumn;
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    const bool less = v.sort == 0 ? rows[a].outcome.name < rows[b].outcome.name
-                                  : key(rows[a], v.sort) < key(rows[b], v.sort);
-    const bool more = v.sort == 0 ? rows[b].outcome.name < rows[a].outcome.name
-                                  : key(rows[b], v.sort) < key(rows[a], v.sort);
+    const bool less = by_text ? text(a) < text(b) : key(rows[a], v.sort) < key(rows[b], v.sort);
+    const bool more = by_text ? text(b) < text(a) : key(rows[b], v.sort) < key(rows[a], v.sort);
     return v.descending ? more : less;
   });
   const float h = std::min(ImGui::GetTextLineHeightWithSpacing() * (order.size() + 1.5f), 300.0f);
