@@ -8,8 +8,10 @@
 namespace pagor {
 namespace {
 
+// Shifted as unsigned: a negative cell index shifted left is undefined behaviour.
 std::int64_t cell_key(std::int64_t ix, std::int64_t iy) {
-  return (ix << 32) ^ (iy & 0xFFFFFFFF);
+  return static_cast<std::int64_t>((static_cast<std::uint64_t>(ix) << 32) ^
+                                   (static_cast<std::uint64_t>(iy) & 0xFFFFFFFFu));
 }
 
 // Largest angular gap between the points around `c`, subtracted from 360 [deg].

@@ -28,7 +28,10 @@ std::vector<Eigen::Vector2d> project_to_floor(const PointCloud& scan, const Indo
     ++band;
     const auto ix = static_cast<std::int64_t>(std::floor(p.x() / v));
     const auto iy = static_cast<std::int64_t>(std::floor(p.y() / v));
-    auto [it, fresh] = cells.try_emplace((ix << 32) ^ (iy & 0xFFFFFFFF));
+    // Shifted as unsigned: a negative cell index shifted left is undefined behaviour.
+    const auto key = static_cast<std::int64_t>((static_cast<std::uint64_t>(ix) << 32) ^
+                                               (static_cast<std::uint64_t>(iy) & 0xFFFFFFFFu));
+    auto [it, fresh] = cells.try_emplace(key);
     if (fresh) it->second.order = cells.size();
     it->second.sum += Eigen::Vector2d(p.x(), p.y());
     ++it->second.n;

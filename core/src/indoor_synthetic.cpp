@@ -234,8 +234,9 @@ IndoorWorld make_indoor_world(const IndoorSceneParams& p, int scans) {
     for (double y : ys) {
       if (uniform(rng, 0, 1) < p.missing_columns) continue;
       w.plan.columns.push_back({{x, y}, p.column_radius});
-      const Vec2 off(uniform(rng, -p.column_jitter, p.column_jitter),
-                     uniform(rng, -p.column_jitter, p.column_jitter));
+      // One draw per statement (argument order is unspecified; compilers differ), y first.
+      const double off_y = uniform(rng, -p.column_jitter, p.column_jitter);
+      const Vec2 off(uniform(rng, -p.column_jitter, p.column_jitter), off_y);
       w.built.columns.push_back({Vec2(x, y) + off, p.column_radius});
     }
   const Vec2 lo(xs.front() - p.border, ys.front() - p.border);

@@ -7,6 +7,23 @@
 namespace pagor {
 namespace {
 
+// Random vectors drawn in a fixed order (z, y, x), one draw per statement: the order in which
+// function arguments are evaluated is unspecified, so `Vector3d(n(rng), n(rng), n(rng))` gives
+// different scenes from different compilers.
+template <class Dist>
+Eigen::Vector3d noise3(Dist& d, std::mt19937_64& rng) {
+  const double z = d(rng);
+  const double y = d(rng);
+  const double x = d(rng);
+  return {x, y, z};
+}
+template <class Dist>
+Eigen::Vector2d draw2(Dist& d, std::mt19937_64& rng) {
+  const double y = d(rng);
+  const double x = d(rng);
+  return {x, y};
+}
+
 constexpr std::uint32_t kCar = 0, kRoad = 8, kBuilding = 12, kTrunk = 15, kPole = 17;
 constexpr double kPi = 3.14159265358979323846;
 
@@ -104,8 +121,7 @@ PointCloud observe(const Sampled& s, const std::vector<SyntheticObject>& objects
     }
     if (!seen) continue;
     const Eigen::Vector3d p = T_sensor_world.block<3, 3>(0, 0) * s.points[i] +
-                              T_sensor_world.block<3, 1>(0, 3) +
-                              Eigen::Vector3d(n(rng), n(rng), n(rng));
+                              T_sensor_world.block<3, 1>(0, 3) + noise3(n, rng);
     out.points.push_back(p.cast<float>());
     out.intensities.push_back(0.5f);
     out.labels.push_back(s.labels[i]);
@@ -131,20 +147,24 @@ SyntheticScene make_synthetic_scene(const SyntheticParams& params) {
   // (buildings are at most 20 x 14 m, so objects stand outside them).
   auto free_spot = [&](double clearance, double building_clearance) {
     for (int attempt = 0; attempt < 2000; ++attempt) {
-      const Eigen::Vector2d c(coord(rng), coord(rng));
+      const Eigen::Vector2d c = draw2(coord, rng);
       bool ok = true;
       for (const auto& o : object_centres) ok = ok && (o - c).norm() >= clearance;
       for (const auto& o : building_centres) ok = ok && (o - c).norm() >= building_clearance;
       if (ok) return c;
     }
-    return Eigen::Vector2d(coord(rng), coord(rng));
+    return draw2(coord, rng);
   };
 
   // Buildings first: they are large, and objects keep clear of them.
   for (int b = 0; b < params.buildings; ++b) {
     const Eigen::Vector2d c = free_spot(0.0, 30.0);
     building_centres.push_back(c);
-    const Eigen::Vector3d size(10 + 10 * unit(rng), 8 + 6 * unit(rng), 6 + 8 * unit(rng));
+    // One draw per statement: the order of function arguments is unspecified, and compilers
+    // differ (the scene must be the same whichever built it). Drawn z, y, x as before.
+    const double size_z = 6 + 8 * unit(rng);
+    const double size_y = 8 + 6 * unit(rng);
+    const Eigen::Vector3d size(10 + 10 * unit(rng), size_y, size_z);
     add_building(s, c, unit(rng) * kPi, size, 2 * params.spacing, rng);
   }
   auto add_objects = [&](int count, const char* name, std::uint32_t label) {
