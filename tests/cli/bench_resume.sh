@@ -10,13 +10,17 @@ fail() { echo "FAIL: $*"; exit 1; }
 
 out="$WORK/results.jsonl"
 echo '{"previous": "run"}' >"$out"
-"$PAGOR" bench --kitti-root "$KITTI" --pairs "$KITTI/pairs_00_dev.txt" --out "$out" >"$WORK/run1.log" 2>&1 &
+# A finer verification grid makes each pair take long enough (seconds) that the kill lands
+# between pairs: with the defaults the three pairs take well under a second.
+cfg="$WORK/slow.json"
+echo '{"verification": {"voxel_size": 0.1}, "refinement": {"max_points": 100000}}' >"$cfg"
+"$PAGOR" bench --kitti-root "$KITTI" --pairs "$KITTI/pairs_00_dev.txt" --config "$cfg" --out "$out" >"$WORK/run1.log" 2>&1 &
 pid=$!
 # Wait for the first finished pair, then kill without warning.
-for _ in $(seq 1 600); do
+for _ in $(seq 1 6000); do
   [ -s "$out.partial" ] && break
   kill -0 $pid 2>/dev/null || break
-  sleep 0.5
+  sleep 0.05
 done
 kill -9 $pid 2>/dev/null
 wait $pid 2>/dev/null
@@ -28,7 +32,7 @@ echo "killed after $done_before finished pair(s); $out intact"
 
 # Simulate a kill in the middle of writing a line: an incomplete last line is dropped on resume.
 printf '{"pair": [0, ' >>"$out.partial"
-"$PAGOR" bench --kitti-root "$KITTI" --pairs "$KITTI/pairs_00_dev.txt" --out "$out" --resume >"$WORK/run2.log" 2>&1 ||
+"$PAGOR" bench --kitti-root "$KITTI" --pairs "$KITTI/pairs_00_dev.txt" --config "$cfg" --out "$out" --resume >"$WORK/run2.log" 2>&1 ||
   fail "resume failed: $(tail -1 "$WORK/run2.log")"
 grep -q "of which $done_before taken from" "$WORK/run2.log" || fail "resume did not skip the $done_before finished pair(s)"
 [ ! -e "$out.partial" ] || fail "$out.partial left behind"
@@ -38,7 +42,7 @@ grep -q previous "$out" && fail "$out still holds the old run"
 echo "resumed: $out holds $pairs lines"
 
 # A second resume runs nothing: every pair is there for this configuration.
-"$PAGOR" bench --kitti-root "$KITTI" --pairs "$KITTI/pairs_00_dev.txt" --out "$out" --resume >"$WORK/run3.log" 2>&1 ||
+"$PAGOR" bench --kitti-root "$KITTI" --pairs "$KITTI/pairs_00_dev.txt" --config "$cfg" --out "$out" --resume >"$WORK/run3.log" 2>&1 ||
   fail "second resume failed"
 grep -q "of which $pairs taken from" "$WORK/run3.log" || fail "second resume re-ran pairs"
 # Each line carries the pair's diagnosis, and a resumed pair keeps its verdict column.
