@@ -55,6 +55,9 @@ void restore(UiDriver& d, const Saved& v, bool resubmit) {
 }
 
 void act_on_text(UiDriver& d, const WidgetRecord& w) {
+  // A result arriving between locating the field and the click can move the panel under the
+  // pointer (seen under ASan, where runs are slow): type into a settled layout.
+  d.settle();
   const Saved before = save(d.state());
   const std::u32string text = U"nicht/da \u00fc\u00e9 \u03b5.pcd";
   d.type_into(w.id, text);
