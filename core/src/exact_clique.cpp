@@ -44,6 +44,12 @@ class BitRows {
   }
   int size() const { return n_; }
   int words() const { return w_; }
+  // Every vertex, as a row of bits.
+  std::vector<Word> all() const {
+    std::vector<Word> out(static_cast<std::size_t>(w_), 0);
+    for (int v = 0; v < n_; ++v) out[static_cast<std::size_t>(v >> 6)] |= Word(1) << (v & 63);
+    return out;
+  }
 
  private:
   int n_, w_;
@@ -61,8 +67,7 @@ class BitSearch {
     best_size_ = lower;
     best_.clear();
     current_.clear();
-    std::vector<Word> all(static_cast<std::size_t>(w_), 0);
-    for (int v = 0; v < n_; ++v) all[static_cast<std::size_t>(v >> 6)] |= Word(1) << (v & 63);
+    const std::vector<Word> all = g_.all();
     levels_.assign(static_cast<std::size_t>(n_) + 2, {});
     expand(all, 0);
     complete = complete && nodes_ <= budget_;
@@ -154,8 +159,7 @@ class MisSearch {
   // Largest independent set if it has more than `lower` vertices; else empty.
   std::vector<int> solve(int lower, bool& complete) {
     best_size_ = lower;
-    std::vector<Word> all(static_cast<std::size_t>(w_), 0);
-    for (int v = 0; v < n_; ++v) all[static_cast<std::size_t>(v >> 6)] |= Word(1) << (v & 63);
+    const std::vector<Word> all = g_.all();
     search(all);
     complete = complete && nodes_ <= budget_;
     return best_;

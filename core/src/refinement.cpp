@@ -7,62 +7,25 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <unordered_map>
 
 #include "pagor/gnc.hpp"
+#include "pagor/voxel_grid.hpp"
 
 namespace pagor {
 namespace {
 
 constexpr int kMinNeighbours = 5;  // fewer points do not define a plane
 
-// Points bucketed on a cubic grid of cell `size`, for the radius searches of normal estimation.
-class CellIndex {
- public:
-  CellIndex(const std::vector<Eigen::Vector3f>& points, double size)
-      : points_(points), inv_(1.0 / size) {
-    for (std::size_t i = 0; i < points.size(); ++i) cells_[key(cell_of(points[i]))].push_back(i);
-  }
-
-  // Calls f(index) for every point within `radius` (<= the cell size) of p.
-  template <class F>
-  void within(const Eigen::Vector3f& p, float radius, const F& f) const {
-    const Eigen::Vector3i c = cell_of(p);
-    const float r2 = radius * radius;
-    for (int dx = -1; dx <= 1; ++dx)
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dz = -1; dz <= 1; ++dz) {
-          const auto it = cells_.find(key(c + Eigen::Vector3i(dx, dy, dz)));
-          if (it == cells_.end()) continue;
-          for (std::size_t i : it->second)
-            if ((points_[i] - p).squaredNorm() <= r2) f(i);
-        }
-  }
-
- private:
-  Eigen::Vector3i cell_of(const Eigen::Vector3f& p) const {
-    return (p.cast<double>() * inv_).array().floor().cast<int>();
-  }
-  static std::uint64_t key(const Eigen::Vector3i& c) {
-    const auto u = [](int v) { return static_cast<std::uint64_t>(static_cast<std::uint32_t>(v)); };
-    return (u(c.x()) & 0x1FFFFF) | ((u(c.y()) & 0x1FFFFF) << 21) | ((u(c.z()) & 0x1FFFFF) << 42);
-  }
-
-  const std::vector<Eigen::Vector3f>& points_;
-  double inv_;
-  std::unordered_map<std::uint64_t, std::vector<std::size_t>> cells_;
-};
-
 // Unit normal of the neighbourhood's best-fit plane; false when the neighbourhood is not planar
 // enough to define one (the smallest spread is not clearly below the middle one).
-bool plane_normal(const std::vector<Eigen::Vector3f>& points, const std::vector<std::size_t>& nb,
+bool plane_normal(const std::vector<Eigen::Vector3f>& points, const std::vector<int>& nb,
                   Eigen::Vector3f& normal) {
   Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-  for (std::size_t i : nb) mean += points[i].cast<double>();
+  for (int i : nb) mean += points[static_cast<std::size_t>(i)].cast<double>();
   mean /= static_cast<double>(nb.size());
   Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
-  for (std::size_t i : nb) {
-    const Eigen::Vector3d d = points[i].cast<double>() - mean;
+  for (int i : nb) {
+    const Eigen::Vector3d d = points[static_cast<std::size_t>(i)].cast<double>() - mean;
     cov += d * d.transpose();
   }
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);
@@ -106,11 +69,12 @@ Transform apply_twist(const Eigen::Matrix<double, 6, 1>& x, const Transform& T) 
 struct Refiner::Impl {
   const Verifier* verifier = nullptr;
   double radius = 0.0;
-  CellIndex cells;
+  RadiusGrid cells;  // the target points, for the normals' neighbourhoods
   // Normals are estimated on demand: ICP pairs only the target points near the source.
   std::vector<Eigen::Vector3f> normals;
   std::vector<std::int8_t> state;  // 0 not yet estimated, 1 has a normal, -1 has none
-  std::vector<std::size_t> neighbours;
+  std::vector<int> neighbours;
+  std::vector<float> distance_sq;
 
   Impl(const Verifier& v, double r)
       : verifier(&v),
@@ -124,8 +88,8 @@ struct Refiner::Impl {
     if (state[i] == 0) {
       const std::vector<Eigen::Vector3f>& target = verifier->target_points();
       neighbours.clear();
-      cells.within(target[i], static_cast<float>(radius),
-                   [&](std::size_t j) { neighbours.push_back(j); });
+      distance_sq.clear();
+      cells.within(target[i], static_cast<float>(radius), neighbours, distance_sq);
       const bool ok = static_cast<int>(neighbours.size()) >= kMinNeighbours &&
                       plane_normal(target, neighbours, normals[i]);
       state[i] = ok ? 1 : -1;
