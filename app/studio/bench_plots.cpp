@@ -10,16 +10,22 @@ double percent(int n, int of) {
   return of ? 100.0 * n / of : 0.0;
 }
 
-}  // namespace
-
-Plot sweep_success_plot(const SweepResult& result) {
+// A plot whose values are percentages, on an axis from 0 to 100 %.
+Plot percent_plot(PlotKind kind, const char* value_label) {
   Plot p;
-  p.title = "Sweep: success per setting";
-  p.kind = PlotKind::bars;
-  p.value_label = "pairs with ground truth";
+  p.kind = kind;
+  p.value_label = value_label;
   p.value_unit = "%";
   p.value_min = 0.0;
   p.value_max = 100.0;
+  return p;
+}
+
+}  // namespace
+
+Plot sweep_success_plot(const SweepResult& result) {
+  Plot p = percent_plot(PlotKind::bars, "pairs with ground truth");
+  p.title = "Sweep: success per setting";
   p.series = {{"success", {}, {}}, {"upper bound", {}, {}}};
   for (const SweepSettingResult& r : result.settings) {
     p.categories.push_back(r.setting.label);
@@ -65,12 +71,7 @@ void set_axis(Plot& p, Axis a, const Config& c) {
 }  // namespace
 
 Plot sweep_line_plot(const SweepResult& result) {
-  Plot p;
-  p.kind = PlotKind::lines;
-  p.value_label = "success";
-  p.value_unit = "%";
-  p.value_min = 0.0;
-  p.value_max = 100.0;
+  Plot p = percent_plot(PlotKind::lines, "success");
   const Axis a = line_axis(result);
   if (a == Axis::none) return p;
   p.title = a == Axis::mu ? "Success against mu" : "Success against a single epsilon";
@@ -133,13 +134,8 @@ Plot picking_plot(const std::vector<PairOutcome>& outcomes) {
 }
 
 Plot rates_plot(const BenchmarkSummary& s) {
-  Plot p;
+  Plot p = percent_plot(PlotKind::bars, "rate");
   p.title = "Rates";
-  p.kind = PlotKind::bars;
-  p.value_label = "rate";
-  p.value_unit = "%";
-  p.value_min = 0.0;
-  p.value_max = 100.0;
   p.categories = {"success", "upper bound", "verdict precision", "verdict recall"};
   p.series = {{"this run",
                {},
