@@ -117,7 +117,8 @@ void bench_end_to_end(const Options& o) {
       "\n## 5. End to end per KITTI pair (clouds in memory -> selected pose), by stage [ms]\n");
   const Stage stages[] = {
       Stage::landmarks, Stage::correspondences,   Stage::graph,       Stage::clique,
-      Stage::pose,      Stage::verification_prep, Stage::verification};
+      Stage::pose,      Stage::verification_prep, Stage::verification, Stage::refinement,
+      Stage::acceptance};
   std::vector<int> w = {10, 8};
   std::vector<std::string> head = {"pair", "threads"};
   for (Stage s : stages) {

@@ -51,6 +51,25 @@ TEST_CASE("a true pair is accepted, two scenes that share nothing are rejected")
   CHECK_FALSE(no.accepted);
   CHECK_FALSE(no.reason.empty());
   CHECK(no.overlap < yes.overlap);
+
+  // Acceptance reuses the distances the verification kept; searching afresh judges alike.
+  for (const Pipeline* p : {&positive, &negative}) {
+    VerificationResult fresh = p->verification();
+    fresh.selected_distances.clear();
+    const Config& c = p->config();
+    std::vector<PoseEstimate> candidates = p->poses();
+    REQUIRE(fresh.selected >= 0);
+    const auto sel = static_cast<std::size_t>(fresh.selected);
+    if (p->refinement().applied) {
+      candidates[sel].T_target_source = p->refinement().T_after;
+      fresh.scores[sel] = p->refinement().score_after;
+    }
+    const Acceptance again = judge_selection(*p->verifier(), candidates, fresh, c.verification,
+                                             c.evaluation, c.acceptance, c.gnc.model);
+    CHECK(again.overlap == p->acceptance().overlap);
+    CHECK(again.margin == p->acceptance().margin);
+    CHECK(again.accepted == p->acceptance().accepted);
+  }
 }
 
 TEST_CASE("thresholds decide the verdict, and a change re-judges without re-running the rest") {

@@ -1,5 +1,7 @@
 #include <Eigen/Geometry>
 #include <catch2/catch.hpp>
+#include <cmath>
+#include <limits>
 #include <random>
 
 #include "pagor/synthetic.hpp"
@@ -113,4 +115,58 @@ TEST_CASE("an empty target scores every point at mu") {
   source.points[1].x() = 5;
   const Verifier verifier(source, target, 0.0);
   CHECK(verifier.score(Transform::Identity(), 0.5, ScoreKind::truncated) == Approx(5.0));
+}
+
+TEST_CASE("the selection keeps the distances its D summed; a repeated pose is scored once, alike") {
+  const SyntheticScene scene = make_synthetic_scene();
+  const Verifier verifier(scene.source, scene.target, 0.5);
+  const Transform& T = scene.T_target_source;
+  const Transform off = perturbed(T, 0.6, 0.0);
+  // The true pose twice, the second with more inliers: a tie the inliers break towards index 3.
+  const std::vector<PoseEstimate> c = {candidate(off, 10), candidate(T, 10), candidate(off, 10),
+                                       candidate(T, 12)};
+  VerificationParams vp;
+  const VerificationResult r = verify_candidates(verifier, c, vp);
+  CHECK(r.selected == 3);
+  CHECK(r.tie);
+  CHECK(r.scores[0] == r.scores[2]);
+  CHECK(r.scores[1] == r.scores[3]);
+  CHECK(r.scores[1] == verifier.score(T, vp.mu, vp.score));
+  CHECK(r.distance_bound == static_cast<float>(vp.mu));
+  CHECK(r.selected_distances == verifier.distances(T, static_cast<float>(vp.mu)));
+  double D = 0.0;
+  for (float d : r.selected_distances) D += std::min<double>(d, vp.mu);
+  CHECK(D == Approx(r.scores[3]).epsilon(1e-12));
+
+  // Selected first by a lower score, then a duplicate of a pose scored earlier wins a tie:
+  // its distances are those of that earlier pose.
+  const std::vector<PoseEstimate> d = {candidate(T, 10), candidate(off, 10), candidate(T, 11)};
+  const VerificationResult s = verify_candidates(verifier, d, vp);
+  CHECK(s.selected == 2);
+  CHECK(s.selected_distances == verifier.distances(T, static_cast<float>(vp.mu)));
+}
+
+TEST_CASE("bounded distances (on the grid) and unbounded ones (kd-tree) equal a linear scan") {
+  const SyntheticScene scene = make_synthetic_scene();
+  const Verifier verifier(scene.source, scene.target, 0.5);
+  const Transform T = perturbed(scene.T_target_source, 0.4, 3.0);
+  const auto& src = verifier.source_points();
+  const auto& tgt = verifier.target_points();
+  const Eigen::Matrix3f R = T.block<3, 3>(0, 0).cast<float>();
+  const Eigen::Vector3f t = T.block<3, 1>(0, 3).cast<float>();
+  // Larger bounds after smaller ones: the verifier replaces its grid by a coarser one.
+  for (float bound : {0.3f, 1.0f, 2.5f, std::numeric_limits<float>::infinity(), 0.5f}) {
+    const std::vector<float> d = verifier.distances(T, bound);
+    REQUIRE(d.size() == src.size());
+    for (std::size_t i = 0; i < src.size(); i += 7) {
+      const Eigen::Vector3f q = R * src[i] + t;
+      float best = bound * bound;
+      for (const auto& p : tgt) best = std::min(best, (p - q).squaredNorm());
+      INFO("bound " << bound << " point " << i);
+      if (best < bound * bound)
+        REQUIRE(d[i] == std::sqrt(best));
+      else
+        REQUIRE(std::isinf(d[i]));
+    }
+  }
 }

@@ -2,6 +2,9 @@
 // gives the same voxels (moved), and a cloud too wide for its voxel size is an error.
 
 #include <catch2/catch.hpp>
+#include <array>
+#include <cmath>
+#include <map>
 #include <random>
 
 #include "pagor/errors.hpp"
@@ -45,4 +48,67 @@ TEST_CASE("a grid of more than 2^52 voxels per axis is an error, not undefined b
   CHECK_THROWS_AS(voxel_downsample(huge, 0.5), InputError);
   const std::vector<Eigen::Vector3f> small = {{0, 0, 0}, {100, 0, 0}};
   CHECK_THROWS_WITH(voxel_downsample(small, 1e-300), Catch::Contains("beyond 2^52"));
+}
+
+TEST_CASE("voxel downsampling equals a straightforward map-based reference") {
+  // The reference: voxels keyed by their integer indices in a std::map, numbered in order of
+  // first appearance, centroids as double sums.
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> u(-40.0f, 40.0f);
+  std::vector<Eigen::Vector3f> pts;
+  for (int i = 0; i < 20000; ++i) pts.emplace_back(u(rng), u(rng), u(rng) / 10);
+  for (int i = 0; i < 500; ++i) pts.push_back(pts[static_cast<std::size_t>(i) * 7]);  // repeats
+  for (double voxel : {0.2, 0.5, 3.0}) {
+    std::map<std::array<long long, 3>, int> id;
+    std::vector<Eigen::Vector3d> sums;
+    std::vector<int> counts, voxel_of;
+    for (const auto& p : pts) {
+      const auto idx = [&](int a) {
+        return static_cast<long long>(std::floor(p[a] * static_cast<float>(1.0 / voxel)));
+      };
+      const auto [it, inserted] = id.insert({{idx(0), idx(1), idx(2)}, static_cast<int>(sums.size())});
+      if (inserted) sums.emplace_back(Eigen::Vector3d::Zero()), counts.push_back(0);
+      sums[static_cast<std::size_t>(it->second)] += p.cast<double>();
+      ++counts[static_cast<std::size_t>(it->second)];
+      voxel_of.push_back(it->second);
+    }
+    const VoxelDownsample d = voxel_downsample(pts, voxel);
+    INFO("voxel " << voxel << " m");
+    CHECK(d.counts == counts);
+    CHECK(d.voxel_of == voxel_of);
+    REQUIRE(d.points.size() == sums.size());
+    for (std::size_t v = 0; v < sums.size(); ++v)
+      CHECK(d.points[v] == (sums[v] / counts[v]).cast<float>());
+  }
+}
+
+TEST_CASE("the grid's nearest neighbour agrees with a linear scan, off the grid too") {
+  // The search skips cells whose box is farther than the best so far: it must still find the
+  // nearest point strictly within the radius, for queries inside, beside and far off the grid.
+  std::mt19937_64 rng(23);
+  std::uniform_real_distribution<float> u(-20.f, 20.f);
+  std::vector<Eigen::Vector3f> pts;
+  for (int i = 0; i < 4000; ++i) pts.emplace_back(u(rng), u(rng), u(rng) * 0.1f);
+  // Points on cell boundaries of a 1 m grid anchored at the lowest point.
+  for (int i = 0; i < 200; ++i) pts.emplace_back(std::round(u(rng)), std::round(u(rng)), 0.0f);
+  pts.push_back(pts.front());  // a duplicate
+  for (float cell : {0.3f, 1.0f, 2.5f}) {
+    const RadiusGrid grid(pts, cell);
+    for (int k = 0; k < 2000; ++k) {
+      Eigen::Vector3f q(u(rng) * 1.3f, u(rng) * 1.3f, u(rng) * 0.3f);
+      if (k % 10 == 0) q = pts[static_cast<std::size_t>(k)] + Eigen::Vector3f(0.0f, 0.0f, 1e-3f);
+      if (k % 97 == 0) q *= 1e4f;  // clamped into the border cells
+      for (float radius : {cell, cell * 0.5f, cell * 0.01f}) {
+        int ref = -1;
+        float ref_d2 = radius * radius;
+        for (std::size_t i = 0; i < pts.size(); ++i)
+          if ((pts[i] - q).squaredNorm() < ref_d2) ref_d2 = (pts[i] - q).squaredNorm(), ref = static_cast<int>(i);
+        const auto [got, d2] = grid.nearest(q, radius);
+        INFO("cell " << cell << " radius " << radius << " query " << q.transpose());
+        REQUIRE(d2 == ref_d2);
+        REQUIRE((got >= 0) == (ref >= 0));
+        if (ref >= 0) CHECK((pts[static_cast<std::size_t>(got)] - q).squaredNorm() == ref_d2);
+      }
+    }
+  }
 }

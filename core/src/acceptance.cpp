@@ -30,7 +30,13 @@ Acceptance judge_selection(const Verifier& verifier, const std::vector<PoseEstim
   const std::size_t sel = static_cast<std::size_t>(verification.selected);
   const Transform& T = candidates[sel].T_target_source;
   const std::vector<Eigen::Vector3f>& points = verifier.source_points();
-  const std::vector<float> d = verifier.distances(T, static_cast<float>(params.inlier_distance));
+  // The distances the selection's D summed serve when their bound reaches the inlier distance
+  // (points beyond it are not aligned either way).
+  const bool reuse = verification.selected_distances.size() == points.size() &&
+                     verification.distance_bound >= params.inlier_distance;
+  std::vector<float> searched;
+  if (!reuse) searched = verifier.distances(T, static_cast<float>(params.inlier_distance));
+  const std::vector<float>& d = reuse ? verification.selected_distances : searched;
   const float ground = ground_layer_top(points, static_cast<float>(params.ground_thickness));
   std::size_t structure = 0, close = 0, close_all = 0;
   for (std::size_t i = 0; i < d.size(); ++i) {

@@ -218,6 +218,7 @@ void Pipeline::judge_acceptance() {
   const auto sel = static_cast<std::size_t>(verification_.selected);
   candidates[sel].T_target_source = refinement_.T_after;
   verification.scores[sel] = refinement_.score_after;
+  verification.selected_distances = refinement_.distances_after;
   acceptance_ = judge_selection(*verifier_, candidates, verification, config_.verification,
                                 config_.evaluation, config_.acceptance, config_.gnc.model);
 }

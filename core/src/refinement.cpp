@@ -138,8 +138,11 @@ RefinementResult Refiner::refine(const Transform& T0, double score, PoseModel mo
 
     // Gauss-Newton on sum w_i (n_i . (p_i' - q_i))^2 with Cauchy weights, in the free twist
     // coordinates only: d/d(w) of n . (w x p') is p' x n, d/d(t) is n.
-    Eigen::MatrixXd H = Eigen::MatrixXd::Zero(n, n);
-    Eigen::VectorXd g = Eigen::VectorXd::Zero(n);
+    // At most 6 free coordinates: fixed-capacity storage, no allocation per point.
+    using Vec = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 6, 1>;
+    using Mat = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 6, 6>;
+    Mat H = Mat::Zero(n, n);
+    Vec g = Vec::Zero(n);
     int pairs = 0;
     for (std::size_t i = 0; i < source.size(); i += stride) {
       const Eigen::Vector3f p = R * source[i] + t;
@@ -152,7 +155,7 @@ RefinementResult Refiner::refine(const Transform& T0, double score, PoseModel mo
       const double res = nq.dot(pd - target[static_cast<std::size_t>(j)].cast<double>());
       Eigen::Matrix<double, 6, 1> full;
       full << pd.cross(nq), nq;
-      Eigen::VectorXd J(n);
+      Vec J(n);
       for (int k = 0; k < n; ++k) J(k) = full(free[static_cast<std::size_t>(k)]);
       const double s = res / params.robust_scale;
       const double w = 1.0 / (1.0 + s * s);
@@ -168,7 +171,7 @@ RefinementResult Refiner::refine(const Transform& T0, double score, PoseModel mo
     }
     // A little damping keeps directions the scene does not constrain (a corridor) in place.
     H.diagonal().array() += 1e-6 * H.diagonal().maxCoeff();
-    const Eigen::VectorXd step = -H.ldlt().solve(g);
+    const Vec step = -H.ldlt().solve(g);
     Eigen::Matrix<double, 6, 1> x = Eigen::Matrix<double, 6, 1>::Zero();
     for (int k = 0; k < n; ++k) x(free[static_cast<std::size_t>(k)]) = step(k);
     T = apply_twist(x, T);
@@ -177,7 +180,7 @@ RefinementResult Refiner::refine(const Transform& T0, double score, PoseModel mo
 
   const auto kind = scoring.score;
   r.score_before = score;
-  r.score_after = impl_->verifier->score(T, scoring.mu, kind, threads);
+  r.score_after = impl_->verifier->score(T, scoring.mu, kind, threads, &r.distances_after);
   r.correction_translation = (T.block<3, 1>(0, 3) - T0.block<3, 1>(0, 3)).norm();
   r.correction_rotation =
       rotation_angle_deg(T.block<3, 3>(0, 0) * T0.block<3, 3>(0, 0).transpose());
@@ -193,7 +196,10 @@ RefinementResult Refiner::refine(const Transform& T0, double score, PoseModel mo
     r.reason = "did not lower D";
   }
   r.applied = r.reason.empty();
-  if (r.applied) r.T_after = T;
+  if (r.applied)
+    r.T_after = T;
+  else
+    r.distances_after.clear();
   return r;
 }
 

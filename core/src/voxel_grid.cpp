@@ -54,6 +54,39 @@ void bin(std::size_t n, const Point& point, const MakeKey& make_key, VoxelDownsa
     out.points[v] = (sums[v] / out.counts[v]).cast<float>();
 }
 
+// The same for packed keys, on an open-addressing table (linear probing) instead of a node-based
+// map: voxels still numbered in order of first appearance, so the output is the map's exactly.
+template <class Point, class MakeKey>
+void bin_packed(std::size_t n, const Point& point, const MakeKey& make_key, VoxelDownsample& out) {
+  constexpr std::uint64_t kFree = ~std::uint64_t(0);  // packed keys use 63 bits
+  std::size_t capacity = 16;
+  while (capacity < 2 * n) capacity *= 2;
+  const std::size_t mask = capacity - 1;
+  std::vector<std::uint64_t> keys(capacity, kFree);
+  std::vector<int> voxel(capacity);
+  std::vector<Eigen::Vector3d> sums;
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::uint64_t key = make_key(point(i));
+    std::uint64_t h = key ^ (key >> 31);
+    h *= 0x9E3779B97F4A7C15ull;
+    std::size_t s = static_cast<std::size_t>(h ^ (h >> 29)) & mask;
+    while (keys[s] != kFree && keys[s] != key) s = (s + 1) & mask;
+    if (keys[s] == kFree) {
+      keys[s] = key;
+      voxel[s] = static_cast<int>(sums.size());
+      sums.emplace_back(Eigen::Vector3d::Zero());
+      out.counts.push_back(0);
+    }
+    const int v = voxel[s];
+    sums[static_cast<std::size_t>(v)] += point(i).template cast<double>();
+    ++out.counts[static_cast<std::size_t>(v)];
+    out.voxel_of[i] = v;
+  }
+  out.points.resize(sums.size());
+  for (std::size_t v = 0; v < sums.size(); ++v)
+    out.points[v] = (sums[v] / out.counts[v]).cast<float>();
+}
+
 }  // namespace
 
 VoxelDownsample voxel_downsample(const std::vector<Eigen::Vector3f>& points, double voxel_size,
@@ -97,7 +130,7 @@ VoxelDownsample voxel_downsample(const std::vector<Eigen::Vector3f>& points, dou
              (static_cast<std::uint64_t>(cell(p, 1)) << 21) |
              static_cast<std::uint64_t>(cell(p, 2));
     };
-    bin<std::uint64_t, std::hash<std::uint64_t>>(n, point, key, out);
+    bin_packed(n, point, key, out);
   } else {
     const auto key = [&](const Eigen::Vector3f& p) {
       return WideKey{cell(p, 0), cell(p, 1), cell(p, 2)};
@@ -188,13 +221,42 @@ RadiusGrid::RadiusGrid(const std::vector<Eigen::Vector3f>& points, double cell)
 std::pair<int, float> RadiusGrid::nearest(const Eigen::Vector3f& q, float radius,
                                           int exclude) const {
   std::pair<int, float> best{-1, radius * radius};
-  for_cells_around(q, [&](int begin, int end) {
-    for (int i = begin; i < end; ++i) {
+  if (sorted_.empty()) return best;
+  const auto scan = [&](int cell) {
+    if (cell < 0) return;
+    for (int i = start_[static_cast<std::size_t>(cell)]; i < start_[static_cast<std::size_t>(cell) + 1];
+         ++i) {
       const float d2 = (sorted_[static_cast<std::size_t>(i)] - q).squaredNorm();
       if (d2 < best.second && index_[static_cast<std::size_t>(i)] != exclude)
         best = {index_[static_cast<std::size_t>(i)], d2};
     }
-  });
+  };
+  // The query's own cell first, then of the 26 around it only those whose box is nearer than the
+  // best so far. gap[a][k]: squared distance along axis a from q to the slab of offset k - 1, a
+  // little short (points sit in their cell up to rounding).
+  const std::uint64_t center = key_of(q);
+  constexpr std::uint64_t kAxis = (std::uint64_t(1) << 21) - 1;
+  const std::uint64_t c[3] = {center >> 42, (center >> 21) & kAxis, center & kAxis};
+  scan(find(center));
+  float gap[3][3];
+  const float slack = 1e-4f * cell_;
+  for (int a = 0; a < 3; ++a) {
+    const float low = lo_[a] + static_cast<float>(c[a] - 1) * cell_;  // cells are numbered from 1
+    const float below = std::max(0.0f, q[a] - low - slack);
+    const float above = std::max(0.0f, low + cell_ - q[a] - slack);
+    gap[a][0] = below * below;
+    gap[a][1] = 0.0f;
+    gap[a][2] = above * above;
+  }
+  for (int x = 0; x < 3; ++x)
+    for (int y = 0; y < 3; ++y) {
+      const float gxy = gap[0][x] + gap[1][y];
+      if (gxy >= best.second) continue;
+      for (int z = 0; z < 3; ++z) {
+        if ((x == 1 && y == 1 && z == 1) || gxy + gap[2][z] >= best.second) continue;
+        scan(find(((c[0] + x - 1) << 42) | ((c[1] + y - 1) << 21) | (c[2] + z - 1)));
+      }
+    }
   return best;
 }
 

@@ -8,6 +8,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "pagor/config.hpp"
 #include "pagor/types.hpp"
@@ -27,6 +28,9 @@ struct RefinementResult {
   double correction_rotation = 0.0;            ///< how far it turned it [deg]
   int iterations = 0;                          ///< ICP iterations run
   int pairs = 0;                               ///< point-to-plane pairs in the last iteration
+  /// When applied: per verification source point, its distance under the refined pose to the
+  /// nearest target point [m], +infinity beyond mu (what score_after summed). Empty otherwise.
+  std::vector<float> distances_after;
   std::string reason;                          ///< why it was not applied; empty if applied
 };
 

@@ -16,18 +16,23 @@
 
 namespace pagor {
 
-/// The downsampled clouds and the target kd-tree; built once, scores any number of poses.
+/// The downsampled clouds, built once; scores any number of poses. Searches bounded by mu run on
+/// a hashed grid of the target (cells of the bound), unbounded ones on a kd-tree; each is built
+/// on first use. Safe to use from several threads at once.
 class Verifier {
  public:
-  /// Downsamples both clouds on a `voxel_size` grid [m] (0 keeps every point) and builds the tree.
+  /// Downsamples both clouds on a `voxel_size` grid [m] (0 keeps every point).
   Verifier(const PointCloud& source, const PointCloud& target, double voxel_size);
   ~Verifier();
   Verifier(Verifier&&) noexcept;
   Verifier& operator=(Verifier&&) noexcept;
 
   /// Score D of a pose, in metres summed over the downsampled source points; `threads` > 1 splits
-  /// the points over threads (same result).
-  double score(const Transform& T_target_source, double mu, ScoreKind kind, int threads = 1) const;
+  /// the points over threads (same result). When `distances` is given it receives what the score
+  /// summed: per source point the distance to its nearest target point [m], +infinity where none
+  /// is closer than mu (any distance for ScoreKind::nearest).
+  double score(const Transform& T_target_source, double mu, ScoreKind kind, int threads = 1,
+               std::vector<float>* distances = nullptr) const;
 
   /// Distance from each downsampled source point, moved by T, to its nearest target point [m];
   /// +infinity where none is closer than `bound` [m] (a smaller bound searches faster).
@@ -53,6 +58,11 @@ struct VerificationResult {
   int selected = -1;           ///< index of the lowest D; -1 when no candidate is valid
   bool tie = false;            ///< whether another candidate had the same D (broken by inliers)
   double time_ms = 0.0;        ///< wall time of the scoring [ms]
+  /// Per source point of the verifier, its distance under the selected pose to the nearest target
+  /// point [m], +infinity beyond `distance_bound` (what the selection's D summed; acceptance
+  /// reuses it instead of searching again). Empty when nothing was selected.
+  std::vector<float> selected_distances;
+  float distance_bound = 0.0f;  ///< [m]: mu, or +infinity for ScoreKind::nearest
 };
 
 /// Scores every valid candidate and selects the lowest D. Ties (equal D to 1e-9 relative) go to
