@@ -1,4 +1,5 @@
 #include "association_problem.hpp"
+#include "pagor/random_draw.hpp"
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -12,10 +13,10 @@ AssociationProblem association_problem(const AssociationParams& a) {
   std::mt19937_64 rng(a.seed);
   std::uniform_real_distribution<double> coord(0.0, a.extent), unit(-1.0, 1.0), angle(-M_PI, M_PI);
   AssociationProblem out;
-  const Eigen::Vector3d axis = Eigen::Vector3d(unit(rng), unit(rng), unit(rng)).normalized();
+  const Eigen::Vector3d axis = draw3(unit, rng).normalized();
   out.T_target_source.block<3, 3>(0, 0) = Eigen::AngleAxisd(angle(rng), axis).toRotationMatrix();
   out.T_target_source.block<3, 1>(0, 3) =
-      Eigen::Vector3d(unit(rng), unit(rng), unit(rng)) * a.extent;
+      draw3(unit, rng) * a.extent;
   const auto R = out.T_target_source.block<3, 3>(0, 0);
   const auto t = out.T_target_source.block<3, 1>(0, 3);
   const int inliers = static_cast<int>(std::lround(a.inlier_ratio * a.m));
@@ -26,14 +27,14 @@ AssociationProblem association_problem(const AssociationParams& a) {
     Correspondence c;
     c.class_index = 0;
     c.source = c.target = i;
-    c.p = Eigen::Vector3d(coord(rng), coord(rng), coord(rng));
+    c.p = draw3(coord, rng);
     if (flags[static_cast<std::size_t>(i)]) {
       Eigen::Vector3d n;
-      do n = Eigen::Vector3d(unit(rng), unit(rng), unit(rng));
+      do n = draw3(unit, rng);
       while (n.squaredNorm() > 1.0);  // uniform in the unit ball
       c.q = R * c.p + t + a.noise * n;
     } else {
-      c.q = R * Eigen::Vector3d(coord(rng), coord(rng), coord(rng)) + t;
+      c.q = R * draw3(coord, rng) + t;
     }
     c.score = 1.0;
     out.correspondences.push_back(c);

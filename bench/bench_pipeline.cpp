@@ -14,6 +14,7 @@
 #include "pagor/pipeline.hpp"
 #include "pagor/pyramid_graph.hpp"
 #include "pagor/verification.hpp"
+#include "pagor/random_draw.hpp"
 
 namespace pagor::bench {
 
@@ -69,11 +70,11 @@ void bench_gnc(const Options& o) {
   for (int n : {10, 50, 100, 500}) {
     std::vector<Eigen::Vector3d> p, q;
     for (int i = 0; i < n; ++i) {
-      p.emplace_back(coord(rng), coord(rng), coord(rng) / 10);
+      p.push_back(draw3(coord, rng).cwiseQuotient(Eigen::Vector3d(1, 1, 10)));
       q.push_back(i < n * 4 / 5
                       ? Eigen::Vector3d(T.block<3, 3>(0, 0) * p.back() + T.block<3, 1>(0, 3) +
-                                        Eigen::Vector3d(noise(rng), noise(rng), noise(rng)))
-                      : Eigen::Vector3d(coord(rng), coord(rng), 0));
+                                        draw3(noise, rng))
+                      : draw_on_plane(coord, rng, 0.0));
     }
     GncParams se3, se2;
     se2.model = PoseModel::se2;

@@ -11,6 +11,7 @@
 #include <random>
 
 #include "pagor/kitti.hpp"
+#include "pagor/random_draw.hpp"
 
 namespace pagor::bench {
 
@@ -86,14 +87,14 @@ std::vector<Correspondence> all_to_all_scene(int m, double noise, std::uint64_t 
   int source_id = 0, target_id = 0;
   for (int c = 0; c < classes; ++c) {
     std::vector<Eigen::Vector3d> src, tgt;
-    for (int i = 0; i < n; ++i) src.emplace_back(coord(rng), coord(rng), height(rng));
+    for (int i = 0; i < n; ++i) src.push_back(draw3(coord, coord, height, rng));
     for (int i = 0; i < n; ++i) {
       if (i < n / 2) {  // seen by both
         const Eigen::Vector3d q =
             T.block<3, 3>(0, 0) * src[static_cast<std::size_t>(i)] + T.block<3, 1>(0, 3);
-        tgt.push_back(q + Eigen::Vector3d(jitter(rng), jitter(rng), jitter(rng)));
+        tgt.push_back(q + draw3(jitter, rng));
       } else {
-        tgt.emplace_back(coord(rng), coord(rng), height(rng));
+        tgt.push_back(draw3(coord, coord, height, rng));
       }
     }
     std::shuffle(tgt.begin(), tgt.end(), rng);

@@ -13,6 +13,7 @@
 
 #include "pagor/densest_clique.hpp"
 #include "pagor/pyramid_graph.hpp"
+#include "pagor/random_draw.hpp"
 
 namespace pagor::test {
 
@@ -71,12 +72,12 @@ inline std::vector<Correspondence> association(int m, int inliers, std::uint64_t
   for (int i = 0; i < m; ++i) {
     Correspondence x;
     x.source = x.target = i;
-    x.p = Eigen::Vector3d(coord(rng), coord(rng), coord(rng));
+    x.p = draw3(coord, rng);
     Eigen::Vector3d n;
-    do n = Eigen::Vector3d(unit(rng), unit(rng), unit(rng));
+    do n = draw3(unit, rng);
     while (n.squaredNorm() > 1);
     x.q = i < inliers ? Eigen::Vector3d(R * x.p + t + 0.02 * n)
-                      : Eigen::Vector3d(coord(rng), coord(rng), coord(rng));
+                      : draw3(coord, rng);
     c.push_back(x);
     if (flags) flags->push_back(i < inliers);
   }

@@ -10,6 +10,7 @@
 #include "pagor/kitti.hpp"
 #include "pagor/pipeline.hpp"
 #include "pagor/pyramid_graph.hpp"
+#include "pagor/random_draw.hpp"
 
 using namespace pagor;
 using pagor::test::random_graph;
@@ -29,10 +30,11 @@ std::vector<Correspondence> planted(int inliers, int outliers, double sigma, std
   for (int k = 0; k < inliers + outliers; ++k) {
     Correspondence x;
     x.source = x.target = id++;
-    x.p = Eigen::Vector3d(coord(rng), coord(rng), coord(rng) / 8);
+    x.p = draw3(coord, rng);
+    x.p.z() /= 8;
     x.q = k < inliers
-              ? Eigen::Vector3d(R * x.p + t + Eigen::Vector3d(noise(rng), noise(rng), noise(rng)))
-              : Eigen::Vector3d(coord(rng), coord(rng), coord(rng) / 8);
+              ? Eigen::Vector3d(R * x.p + t + draw3(noise, rng))
+              : Eigen::Vector3d(draw3(coord, rng).cwiseQuotient(Eigen::Vector3d(1, 1, 8)));
     c.push_back(x);
   }
   std::shuffle(c.begin(), c.end(), rng);  // inliers anywhere in the list

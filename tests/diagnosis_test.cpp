@@ -10,6 +10,7 @@
 #include "pagor/diagnosis.hpp"
 #include "pagor/pipeline.hpp"
 #include "pagor/synthetic.hpp"
+#include "pagor/random_draw.hpp"
 
 using namespace pagor;
 
@@ -48,7 +49,7 @@ void sample(const Object& o, std::mt19937& rng, const Transform& T, PointCloud& 
       const double phi = 2 * M_PI * s;
       p = {o.a.x() + o.radius * std::cos(phi), o.a.y() + o.radius * std::sin(phi), z};
     }
-    p += Eigen::Vector3d(noise(rng), noise(rng), noise(rng));
+    p += draw3(noise, rng);
     out.points.push_back((T.block<3, 3>(0, 0) * p + T.block<3, 1>(0, 3)).cast<float>());
     out.labels.push_back(o.label);
   }
@@ -86,7 +87,7 @@ std::vector<Object> shared_scene(std::uint64_t seed) {
   std::uniform_real_distribution<double> xy(-30.0, 30.0);
   std::vector<Object> out;
   while (out.size() < 12) {
-    const Eigen::Vector2d c(xy(rng), xy(rng));
+    const Eigen::Vector2d c = draw2(xy, rng);
     bool free = true;
     for (const Object& o : out) free = free && (o.a - c).norm() > 6.0;
     if (!free) continue;

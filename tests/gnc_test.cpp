@@ -4,6 +4,7 @@
 
 #include "pagor/evaluation.hpp"
 #include "pagor/gnc.hpp"
+#include "pagor/random_draw.hpp"
 
 using namespace pagor;
 
@@ -32,13 +33,13 @@ Problem make_problem(int n, double outlier_ratio, PoseModel model, std::uint64_t
       model == PoseModel::se2 ? Eigen::Vector3d(4, -7, 0) : Eigen::Vector3d(4, -7, 1.5);
   pr.inliers = static_cast<int>(n * (1 - outlier_ratio));
   for (int i = 0; i < n; ++i) {
-    const Eigen::Vector3d p(coord(rng), coord(rng), coord(rng) / 4);
+    const Eigen::Vector3d p = draw3(coord, rng).cwiseQuotient(Eigen::Vector3d(1, 1, 4));
     pr.p.push_back(p);
     if (i < pr.inliers)
       pr.q.push_back(pr.T.block<3, 3>(0, 0) * p + pr.T.block<3, 1>(0, 3) +
-                     Eigen::Vector3d(noise(rng), noise(rng), noise(rng)));
+                     draw3(noise, rng));
     else
-      pr.q.push_back(Eigen::Vector3d(coord(rng), coord(rng), coord(rng) / 4));
+      pr.q.push_back(draw3(coord, rng).cwiseQuotient(Eigen::Vector3d(1, 1, 4)));
   }
   return pr;
 }

@@ -2,6 +2,7 @@
 #include <random>
 
 #include "pagor/kdtree.hpp"
+#include "pagor/random_draw.hpp"
 
 using namespace pagor;
 
@@ -29,7 +30,7 @@ TEST_CASE("the kd-tree agrees with a linear scan, with and without a bound") {
     std::uniform_real_distribution<float> u(-20.f, 20.f);
     std::vector<Eigen::Vector3f> pts;
     for (int i = 0; i < n; ++i)
-      pts.emplace_back(u(rng), u(rng), u(rng) * 0.1f);  // flat, like scans
+      pts.push_back(draw3(u, rng).cast<float>().cwiseProduct(Eigen::Vector3f(1, 1, 0.1f)));  // flat
     pts.push_back(pts.front());                         // a duplicate
     const KdTree3f tree(pts, 6);
     REQUIRE(tree.size() == pts.size());

@@ -3,6 +3,7 @@
 
 #include "pagor/pyramid_graph.hpp"
 #include "pagor/trim.hpp"
+#include "pagor/random_draw.hpp"
 
 using namespace pagor;
 
@@ -17,10 +18,11 @@ std::vector<Correspondence> random_correspondences(int m, std::uint64_t seed) {
     x.class_index = 0;
     x.source = landmark(rng);  // repeated landmarks on purpose
     x.target = landmark(rng);
-    x.p = Eigen::Vector3d(coord(rng), coord(rng), coord(rng) * 0.1);
+    x.p = draw3(coord, rng);
+    x.p.z() *= 0.1;
     // Half of them consistent with a pure translation, so every level has edges.
     x.q = (x.source % 2 == 0) ? x.p + Eigen::Vector3d(5, 1, 0)
-                              : Eigen::Vector3d(coord(rng), coord(rng), 0);
+                              : draw_on_plane(coord, rng, 0.0);
   }
   return c;
 }

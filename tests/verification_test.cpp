@@ -6,6 +6,7 @@
 
 #include "pagor/synthetic.hpp"
 #include "pagor/verification.hpp"
+#include "pagor/random_draw.hpp"
 
 using namespace pagor;
 
@@ -65,8 +66,8 @@ TEST_CASE("scores match a brute-force reference") {
   PointCloud source, target;
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<float> u(-5.f, 5.f);
-  for (int i = 0; i < 200; ++i) source.points.emplace_back(u(rng), u(rng), u(rng));
-  for (int i = 0; i < 300; ++i) target.points.emplace_back(u(rng), u(rng), u(rng));
+  for (int i = 0; i < 200; ++i) source.points.push_back(draw3(u, rng).cast<float>());
+  for (int i = 0; i < 300; ++i) target.points.push_back(draw3(u, rng).cast<float>());
   const Verifier verifier(source, target, 0.0);  // no downsampling
   Transform T = Transform::Identity();
   T(0, 3) = 0.3;

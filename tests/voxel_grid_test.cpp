@@ -9,6 +9,7 @@
 
 #include "pagor/errors.hpp"
 #include "pagor/voxel_grid.hpp"
+#include "pagor/random_draw.hpp"
 
 using namespace pagor;
 
@@ -20,7 +21,7 @@ TEST_CASE("voxel downsampling is the same 300 km from the origin") {
   const Eigen::Vector3f offset(300000.0f, -250000.0f, 1000.0f);
   for (int i = 0; i < 5000; ++i) {
     const Eigen::Vector3f p =
-        (Eigen::Vector3f(u(rng), u(rng), u(rng) / 8) * 32).array().round() / 32;
+        (draw3(u, rng).cast<float>().cwiseQuotient(Eigen::Vector3f(1, 1, 8)) * 32).array().round() / 32;
     near.push_back(p);
     far.push_back(p + offset);
   }
@@ -56,7 +57,8 @@ TEST_CASE("voxel downsampling equals a straightforward map-based reference") {
   std::mt19937 rng(11);
   std::uniform_real_distribution<float> u(-40.0f, 40.0f);
   std::vector<Eigen::Vector3f> pts;
-  for (int i = 0; i < 20000; ++i) pts.emplace_back(u(rng), u(rng), u(rng) / 10);
+  for (int i = 0; i < 20000; ++i)
+    pts.push_back(draw3(u, rng).cast<float>().cwiseQuotient(Eigen::Vector3f(1, 1, 10)));
   for (int i = 0; i < 500; ++i) pts.push_back(pts[static_cast<std::size_t>(i) * 7]);  // repeats
   for (double voxel : {0.2, 0.5, 3.0}) {
     std::map<std::array<long long, 3>, int> id;
@@ -88,7 +90,8 @@ TEST_CASE("the grid's nearest neighbour agrees with a linear scan, off the grid 
   std::mt19937_64 rng(23);
   std::uniform_real_distribution<float> u(-20.f, 20.f);
   std::vector<Eigen::Vector3f> pts;
-  for (int i = 0; i < 4000; ++i) pts.emplace_back(u(rng), u(rng), u(rng) * 0.1f);
+  for (int i = 0; i < 4000; ++i)
+    pts.push_back(draw3(u, rng).cast<float>().cwiseProduct(Eigen::Vector3f(1, 1, 0.1f)));
   // Points on cell boundaries of a 1 m grid anchored at the lowest point.
   for (int i = 0; i < 200; ++i) pts.emplace_back(std::round(u(rng)), std::round(u(rng)), 0.0f);
   pts.push_back(pts.front());  // a duplicate

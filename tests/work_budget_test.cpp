@@ -9,6 +9,7 @@
 #include "pagor/errors.hpp"
 #include "pagor/landmarks.hpp"
 #include "pagor/work_budget.hpp"
+#include "pagor/random_draw.hpp"
 
 using namespace pagor;
 
@@ -37,7 +38,7 @@ TEST_CASE("a radius search over the whole class is refused before it runs") {
   std::mt19937 rng(5);
   std::uniform_real_distribution<float> u(0.0f, 10.0f);
   std::vector<Eigen::Vector3f> pts(20000);
-  for (auto& p : pts) p = Eigen::Vector3f(u(rng), u(rng), u(rng));
+  for (auto& p : pts) p = draw3(u, rng).cast<float>();
   // Every point within 1e6 m of every other: 4e8 visits, over the 1e8 budget.
   CHECK_THROWS_WITH(
       check_radius_work(pts, 1e6, "landmarks.classes[1].cluster_tolerance", "class 'x'"),

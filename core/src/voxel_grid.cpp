@@ -221,49 +221,20 @@ RadiusGrid::RadiusGrid(const std::vector<Eigen::Vector3f>& points, double cell)
 std::pair<int, float> RadiusGrid::nearest(const Eigen::Vector3f& q, float radius,
                                           int exclude) const {
   std::pair<int, float> best{-1, radius * radius};
-  if (sorted_.empty()) return best;
-  const auto scan = [&](int cell) {
-    if (cell < 0) return;
-    for (int i = start_[static_cast<std::size_t>(cell)]; i < start_[static_cast<std::size_t>(cell) + 1];
-         ++i) {
+  for_cells_near(q, [&] { return best.second; }, [&](int begin, int end) {
+    for (int i = begin; i < end; ++i) {
       const float d2 = (sorted_[static_cast<std::size_t>(i)] - q).squaredNorm();
       if (d2 < best.second && index_[static_cast<std::size_t>(i)] != exclude)
         best = {index_[static_cast<std::size_t>(i)], d2};
     }
-  };
-  // The query's own cell first, then of the 26 around it only those whose box is nearer than the
-  // best so far. gap[a][k]: squared distance along axis a from q to the slab of offset k - 1, a
-  // little short (points sit in their cell up to rounding).
-  const std::uint64_t center = key_of(q);
-  constexpr std::uint64_t kAxis = (std::uint64_t(1) << 21) - 1;
-  const std::uint64_t c[3] = {center >> 42, (center >> 21) & kAxis, center & kAxis};
-  scan(find(center));
-  float gap[3][3];
-  const float slack = 1e-4f * cell_;
-  for (int a = 0; a < 3; ++a) {
-    const float low = lo_[a] + static_cast<float>(c[a] - 1) * cell_;  // cells are numbered from 1
-    const float below = std::max(0.0f, q[a] - low - slack);
-    const float above = std::max(0.0f, low + cell_ - q[a] - slack);
-    gap[a][0] = below * below;
-    gap[a][1] = 0.0f;
-    gap[a][2] = above * above;
-  }
-  for (int x = 0; x < 3; ++x)
-    for (int y = 0; y < 3; ++y) {
-      const float gxy = gap[0][x] + gap[1][y];
-      if (gxy >= best.second) continue;
-      for (int z = 0; z < 3; ++z) {
-        if ((x == 1 && y == 1 && z == 1) || gxy + gap[2][z] >= best.second) continue;
-        scan(find(((c[0] + x - 1) << 42) | ((c[1] + y - 1) << 21) | (c[2] + z - 1)));
-      }
-    }
+  });
   return best;
 }
 
 void RadiusGrid::within(const Eigen::Vector3f& q, float radius, std::vector<int>& index,
                         std::vector<float>& distance_sq) const {
   const float r2 = radius * radius;
-  for_cells_around(q, [&](int begin, int end) {
+  for_cells_near(q, [r2] { return r2; }, [&](int begin, int end) {
     for (int i = begin; i < end; ++i) {
       const float d2 = (sorted_[static_cast<std::size_t>(i)] - q).squaredNorm();
       if (d2 < r2) {

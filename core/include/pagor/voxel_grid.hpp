@@ -4,6 +4,7 @@
 /// neighbour search over points hashed on a grid.
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -52,20 +53,42 @@ class RadiusGrid {
  private:
   std::uint64_t key_of(const Eigen::Vector3f& p) const;
   int find(std::uint64_t key) const;  // cell number, or -1
-  // Calls f(begin, end) with the range of sorted_ of each occupied cell of the 27 around q.
-  template <class F>
-  void for_cells_around(const Eigen::Vector3f& q, F&& f) const {
+  // Calls f(begin, end) with the range of sorted_ of each occupied cell of the 27 around q whose
+  // box is nearer to q than sqrt(bound()) (bound() may shrink as f finds points), q's own cell
+  // first. A box's distance is taken a little short: points sit in their cell up to rounding.
+  template <class Bound, class F>
+  void for_cells_near(const Eigen::Vector3f& q, const Bound& bound, F&& f) const {
     if (sorted_.empty()) return;
     const std::uint64_t center = key_of(q);
     constexpr std::uint64_t kAxis = (std::uint64_t(1) << 21) - 1;
     const std::uint64_t c[3] = {center >> 42, (center >> 21) & kAxis, center & kAxis};
-    for (std::uint64_t x = c[0] - 1; x <= c[0] + 1; ++x)
-      for (std::uint64_t y = c[1] - 1; y <= c[1] + 1; ++y)
-        for (std::uint64_t z = c[2] - 1; z <= c[2] + 1; ++z) {
-          const int cell = find((x << 42) | (y << 21) | z);
-          if (cell >= 0)
-            f(start_[static_cast<std::size_t>(cell)], start_[static_cast<std::size_t>(cell) + 1]);
-        }
+    const auto visit = [&](std::uint64_t key) {
+      const int cell = find(key);
+      if (cell >= 0)
+        f(start_[static_cast<std::size_t>(cell)], start_[static_cast<std::size_t>(cell) + 1]);
+    };
+    visit(center);
+    // gap[a][k]: squared distance along axis a from q to the slab of the cell at offset k - 1.
+    float gap[3][3];
+    const float slack = 1e-4f * cell_;
+    for (int a = 0; a < 3; ++a) {
+      const float low = lo_[a] + static_cast<float>(c[a] - 1) * cell_;  // cells count from 1
+      const float below = std::max(0.0f, q[a] - low - slack);
+      const float above = std::max(0.0f, low + cell_ - q[a] - slack);
+      gap[a][0] = below * below;
+      gap[a][1] = 0.0f;
+      gap[a][2] = above * above;
+    }
+    for (int x = 0; x < 3; ++x)
+      for (int y = 0; y < 3; ++y) {
+        const float gxy = gap[0][x] + gap[1][y];
+        if (gxy >= bound()) continue;
+        for (int z = 0; z < 3; ++z)
+          if (!(x == 1 && y == 1 && z == 1) && gxy + gap[2][z] < bound())
+            visit(((c[0] + static_cast<std::uint64_t>(x) - 1) << 42) |
+                  ((c[1] + static_cast<std::uint64_t>(y) - 1) << 21) |
+                  (c[2] + static_cast<std::uint64_t>(z) - 1));
+      }
   }
 
   float cell_ = 1.0f;
