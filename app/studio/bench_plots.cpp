@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace pagor::studio {
 namespace {
@@ -137,10 +138,14 @@ Plot rates_plot(const BenchmarkSummary& s) {
   Plot p = percent_plot(PlotKind::bars, "rate");
   p.title = "Rates";
   p.categories = {"success", "upper bound", "verdict precision", "verdict recall"};
+  // A rate of nothing (no pair with a ground truth, none accepted, none successful) is drawn as
+  // n/a rather than as the 0 % or 100 % the summary's conventions would give.
+  const double none = std::numeric_limits<double>::quiet_NaN();
+  const auto rate = [&](int n, int of) { return of ? percent(n, of) : none; };
   p.series = {{"this run",
                {},
-               {percent(s.successes, s.with_truth), percent(s.upper_bound, s.with_truth),
-                100.0 * s.precision(), 100.0 * s.recall()}}};
+               {rate(s.successes, s.with_truth), rate(s.upper_bound, s.with_truth),
+                rate(s.true_accepts, s.accepted), rate(s.true_accepts, s.successes)}}};
   return p;
 }
 

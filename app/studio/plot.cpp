@@ -174,7 +174,11 @@ void draw_bars(ImDrawList* d, const Plot& plot, const Geometry& g, ImFont* font,
     d->AddText(font, fs, ImVec2(g.area_min.x - kPad - text_w(font, fs, label), y), kText,
                label.c_str());
     for (std::size_t k = 0; k < plot.series.size(); ++k) {
-      if (c >= plot.series[k].y.size() || !std::isfinite(plot.series[k].y[c])) continue;
+      if (c >= plot.series[k].y.size()) continue;
+      if (!std::isfinite(plot.series[k].y[c])) {  // undefined (e.g. a rate of nothing): say so
+        d->AddText(font, fs * 0.85f, ImVec2(g.area_min.x + 3, y), kText, "n/a");
+        continue;
+      }
       ImVec2 a, b;
       bar_rect(plot, g, c, k, plot.series[k].y[c], a, b);
       d->AddRectFilled(a, b, series_color(k));
@@ -326,7 +330,7 @@ std::string plot_csv(const Plot& plot) {
     for (std::size_t c = 0; c < plot.categories.size(); ++c) {
       out += quoted(plot.categories[c]);
       for (const PlotSeries& s : plot.series)
-        out += "," + (c < s.y.size() ? value_text(s.y[c], 10) : std::string());
+        out += "," + (c < s.y.size() && std::isfinite(s.y[c]) ? value_text(s.y[c], 10) : std::string());
       out += "\n";
     }
     return out;

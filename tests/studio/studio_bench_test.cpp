@@ -278,3 +278,20 @@ TEST_CASE("sweep line plots: success and one pair's D against mu, none for mixed
   r.settings[1].setting.config.graph.trim = TrimKind::difference;  // a second dimension varies
   CHECK(studio::sweep_line_plot(r).series.empty());
 }
+
+TEST_CASE("rates of nothing are n/a, not 0 % or 100 %") {
+  BenchmarkSummary none;  // an empty set: no pair with a ground truth, nothing accepted
+  const studio::Plot p = studio::rates_plot(none);
+  REQUIRE(p.series.size() == 1);
+  REQUIRE(p.series[0].y.size() == 4);
+  for (double y : p.series[0].y) CHECK(std::isnan(y));
+  CHECK(studio::plot_csv(p).find("nan") == std::string::npos);
+  BenchmarkSummary some;
+  some.with_truth = 4;
+  some.successes = 3;
+  some.upper_bound = 4;
+  some.accepted = 2;
+  some.true_accepts = 2;
+  const studio::Plot q = studio::rates_plot(some);
+  CHECK(q.series[0].y == std::vector<double>{75, 100, 100, 100.0 * 2 / 3});
+}
