@@ -270,7 +270,8 @@ void plot_with_exports(UiContext& ui, const char* id, const Plot& plot, float wi
   ImGui::BeginGroup();
   ImGui::PushID(id);
   plot_widget(id, plot, ImVec2(width, kPlotHeight));
-  const std::string base = ui.state.bench.plot_path + "-" + id;
+  // Absolute, so that the message after an export says where the file went.
+  const std::string base = absolute(ui.state.bench.plot_path + "-" + id);
   if (ui::small_button("PNG", "write the plot as PNG (path below the plots)") && ui.export_plot)
     ui.export_plot(plot, base + ".png");
   ImGui::SameLine();
