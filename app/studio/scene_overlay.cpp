@@ -186,14 +186,20 @@ void draw_legend(ImDrawList* dl, ImVec2 at, const Snapshot& s, const ViewState& 
   if (view.color == ColorMode::by_cloud) {
     points = {{col(Palette::source), "source"}, {col(Palette::target), "target"}};
   } else {
-    for (const auto& c : s.config.landmarks.classes)
-      points.push_back({col(colors.of(c.name)), c.name});
-    // Classes the run added, such as the class-agnostic `structure` keypoints of a class-poor pair.
+    // Clouds without labels have no point of any configured class: only what the run added.
+    const bool labelled = (s.source && !s.source->labels.empty()) ||
+                          (s.target && !s.target->labels.empty());
+    if (labelled)
+      for (const auto& c : s.config.landmarks.classes)
+        points.push_back({col(colors.of(c.name)), c.name});
+    // With labels: classes the run added, such as the class-agnostic `structure` keypoints of a
+    // class-poor pair. Without: every class that made landmarks.
     for (const auto& c : s.source_landmarks.classes)
-      if (std::none_of(points.begin(), points.end(),
+      if (c.landmarks > 0 &&
+          std::none_of(points.begin(), points.end(),
                        [&](const auto& p) { return p.second == c.name; }))
         points.push_back({col(colors.of(c.name)), c.name + " (landmarks only)"});
-    points.push_back({IM_COL32(120, 120, 120, 255), "other labels"});
+    points.push_back({IM_COL32(120, 120, 120, 255), labelled ? "other labels" : "unlabelled points"});
   }
   const bool by_residual = view.diagnosis.color_by_residual && s.diagnosis;  // its own legend
   const int lines =
