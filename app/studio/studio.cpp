@@ -304,11 +304,14 @@ void Studio::layout_windows(UiContext& ui, float W, float H) {
   ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 0.0f);
   place(left, 0, kSplitter, H);
   if (ImGui::Begin("##vsplit", nullptr, kBarFlags)) {
+    // Stored only when dragged: a window shrunk for a moment shows a narrower panel, and the
+    // user's width comes back when it grows again.
     const ImVec2 d = ui::splitter("##left_splitter", ImVec2(kSplitter, H), true);
-    layout.left_width =
-        std::clamp(left + d.x, ViewLimits::min_left_width,
-                   std::min(ViewLimits::max_left_width,
-                            std::max(ViewLimits::min_left_width, kMaxLeftShare * W)));
+    if (d.x != 0)
+      layout.left_width =
+          std::clamp(left + d.x, ViewLimits::min_left_width,
+                     std::min(ViewLimits::max_left_width,
+                              std::max(ViewLimits::min_left_width, kMaxLeftShare * W)));
   }
   ImGui::End();
   const float x = left + kSplitter, w = std::max(1.0f, W - x);

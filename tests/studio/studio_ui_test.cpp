@@ -148,6 +148,28 @@ TEST_CASE("window sizes from 320x240 to 2560x1440 keep the layout inside the win
   }
 }
 
+TEST_CASE("the left panel gets its width back after the window was shrunk") {
+  TempDir tmp;
+  UiDriver d(synthetic_state(tmp), 1280, 720);
+  d.settle();
+  d.state().layout.left_width = 400.0f;
+  d.frames(2);
+  const auto* split = d.find("##left_splitter");
+  REQUIRE(split);
+  CHECK(split->min.x == Approx(400.0f).margin(1.0f));
+  d.resize(320, 240);
+  d.frames(3);
+  split = d.find("##left_splitter");
+  REQUIRE(split);
+  CHECK(split->min.x < 200.0f);  // narrower while the window is small (at most 180 px)
+  d.resize(1280, 720);
+  d.frames(3);
+  CHECK(d.state().layout.left_width == 400.0f);
+  split = d.find("##left_splitter");
+  REQUIRE(split);
+  CHECK(split->min.x == Approx(400.0f).margin(1.0f));
+}
+
 TEST_CASE("shortcuts") {
   TempDir tmp;
   UiDriver d(synthetic_state(tmp), 800, 600);
