@@ -62,17 +62,21 @@ TEST_CASE("the sweep grid varies mu fastest and labels the dimensions that vary"
   grid.models = {PoseModel::se3};
   const auto settings = sweep_settings(default_config(), grid);
   REQUIRE(settings.size() == 4);
-  CHECK(settings[0].label == "eps=0.02/0.04 mu=0.5");
-  CHECK(settings[1].label == "eps=0.02/0.04 mu=1");
-  CHECK(settings[2].label == "eps=0.03/0.06/0.12 mu=0.5");
+  CHECK(settings[0].label == "eps=0.02/0.04 mu=0.5 m");
+  CHECK(settings[1].label == "eps=0.02/0.04 mu=1 m");
+  CHECK(settings[2].label == "eps=0.03/0.06/0.12 mu=0.5 m");
   CHECK(settings[3].config.graph.thresholds == std::vector<double>{0.03, 0.06, 0.12});
   CHECK(settings[3].config.gnc.model == PoseModel::se3);  // a one-value dimension applies
   CHECK(sweep_settings(default_config(), {}).front().label == "base");
+  SweepGrid indoor;  // difference TRIM: thresholds in metres
+  indoor.trims = {TrimKind::difference};
+  indoor.threshold_sets = {{0.05, 0.1}, {0.2}};
+  CHECK(sweep_settings(default_config(), indoor).back().label == "eps=0.2 m");
 
   grid.mus = {0.5, -1.0};
   CHECK_THROWS_WITH(
       sweep_settings(default_config(), grid),
-      Catch::Contains("sweep setting 2 (eps=0.02/0.04 mu=-1)") && Catch::Contains("mu"));
+      Catch::Contains("sweep setting 2 (eps=0.02/0.04 mu=-1 m)") && Catch::Contains("mu"));
 }
 
 TEST_CASE("number lists and threshold sets are parsed with the element named") {

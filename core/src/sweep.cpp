@@ -57,10 +57,12 @@ std::vector<SweepSetting> sweep_settings(const Config& base, const SweepGrid& gr
               s.label += (s.label.empty() ? "" : " ") + part;
             };
             if (grid.trims.size() > 1) add(std::string("trim=") + to_string(trim));
-            if (grid.threshold_sets.size() > 1) add("eps=" + thresholds_text(eps));
+            // Units as everywhere: difference TRIM thresholds and mu in metres.
+            if (grid.threshold_sets.size() > 1)
+              add("eps=" + thresholds_text(eps) + (trim == TrimKind::difference ? " m" : ""));
             if (grid.solvers.size() > 1) add(std::string("solver=") + to_string(solver));
             if (grid.models.size() > 1) add(std::string("model=") + to_string(model));
-            if (grid.mus.size() > 1) add("mu=" + number(mu));
+            if (grid.mus.size() > 1) add("mu=" + number(mu) + " m");
             if (s.label.empty()) s.label = "base";
             validate(s.config,
                      "sweep setting " + std::to_string(out.size() + 1) + " (" + s.label + ")");
