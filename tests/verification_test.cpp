@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 #include <random>
+#include <thread>
 
 #include "pagor/synthetic.hpp"
 #include "pagor/verification.hpp"
@@ -170,4 +171,24 @@ TEST_CASE("bounded distances (on the grid) and unbounded ones (kd-tree) equal a 
         REQUIRE(std::isinf(d[i]));
     }
   }
+}
+
+TEST_CASE("one verifier searched from several threads at once, with growing bounds, agrees") {
+  // The grid is built lazily and replaced by a coarser one when a larger bound comes; threads
+  // that still search an older grid must see it intact (run under ThreadSanitizer too).
+  const SyntheticScene scene = make_synthetic_scene();
+  const Transform T = perturbed(scene.T_target_source, 0.3, 1.0);
+  const std::vector<float> bounds = {0.3f, 1.0f, 2.5f, 0.5f, 4.0f, std::numeric_limits<float>::infinity()};
+  std::vector<std::vector<float>> expected;
+  {
+    const Verifier alone(scene.source, scene.target, 0.5);
+    for (float b : bounds) expected.push_back(alone.distances(T, b));
+  }
+  const Verifier shared(scene.source, scene.target, 0.5);
+  std::vector<std::vector<float>> got(bounds.size());
+  std::vector<std::thread> pool;
+  for (std::size_t k = 0; k < bounds.size(); ++k)
+    pool.emplace_back([&, k] { got[k] = shared.distances(T, bounds[k]); });
+  for (auto& t : pool) t.join();
+  for (std::size_t k = 0; k < bounds.size(); ++k) CHECK(got[k] == expected[k]);
 }
