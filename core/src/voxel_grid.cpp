@@ -56,22 +56,41 @@ void bin(std::size_t n, const Point& point, const MakeKey& make_key, VoxelDownsa
 
 // The same for packed keys, on an open-addressing table (linear probing) instead of a node-based
 // map: voxels still numbered in order of first appearance, so the output is the map's exactly.
+// The table starts small and doubles at half load: sized for every point at once it would cost
+// more in fresh pages (a page fault each) than the probing saves.
 template <class Point, class MakeKey>
 void bin_packed(std::size_t n, const Point& point, const MakeKey& make_key, VoxelDownsample& out) {
   constexpr std::uint64_t kFree = ~std::uint64_t(0);  // packed keys use 63 bits
-  std::size_t capacity = 16;
-  while (capacity < 2 * n) capacity *= 2;
-  const std::size_t mask = capacity - 1;
-  std::vector<std::uint64_t> keys(capacity, kFree);
-  std::vector<int> voxel(capacity);
+  const auto slot_of = [](std::uint64_t key, std::size_t mask) {
+    std::uint64_t h = key ^ (key >> 31);
+    h *= 0x9E3779B97F4A7C15ull;
+    return static_cast<std::size_t>(h ^ (h >> 29)) & mask;
+  };
+  std::size_t mask = 1023;
+  std::vector<std::uint64_t> keys(mask + 1, kFree);
+  std::vector<int> voxel(mask + 1);
   std::vector<Eigen::Vector3d> sums;
   for (std::size_t i = 0; i < n; ++i) {
     const std::uint64_t key = make_key(point(i));
-    std::uint64_t h = key ^ (key >> 31);
-    h *= 0x9E3779B97F4A7C15ull;
-    std::size_t s = static_cast<std::size_t>(h ^ (h >> 29)) & mask;
+    std::size_t s = slot_of(key, mask);
     while (keys[s] != kFree && keys[s] != key) s = (s + 1) & mask;
     if (keys[s] == kFree) {
+      if (2 * (sums.size() + 1) > mask + 1) {  // grow, then find the key's new slot
+        std::vector<std::uint64_t> old_keys(2 * (mask + 1), kFree);
+        std::vector<int> old_voxel(2 * (mask + 1));
+        old_keys.swap(keys);
+        old_voxel.swap(voxel);
+        mask = 2 * mask + 1;
+        for (std::size_t o = 0; o < old_keys.size(); ++o) {
+          if (old_keys[o] == kFree) continue;
+          std::size_t t = slot_of(old_keys[o], mask);
+          while (keys[t] != kFree) t = (t + 1) & mask;
+          keys[t] = old_keys[o];
+          voxel[t] = old_voxel[o];
+        }
+        s = slot_of(key, mask);
+        while (keys[s] != kFree) s = (s + 1) & mask;
+      }
       keys[s] = key;
       voxel[s] = static_cast<int>(sums.size());
       sums.emplace_back(Eigen::Vector3d::Zero());
