@@ -41,6 +41,7 @@ struct Layers {
   bool landmarks = true;
   bool correspondences = true;       ///< the shown level's clique
   bool all_correspondences = false;  ///< also those outside the clique, faint
+  bool plan = true;  ///< indoor pairs: the plan's walls and columns, and the scan's columns
 };
 
 struct ViewState {

@@ -22,7 +22,8 @@ const char* const kColumns[] = {"pair",  "verdict",      "success",   "t err [m]
 constexpr int kColumnCount = 10;
 constexpr int kDiagnosisColumn = 9;  // sorted by name, like the pair
 const char* const kShow[] = {"all pairs", "failures", "successes", "accepted", "rejected"};
-constexpr float kPlotHeight = 260.0f;  // [px]
+constexpr float kPlotHeight = 260.0f;        // [px]
+constexpr float kTrajectoryHeight = 420.0f;  // [px]
 
 std::string absolute(const std::string& path) {
   if (path.empty()) return path;
@@ -266,10 +267,11 @@ void rows_table(UiContext& ui, const std::vector<BenchRow>& rows, BenchWorker& b
   ImGui::EndTable();
 }
 
-void plot_with_exports(UiContext& ui, const char* id, const Plot& plot, float width) {
+void plot_with_exports(UiContext& ui, const char* id, const Plot& plot, float width,
+                       float height = kPlotHeight) {
   ImGui::BeginGroup();
   ImGui::PushID(id);
-  plot_widget(id, plot, ImVec2(width, kPlotHeight));
+  plot_widget(id, plot, ImVec2(width, height));
   const std::string base = ui.state.bench.plot_path + "-" + id;
   if (ui::small_button("PNG", "write the plot as PNG (path below the plots)") && ui.export_plot)
     ui.export_plot(plot, base + ".png");
@@ -378,6 +380,8 @@ void show_pair(AppState& state, const PairEntry& entry) {
   state.data = d;
   state.have_data = true;
   state.camera_fitted = false;
+  if (d.kind == PairSource::Kind::files && is_floor_plan_path(d.target))
+    state.camera.top_down = true;  // an indoor pair is planar
   state.main_view = MainView::pair;
 }
 
@@ -400,6 +404,13 @@ void benchmark_view(UiContext& ui) {
   plot_with_exports(ui, "rates", rates_plot(summary), w * 0.5f - 4);
   ImGui::SameLine();
   plot_with_exports(ui, "picking", picking_plot(outcomes), w * 0.5f - 4);
+  if (const auto plan = bench.plan()) {  // an indoor set: its trajectory over the plan
+    std::vector<PairOutcome> sequence(rows.size());  // by scan index; not yet run: left out
+    for (std::size_t i = 0; i < rows.size(); ++i)
+      if (rows[i].done && rows[i].current) sequence[i] = rows[i].outcome;
+    plot_with_exports(ui, "trajectory", trajectory_plot(sequence, plan.get()), w,
+                      kTrajectoryHeight);
+  }
   ui::input_text("export path##bench", &ui.state.bench.plot_path,
                  "plots are written to PATH-<plot>.png and .csv");
   ImGui::PushID("sweep_section");

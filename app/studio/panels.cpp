@@ -33,6 +33,9 @@ void section(const char* title) {
 }
 
 void open_data(UiContext& ui) {
+  // A scan against a floor plan is a planar problem: look at it from above.
+  if (ui.state.data.kind == PairSource::Kind::files && is_floor_plan_path(ui.state.data.target))
+    ui.state.camera.top_down = true;
   ui.state.have_data = true;
   ui.state.camera_fitted = false;
   ui.state.view.level = -1;
@@ -354,6 +357,12 @@ void view_panel(UiContext& ui) {
   ImGui::SameLine();
   ui::checkbox("all corr.", &l.all_correspondences,
                "Also show every correspondence outside the clique, faint, in class colours.");
+  if (ui.snapshot && ui.snapshot->plan) {
+    ImGui::SameLine();
+    ui::checkbox("floor plan", &l.plan,
+                 "Indoor pair: the plan's walls as lines and columns as circles (orange), and the "
+                 "columns found in the scan as circles with a cross (blue), under the source pose.");
+  }
   ui::checkbox("grid, axes, scale", &v.grid,
                "Ground grid, XYZ axes at the origin and a scale bar.");
   ImGui::SameLine();

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "diagnosis_overlay.hpp"
+#include "plan_overlay.hpp"
 
 namespace pagor::studio {
 namespace {
@@ -196,8 +197,9 @@ void draw_legend(ImDrawList* dl, ImVec2 at, const Snapshot& s, const ViewState& 
     points.push_back({IM_COL32(120, 120, 120, 255), "other labels"});
   }
   const bool by_residual = view.diagnosis.color_by_residual && s.diagnosis;  // its own legend
-  const int lines =
-      (by_residual ? 0 : 1 + (gt ? 1 : 0)) + (view.layers.all_correspondences ? 1 : 0);
+  const bool plan = s.plan && view.layers.plan;
+  const int lines = (by_residual ? 0 : 1 + (gt ? 1 : 0)) +
+                    (view.layers.all_correspondences ? 1 : 0) + (plan ? 3 : 0);
   const float h = 17.0f * static_cast<float>(lines + points.size()) + 4.0f;
   dl->AddRectFilled(ImVec2(at.x - 4, at.y - 4), ImVec2(at.x + 190, at.y + h),
                     IM_COL32(0, 0, 0, 150), 4.0f);
@@ -207,6 +209,11 @@ void draw_legend(ImDrawList* dl, ImVec2 at, const Snapshot& s, const ViewState& 
   }
   if (view.layers.all_correspondences)
     legend_item(dl, at, IM_COL32(200, 200, 200, 160), "other corr. (class)", true);
+  if (plan) {
+    legend_item(dl, at, PlanPalette::wall, "plan: walls", true);
+    legend_item(dl, at, PlanPalette::column, "plan: columns", true);
+    legend_item(dl, at, PlanPalette::scan_column, "scan: columns found", true);
+  }
   for (const auto& [c, name] : points) legend_item(dl, at, c, name.c_str(), false);
 }
 
