@@ -380,8 +380,6 @@ void show_pair(AppState& state, const PairEntry& entry) {
   state.data = d;
   state.have_data = true;
   state.camera_fitted = false;
-  if (d.kind == PairSource::Kind::files && is_floor_plan_path(d.target))
-    state.camera.top_down = true;  // an indoor pair is planar
   state.main_view = MainView::pair;
 }
 

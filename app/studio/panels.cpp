@@ -33,9 +33,6 @@ void section(const char* title) {
 }
 
 void open_data(UiContext& ui) {
-  // A scan against a floor plan is a planar problem: look at it from above.
-  if (ui.state.data.kind == PairSource::Kind::files && is_floor_plan_path(ui.state.data.target))
-    ui.state.camera.top_down = true;
   ui.state.have_data = true;
   ui.state.camera_fitted = false;
   ui.state.view.level = -1;

@@ -83,8 +83,9 @@ MapGeometry map_layout(const Plot& plot, ImVec2 min, ImVec2 max, ImFont* font, f
   g.y_lo = 0.5 * (b.y0 + b.y1) - 0.5 * h / g.scale;
   g.area_min = ImVec2(left, top);
   g.area_max = ImVec2(left + w, top + h);
-  g.x_ticks = nice_ticks(g.x_lo, g.x_lo + w / g.scale);
-  g.y_ticks = nice_ticks(g.y_lo, g.y_lo + h / g.scale);
+  // About one tick per five text heights across, per three up.
+  g.x_ticks = nice_ticks(g.x_lo, g.x_lo + w / g.scale, std::max(2, static_cast<int>(w / (fs * 5))));
+  g.y_ticks = nice_ticks(g.y_lo, g.y_lo + h / g.scale, std::max(2, static_cast<int>(h / (fs * 3))));
   g.bar_x = g.area_max.x + kPad * 1.5f;
   return g;
 }

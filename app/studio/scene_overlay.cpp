@@ -95,6 +95,10 @@ bool shown_bounds(const Snapshot& s, const ViewState& view, const Transform& pos
     for (const auto& lm : s.source_landmarks.landmarks)
       if (lm.kind == LandmarkKind::cluster) extend(lo, hi, transform_point(pose, lm.centroid));
   }
+  if (view.layers.plan && s.plan)
+    for (const PlanWall& w : s.plan->walls)
+      for (const Eigen::Vector2d& p : w.points)
+        extend(lo, hi, Eigen::Vector3f(float(p.x()), float(p.y()), 0.0f));
   if (view.layers.correspondences) {
     const int level = shown_level(view, s.selected, static_cast<int>(s.levels.size()));
     if (level >= 0)

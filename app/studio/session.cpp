@@ -281,6 +281,10 @@ void read_view(const json& v, const std::string& where, ViewState& view) {
 
 }  // namespace
 
+bool is_indoor(const PairSource& data) {
+  return data.kind == PairSource::Kind::files && is_floor_plan_path(data.target);
+}
+
 std::string resolve_path(const AppState& s, const std::string& path) {
   return resolve(path, std::filesystem::path(s.base_dir));
 }
