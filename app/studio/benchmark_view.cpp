@@ -390,6 +390,7 @@ void benchmark_view(UiContext& ui) {
   const std::vector<BenchRow> rows = bench.rows();
   source_controls(ui, bench);
   if (!bench.origin().empty()) ImGui::Text("open: %s", bench.origin().c_str());
+  indoor_preset_hint(ui, bench.plan() != nullptr, "bench");
   if (bench.can_rerun()) progress_and_cache(ui, bench, st);
   std::vector<PairOutcome> outcomes;
   for (const BenchRow& r : rows)

@@ -119,7 +119,7 @@ void draw_map_legend(ImDrawList* d, const Plot& plot, const MapGeometry& g, ImVe
     const ImVec2 c(x + fs * 0.6f, y + fs * 0.5f);
     if (s.line_only) {
       d->AddLine(ImVec2(x, c.y), ImVec2(x + fs * 1.2f, c.y), point_color(plot, s, k, 0), 1.5f);
-    } else if (!s.color_values.empty() && plot.color_bar) {  // the scale's ends side by side
+    } else if (plot.color_bar && !s.color) {  // coloured on the scale: its ends side by side
       marker(d, ImVec2(c.x - fs * 0.3f, c.y), s.marker, viridis(0.0));
       marker(d, ImVec2(c.x + fs * 0.3f, c.y), s.marker, viridis(1.0));
     } else {

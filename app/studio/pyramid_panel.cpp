@@ -147,7 +147,9 @@ void pyramid_panel(UiContext& ui) {
       ImGui::GetTextLineHeightWithSpacing() * (static_cast<float>(s->levels.size()) + 2.4f);
   if (ImGui::BeginTable("pyramid", columns, flags, ImVec2(0, table_h))) {
     ImGui::TableSetupScrollFreeze(1, 1);
-    for (const char* h : {"level", "\xce\xb5", "verts", "edges", "clique", "D [m]",
+    // A difference TRIM's thresholds are lengths; a ratio's have no unit.
+    const char* eps = s->config.graph.trim == TrimKind::difference ? "\xce\xb5 [m]" : "\xce\xb5";
+    for (const char* h : {"level", eps, "verts", "edges", "clique", "D [m]",
                           "\xce\x94"
                           "D"})
       ImGui::TableSetupColumn(h);
@@ -227,7 +229,8 @@ void pyramid_panel(UiContext& ui) {
   if (shown >= 0) {
     const LevelView& l = s->levels[static_cast<std::size_t>(shown)];
     ImGui::Spacing();
-    ImGui::Text("level %d (\xce\xb5 %.3f): clique of %zu", shown, l.epsilon, l.clique.size());
+    ImGui::Text("level %d (\xce\xb5 %.3f%s): clique of %zu", shown, l.epsilon,
+                s->config.graph.trim == TrimKind::difference ? " m" : "", l.clique.size());
     if (l.pose.valid) {
       const Transform& T = l.pose.T_target_source;
       const Eigen::Vector3d a = yaw_pitch_roll_deg(T.block<3, 3>(0, 0));

@@ -312,7 +312,9 @@ void Studio::layout_windows(UiContext& ui, float W, float H) {
   place(left, 0, kSplitter, H);
   if (ImGui::Begin("##vsplit", nullptr, kBarFlags)) {
     const ImVec2 d = ui::splitter("##left_splitter", ImVec2(kSplitter, H), true);
-    layout.left_width =
+    // Only a drag moves it: a window made small for a while gets the panel back at its width.
+    if (d.x != 0.0f)
+      layout.left_width =
         std::clamp(left + d.x, ViewLimits::min_left_width,
                    std::min(ViewLimits::max_left_width,
                             std::max(ViewLimits::min_left_width, kMaxLeftShare * W)));

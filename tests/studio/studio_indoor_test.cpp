@@ -191,11 +191,15 @@ TEST_CASE("picking statistics label each level by its epsilon with the TRIM's un
 TEST_CASE("every widget with an indoor pair open, the floor plan layer included") {
   TempDir tmp;
   studio::AppState s = base_state(tmp);
-  s.data = indoor_pair();
-  s.config = preset_config("indoor");
+  s.data = indoor_pair();  // with the default (outdoor) parameters
   UiDriver d(s);
   d.settle();
   CHECK(d.state().camera.top_down);  // new indoor data is looked at from above
+  // The data panel offers the indoor parameters, and they apply.
+  REQUIRE(d.click_widget("use the indoor parameters##data", "Pagor Studio"));
+  d.settle();
+  CHECK(config_to_json(d.state().config, -1) == config_to_json(preset_config("indoor"), -1));
+  CHECK_FALSE(d.find("use the indoor parameters##data", "Pagor Studio"));
   REQUIRE(d.find("floor plan", "Pagor Studio"));
   const bool before = d.state().view.layers.plan;
   REQUIRE(d.click_widget("floor plan", "Pagor Studio"));
