@@ -51,7 +51,7 @@ Eigen::Vector2d translation(const Transform& T) {
 
 }  // namespace
 
-TEST_CASE("an indoor pair's plan and scan columns reach the snapshot; other pairs have none") {
+TEST_CASE("an indoor pair's plan and scan columns reach the snapshot, other pairs have none") {
   const Config config = preset_config("indoor");
   studio::Worker w;
   w.submit(indoor_pair(), config);
