@@ -148,6 +148,21 @@ TEST_CASE("window sizes from 320x240 to 2560x1440 keep the layout inside the win
   }
 }
 
+TEST_CASE("the left panel gets its width back when a small window grows again") {
+  TempDir tmp;
+  UiDriver d(synthetic_state(tmp), 1280, 720);
+  d.settle();
+  const float width = d.state().layout.left_width;
+  d.resize(320, 240);
+  d.frames(3);
+  d.resize(1280, 720);
+  d.frames(3);
+  CHECK(d.state().layout.left_width == width);
+  const auto* split = d.find("##left_splitter");
+  REQUIRE(split);
+  CHECK(split->min.x == Approx(width).margin(1.0));
+}
+
 TEST_CASE("shortcuts") {
   TempDir tmp;
   UiDriver d(synthetic_state(tmp), 800, 600);
