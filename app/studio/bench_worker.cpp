@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <filesystem>
 #include <numeric>
 
 #include "pagor/errors.hpp"
@@ -23,6 +24,15 @@ std::string plan_path(const PairSet& set) {
     if (e.source.kind == PairSource::Kind::files && is_floor_plan_path(e.source.target))
       return e.source.target;
   return {};
+}
+
+// A path a results file names: as written when it exists from here, else beside the file (a
+// manifest's relative paths are relative to its directory, which the results usually share).
+std::string beside(const std::string& path, const std::string& file) {
+  const std::filesystem::path p(path);
+  std::error_code ec;
+  if (p.is_absolute() || std::filesystem::exists(p, ec)) return path;
+  return (std::filesystem::path(file).parent_path() / p).string();
 }
 
 std::size_t cloud_bytes(const PointCloud& c) {
@@ -103,7 +113,7 @@ void BenchWorker::show_results(std::vector<PairOutcome> outcomes, const std::str
     ++plan_generation_;
     for (const BenchRow& r : rows_)  // results of an indoor set name the plan as their target
       if (is_floor_plan_path(r.outcome.target_name)) {
-        pending_plan_ = r.outcome.target_name;
+        pending_plan_ = beside(r.outcome.target_name, origin);
         break;
       }
     rerunnable_ = false;

@@ -77,6 +77,7 @@ PairOutcome pair_outcome(const Pipeline& pipeline, const PairEntry& entry,
   }
   auto j = nlohmann::json::parse(registration_report_json(pipeline, source_name, target_name, -1));
   j.erase("config");
+  j["trim"] = to_string(pipeline.config().graph.trim);  // the unit of the levels' epsilon
   const std::optional<Diagnosis> diagnosis = diagnose(pipeline);
   if (diagnosis) o.diagnosis = verdict_name(diagnosis->verdict);
   j["diagnosis"] = diagnosis ? nlohmann::json::parse(diagnosis_json(*diagnosis)) : nlohmann::json();
@@ -172,6 +173,9 @@ PairOutcome outcome_from_line(const nlohmann::json& j, const std::string& where)
   o.T_target_source = transform_from_json(j.find("T_target_source"), j.end());
   if (gt != j.end() && gt->is_object())
     o.T_target_source_gt = transform_from_json(gt->find("T_target_source"), gt->end());
+  const std::string trim = j.value("trim", "");
+  if (trim == to_string(TrimKind::difference)) o.trim = TrimKind::difference;
+  if (trim == to_string(TrimKind::ratio)) o.trim = TrimKind::ratio;
   const auto levels = j.find("levels");
   if (levels != j.end() && levels->is_array())
     for (const auto& l : *levels) {

@@ -162,14 +162,26 @@ TEST_CASE("bench results read back keep the poses and thresholds the trajectory 
   const PairSet set = indoor_sequence(tmp);
   Pipeline p(preset_config("indoor"));
   const PairOutcome o = run_pair(p, set.pairs[0]);
-  std::ofstream(tmp.file("results.jsonl")) << o.report_json << "\n";
-  const std::vector<PairOutcome> back = read_bench_results(tmp.file("results.jsonl"));
+  // As `pagor bench --out` run beside the manifest writes it: the plan by its relative path.
+  std::string line = o.report_json;
+  const std::string plan_path = tmp.file("seq/plan.json");
+  REQUIRE(line.find(plan_path) != std::string::npos);
+  line.replace(line.find(plan_path), plan_path.size(), "plan.json");
+  std::ofstream(tmp.file("seq/results.jsonl")) << line << "\n";
+  const std::vector<PairOutcome> back = read_bench_results(tmp.file("seq/results.jsonl"));
   REQUIRE(back.size() == 1);
   REQUIRE(back[0].T_target_source);
   REQUIRE(back[0].T_target_source_gt);
   CHECK((*back[0].T_target_source - *o.T_target_source).norm() < 1e-9);
   CHECK((*back[0].T_target_source_gt - *o.T_target_source_gt).norm() < 1e-9);
   CHECK(back[0].level_epsilons == o.level_epsilons);
+  CHECK(back[0].trim == TrimKind::difference);  // the indoor preset's; labels carry metres
+  // The results view finds the plan beside the results file (the manifest's relative target).
+  studio::BenchWorker bench;
+  bench.show_results(back, tmp.file("seq/results.jsonl"));
+  REQUIRE(bench.wait_idle(kTimeout));
+  REQUIRE(bench.plan());
+  CHECK(bench.plan()->columns.size() == read_floor_plan(tmp.file("seq/plan.json")).columns.size());
 }
 
 TEST_CASE("picking statistics label each level by its epsilon with the TRIM's unit") {

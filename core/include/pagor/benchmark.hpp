@@ -38,8 +38,8 @@ struct PairOutcome {
   std::optional<Transform> T_target_source;     ///< the selected pose (refined when applied)
   std::optional<Transform> T_target_source_gt;  ///< the ground truth, when known
   std::vector<double> level_epsilons;  ///< each level's TRIM threshold ([m] or a ratio, `trim`)
-  std::optional<TrimKind> trim;        ///< the TRIM the thresholds are of (unknown: from a file
-                                       ///< without its configuration)
+  std::optional<TrimKind> trim;        ///< the TRIM the thresholds are of (unknown: read from a
+                                       ///< results file written before the line named it)
 };
 
 /// Loads a pair and runs it through `pipeline` with the pipeline's configuration, and diagnoses it
