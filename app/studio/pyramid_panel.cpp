@@ -122,10 +122,18 @@ void pyramid_panel(UiContext& ui) {
     ImGui::PopTextWrapPos();
     ImGui::PopStyleColor();
   } else if (changes.selected_changed()) {
-    ImGui::TextColored(ImVec4(1.0f, 0.85f, 0.3f, 1.0f),
-                       "last run changed the selection: \xce\xb5 %.3g (L%d) -> \xce\xb5 %.3g (L%d)",
-                       changes.selected_eps_before, changes.selected_before,
-                       changes.selected_eps_after, changes.selected_after);
+    // A level, or "none" where a run selected nothing (no valid candidate).
+    const auto level = [&](int l, double eps, TrimKind trim) {
+      char text[48] = "none";
+      if (l >= 0)
+        std::snprintf(text, sizeof(text), "\xce\xb5 %.3g%s (L%d)", eps,
+                      trim == TrimKind::difference ? " m" : "", l);
+      return std::string(text);
+    };
+    ImGui::TextColored(
+        ImVec4(1.0f, 0.85f, 0.3f, 1.0f), "last run changed the selection: %s -> %s",
+        level(changes.selected_before, changes.selected_eps_before, changes.trim_before).c_str(),
+        level(changes.selected_after, changes.selected_eps_after, changes.trim_after).c_str());
   }
   ImGui::PushStyleVar(ImGuiStyleVar_Alpha, ui.stale_reason.empty() ? 1.0f : 0.55f);
   ImGui::Text("%s", s->description.c_str());
