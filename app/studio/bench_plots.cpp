@@ -186,22 +186,20 @@ void add_plan(Plot& p, const FloorPlan& plan) {
 }
 
 std::string pair_tip(const PairOutcome& o, std::size_t index, const Eigen::Vector3d& t) {
-  char buf[320];
-  int n = std::snprintf(buf, sizeof(buf), "pair %s (scan index %zu)\nposition (%.2f, %.2f) m",
-                        o.name.c_str(), index, t.x(), t.y());
-  if (o.error)
-    n += std::snprintf(buf + n, sizeof(buf) - n, "\nerror %.2f m, %.2f\xC2\xB0 (%s)",
-                       o.error->translation, o.error->rotation_deg,
-                       o.success ? "success" : "failure");
+  char buf[160];
+  std::snprintf(buf, sizeof(buf), " (scan index %zu)\nposition (%.2f, %.2f) m", index, t.x(),
+                t.y());
+  std::string tip = "pair " + o.name + buf;
+  if (o.error) {
+    std::snprintf(buf, sizeof(buf), "\nerror %.2f m, %.2f\xC2\xB0 (%s)", o.error->translation,
+                  o.error->rotation_deg, o.success ? "success" : "failure");
+    tip += buf;
+  }
   const auto l = static_cast<std::size_t>(o.selected_level);
-  std::snprintf(buf + n, sizeof(buf) - n, "\n%s picked\nverdict: %s",
-                level_label(o.selected_level,
-                            l < o.level_epsilons.size() ? std::optional(o.level_epsilons[l])
-                                                        : std::nullopt,
-                            o.trim)
-                    .c_str(),
-                o.accepted ? "accepted" : "rejected");
-  return buf;
+  const std::optional<double> eps =
+      l < o.level_epsilons.size() ? std::optional<double>(o.level_epsilons[l]) : std::nullopt;
+  return tip + "\n" + level_label(o.selected_level, eps, o.trim) +
+         " picked\nverdict: " + (o.accepted ? "accepted" : "rejected");
 }
 
 }  // namespace
@@ -215,7 +213,9 @@ Plot trajectory_plot(const std::vector<PairOutcome>& outcomes, const FloorPlan* 
   p.value_label = "y";
   p.value_unit = "m";
   if (plan) add_plan(p, *plan);
-  p.series = {{"ground truth", {}, {}}, {"re-localized", {}, {}}, {"failure", {}, {}},
+  p.series = {{"ground truth", {}, {}},
+              {"re-localized", {}, {}},
+              {"failure", {}, {}},
               {"rejected", {}, {}}};
   p.series[0].line_only = true;
   p.series[0].color = kTruthColor;

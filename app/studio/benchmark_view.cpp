@@ -317,7 +317,7 @@ void benchmark_view(UiContext& ui) {
   plot_with_exports(ui, "rates", rates_plot(summary), w * 0.5f - 4);
   ImGui::SameLine();
   plot_with_exports(ui, "picking", picking_plot(outcomes), w * 0.5f - 4);
-  if (const auto plan = bench.plan()) {  // an indoor set: its trajectory over the plan
+  if (const auto plan = bench.plan()) {              // an indoor set: its trajectory over the plan
     std::vector<PairOutcome> sequence(rows.size());  // by scan index; not yet run: left out
     for (std::size_t i = 0; i < rows.size(); ++i)
       if (rows[i].done && rows[i].current) sequence[i] = rows[i].outcome;

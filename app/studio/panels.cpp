@@ -112,8 +112,9 @@ void step_pair(UiContext& ui, int delta) {
 void indoor_preset_hint(UiContext& ui, bool indoor, const char* id) {
   if (!indoor || ui.state.config.label_scheme.name == "indoor") return;
   ImGui::PushTextWrapPos(0.0f);
-  ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f),
-                     "scans against a floor plan: these parameters are for labelled outdoor clouds");
+  ImGui::TextColored(
+      ImVec4(1.0f, 0.8f, 0.3f, 1.0f),
+      "scans against a floor plan: these parameters are for labelled outdoor clouds");
   ImGui::PopTextWrapPos();
   if (ui::button((std::string("use the indoor parameters##") + id).c_str(), ImVec2(0, 0),
                  "Apply the 'indoor' preset (pagor config --preset indoor): column landmarks, "
@@ -371,9 +372,10 @@ void view_panel(UiContext& ui) {
                "Also show every correspondence outside the clique, faint, in class colours.");
   if (ui.snapshot && ui.snapshot->plan) {
     ImGui::SameLine();
-    ui::checkbox("floor plan", &l.plan,
-                 "Indoor pair: the plan's walls as lines and columns as circles (orange), and the "
-                 "columns found in the scan as circles with a cross (blue), under the source pose.");
+    ui::checkbox(
+        "floor plan", &l.plan,
+        "Indoor pair: the plan's walls as lines and columns as circles (orange), and the "
+        "columns found in the scan as circles with a cross (blue), under the source pose.");
   }
   ui::checkbox("grid, axes, scale", &v.grid,
                "Ground grid, XYZ axes at the origin and a scale bar.");

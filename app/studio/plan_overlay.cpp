@@ -6,7 +6,7 @@ namespace pagor::studio {
 namespace {
 
 constexpr float kWallWidth = 2.0f, kColumnWidth = 2.0f;  // [px]
-constexpr float kCrossPx = 4.0f;                          // half the centre cross [px]
+constexpr float kCrossPx = 4.0f;                         // half the centre cross [px]
 
 bool to_screen(const ViewRect& r, const Eigen::Vector3f& p, ImVec2& out) {
   Eigen::Vector2f px;
@@ -29,8 +29,8 @@ void circle(ImDrawList* dl, const ViewRect& r, const Eigen::Vector2d& c, double 
   ImVec2 pts[kPlanCircleSegments];
   for (int i = 0; i < kPlanCircleSegments; ++i) {
     const double a = 2.0 * M_PI * i / kPlanCircleSegments;
-    const Eigen::Vector3f p(float(c.x() + radius * std::cos(a)), float(c.y() + radius * std::sin(a)),
-                            z);
+    const Eigen::Vector3f p(float(c.x() + radius * std::cos(a)),
+                            float(c.y() + radius * std::sin(a)), z);
     if (!to_screen(r, p, pts[i])) return;
   }
   dl->AddPolyline(pts, kPlanCircleSegments, color, ImDrawFlags_Closed, kColumnWidth);
@@ -68,8 +68,9 @@ int draw_floor_plan(ImDrawList* dl, const ViewRect& r, const FloorPlan& plan, fl
 int draw_scan_columns(ImDrawList* dl, const ViewRect& r, const std::vector<DetectedColumn>& columns,
                       const Transform& T, float z) {
   for (const DetectedColumn& c : columns) {
-    const Eigen::Vector3d p = T.topLeftCorner<3, 3>() * Eigen::Vector3d(c.center.x(), c.center.y(), 0) +
-                              T.topRightCorner<3, 1>();
+    const Eigen::Vector3d p =
+        T.topLeftCorner<3, 3>() * Eigen::Vector3d(c.center.x(), c.center.y(), 0) +
+        T.topRightCorner<3, 1>();
     circle(dl, r, p.head<2>(), c.radius, z, PlanPalette::scan_column);
     ImVec2 s;
     if (!to_screen(r, Eigen::Vector3f(float(p.x()), float(p.y()), z), s)) continue;

@@ -15,7 +15,7 @@
 namespace pagor::studio {
 
 enum class PlotKind {
-  bars,  ///< one horizontal bar per category and series; values along x
+  bars,   ///< one horizontal bar per category and series; values along x
   lines,  ///< y over a numeric x, one polyline with markers per series
   map     ///< points in the plane (x, y in the same unit, equal aspect) over a backdrop
 };
@@ -28,11 +28,11 @@ struct PlotSeries {
   std::vector<double> y;      ///< bars: one value per category; lines: one per x
   bool markers_only = false;  ///< lines: points without the connecting line
   // map only:
-  bool line_only = false;                ///< a thin line through the points, no markers
-  PlotMarker marker = PlotMarker::dot;   ///< how each point is drawn
-  std::optional<ImU32> color{};          ///< a fixed colour instead of the palette's
-  std::vector<double> color_values{};    ///< per point: coloured on the colour bar's scale
-  std::vector<std::string> tips{};       ///< per point: the hover text
+  bool line_only = false;               ///< a thin line through the points, no markers
+  PlotMarker marker = PlotMarker::dot;  ///< how each point is drawn
+  std::optional<ImU32> color{};         ///< a fixed colour instead of the palette's
+  std::vector<double> color_values{};   ///< per point: coloured on the colour bar's scale
+  std::vector<std::string> tips{};      ///< per point: the hover text
 };
 
 /// A circle of a map's backdrop, in data units.

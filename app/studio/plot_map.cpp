@@ -5,10 +5,10 @@
 namespace pagor::studio::plot_detail {
 namespace {
 
-constexpr float kPickPx = 8.0f;      // hover radius [px]
-constexpr float kDotPx = 3.5f;       // marker radius [px]
-constexpr float kCrossPx = 4.5f;     // half a cross [px]
-constexpr int kColorBarSteps = 48;   // gradient slices
+constexpr float kPickPx = 8.0f;     // hover radius [px]
+constexpr float kDotPx = 3.5f;      // marker radius [px]
+constexpr float kCrossPx = 4.5f;    // half a cross [px]
+constexpr int kColorBarSteps = 48;  // gradient slices
 constexpr ImU32 kBackdrop = IM_COL32(150, 150, 162, 255);
 
 // Where everything of a map goes, shared by drawing and hovering.
@@ -138,7 +138,8 @@ void draw_axes(ImDrawList* d, const Plot& plot, const MapGeometry& g, ImFont* fo
     if (x < g.area_min.x - 0.5f || x > g.area_max.x + 0.5f) continue;
     d->AddLine(ImVec2(x, g.area_min.y), ImVec2(x, g.area_max.y), kGrid);
     const std::string s = tick_text(t, xs);
-    d->AddText(font, fs, ImVec2(x - text_w(font, fs, s) * 0.5f, g.area_max.y + 3), kText, s.c_str());
+    d->AddText(font, fs, ImVec2(x - text_w(font, fs, s) * 0.5f, g.area_max.y + 3), kText,
+               s.c_str());
   }
   for (double t : g.y_ticks) {
     const float y = g.px(0, t).y;
@@ -183,8 +184,8 @@ void draw_color_bar(ImDrawList* d, const PlotColorBar& c, const MapGeometry& g, 
 }  // namespace
 
 ImU32 viridis(double t) {
-  static const float stops[][3] = {{68, 1, 84},    {59, 82, 139},  {33, 145, 140},
-                                   {94, 201, 98},  {253, 231, 37}};
+  static const float stops[][3] = {
+      {68, 1, 84}, {59, 82, 139}, {33, 145, 140}, {94, 201, 98}, {253, 231, 37}};
   t = std::clamp(std::isfinite(t) ? t : 0.0, 0.0, 1.0) * 4.0;
   const int i = std::min(3, static_cast<int>(t));
   const float f = static_cast<float>(t - i);
@@ -202,7 +203,8 @@ void draw_map(ImDrawList* d, ImVec2 min, ImVec2 max, const Plot& plot, ImFont* f
   for (const auto& line : plot.backdrop.lines) {
     std::vector<ImVec2> pts;
     for (const auto& p : line) pts.push_back(g.px(p[0], p[1]));
-    if (pts.size() > 1) d->AddPolyline(pts.data(), static_cast<int>(pts.size()), kBackdrop, 0, 1.5f);
+    if (pts.size() > 1)
+      d->AddPolyline(pts.data(), static_cast<int>(pts.size()), kBackdrop, 0, 1.5f);
   }
   for (const PlotCircle& c : plot.backdrop.circles)
     d->AddCircle(g.px(c.x, c.y), std::max(2.0f, static_cast<float>(c.radius * g.scale)), kBackdrop,
@@ -248,7 +250,8 @@ std::optional<std::string> map_hover(const Plot& plot, ImVec2 min, ImVec2 max, I
 std::string map_csv(const Plot& plot) {
   const auto quoted = [](const std::string& s) {
     std::string q = "\"";
-    for (char c : s) q += c == '"' ? std::string("\"\"") : c == '\n' ? std::string("; ") : std::string(1, c);
+    for (char c : s)
+      q += c == '"' ? std::string("\"\"") : c == '\n' ? std::string("; ") : std::string(1, c);
     return q + "\"";
   };
   const std::string bar =
@@ -259,8 +262,8 @@ std::string map_csv(const Plot& plot) {
   for (const PlotSeries& s : plot.series)
     for (std::size_t i = 0; i < std::min(s.x.size(), s.y.size()); ++i)
       out += quoted(s.label) + "," + value_text(s.x[i], 10) + "," + value_text(s.y[i], 10) + "," +
-             (i < s.color_values.size() ? value_text(s.color_values[i], 10) : std::string()) +
-             "," + (i < s.tips.size() ? quoted(s.tips[i]) : std::string()) + "\n";
+             (i < s.color_values.size() ? value_text(s.color_values[i], 10) : std::string()) + "," +
+             (i < s.tips.size() ? quoted(s.tips[i]) : std::string()) + "\n";
   return out;
 }
 

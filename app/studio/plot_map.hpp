@@ -15,9 +15,9 @@ namespace pagor::studio::plot_detail {
 
 constexpr float kPad = 8.0f;  ///< [px]
 // Distinguishable under the common colour-vision deficiencies (Okabe-Ito).
-inline constexpr ImU32 kSeriesColors[] = {
-    IM_COL32(86, 180, 233, 255), IM_COL32(230, 159, 0, 255),  IM_COL32(0, 158, 115, 255),
-    IM_COL32(204, 121, 167, 255), IM_COL32(240, 228, 66, 255), IM_COL32(213, 94, 0, 255)};
+inline constexpr ImU32 kSeriesColors[] = {IM_COL32(86, 180, 233, 255), IM_COL32(230, 159, 0, 255),
+                                          IM_COL32(0, 158, 115, 255),  IM_COL32(204, 121, 167, 255),
+                                          IM_COL32(240, 228, 66, 255), IM_COL32(213, 94, 0, 255)};
 constexpr ImU32 kBackground = IM_COL32(24, 24, 28, 255), kGrid = IM_COL32(70, 70, 78, 255),
                 kAxis = IM_COL32(170, 170, 180, 255), kText = IM_COL32(225, 225, 230, 255);
 

@@ -10,8 +10,7 @@
 
 namespace pagor::studio {
 
-void plot_with_exports(UiContext& ui, const char* id, const Plot& plot, float width,
-                       float height) {
+void plot_with_exports(UiContext& ui, const char* id, const Plot& plot, float width, float height) {
   ImGui::BeginGroup();
   ImGui::PushID(id);
   plot_widget(id, plot, ImVec2(width, height));
@@ -32,7 +31,6 @@ void plot_with_exports(UiContext& ui, const char* id, const Plot& plot, float wi
   ImGui::PopID();
   ImGui::EndGroup();
 }
-
 
 void sweep_section(UiContext& ui, BenchWorker& bench, const BenchStatus& st) {
   BenchViewState& v = ui.state.bench;
@@ -96,6 +94,5 @@ void sweep_section(UiContext& ui, BenchWorker& bench, const BenchStatus& st) {
     plot_with_exports(ui, "sweep-line", line, w * 0.5f - 4);
   }
 }
-
 
 }  // namespace pagor::studio

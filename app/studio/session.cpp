@@ -241,9 +241,9 @@ void read_view(const json& v, const std::string& where, ViewState& view) {
   if (const json* l = find(v, "layers")) {
     const std::string lw = where + ".layers";
     if (!l->is_object()) throw InputError(lw + ": expected an object");
-    reject_unknown(*l, lw,
-                   {"source", "target", "landmarks", "correspondences", "all_correspondences",
-                    "plan"});
+    reject_unknown(
+        *l, lw,
+        {"source", "target", "landmarks", "correspondences", "all_correspondences", "plan"});
     Layers& ly = view.layers;
     ly.source = get_bool(*l, "source", lw, true);
     ly.target = get_bool(*l, "target", lw, true);

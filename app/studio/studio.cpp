@@ -315,9 +315,9 @@ void Studio::layout_windows(UiContext& ui, float W, float H) {
     // Only a drag moves it: a window made small for a while gets the panel back at its width.
     if (d.x != 0.0f)
       layout.left_width =
-        std::clamp(left + d.x, ViewLimits::min_left_width,
-                   std::min(ViewLimits::max_left_width,
-                            std::max(ViewLimits::min_left_width, kMaxLeftShare * W)));
+          std::clamp(left + d.x, ViewLimits::min_left_width,
+                     std::min(ViewLimits::max_left_width,
+                              std::max(ViewLimits::min_left_width, kMaxLeftShare * W)));
   }
   ImGui::End();
   const float x = left + kSplitter, w = std::max(1.0f, W - x);

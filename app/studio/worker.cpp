@@ -88,10 +88,11 @@ void Worker::handle(Request request) {
       source_ = std::make_shared<const PointCloud>(std::move(pair.source.cloud));
       target_ = std::make_shared<const PointCloud>(std::move(pair.target.cloud));
       ground_truth_ = pair.T_target_source_gt;
-      plan_ = pair.plan ? std::make_shared<const FloorPlan>(std::move(*pair.plan)) : nullptr;
-      scan_columns_ = pair.plan ? std::make_shared<const std::vector<DetectedColumn>>(
-                                      std::move(pair.scan_columns))
-                                : nullptr;
+      const bool indoor = pair.plan.has_value();  // a scan against a floor plan
+      plan_ = indoor ? std::make_shared<const FloorPlan>(std::move(*pair.plan)) : nullptr;
+      scan_columns_ =
+          indoor ? std::make_shared<const std::vector<DetectedColumn>>(std::move(pair.scan_columns))
+                 : nullptr;
       description_ = describe(*request.data);
       ++data_generation_;
       pipeline_.set_input(*source_, *target_);

@@ -140,6 +140,8 @@ TEST_CASE("trajectory: the selected poses' translations over the plan, coloured 
     CHECK(s.x[j] == Approx(t.x()).margin(kExact));
     CHECK(s.y[j] == Approx(t.y()).margin(kExact));
     CHECK(s.tips[j].find("pair " + o.name) != std::string::npos);
+    if (o.error) CHECK(s.tips[j].find(" m, ") != std::string::npos);  // errors in m and deg
+    CHECK(s.tips[j].find(o.accepted ? "accepted" : "rejected") != std::string::npos);
     if (k == 1) CHECK(s.color_values[j] == i);
   }
   for (std::size_t k = 1; k < 4; ++k) CHECK(p.series[k].x.size() == next[k]);
