@@ -41,6 +41,7 @@ struct Layers {
   bool landmarks = true;
   bool correspondences = true;       ///< the shown level's clique
   bool all_correspondences = false;  ///< also those outside the clique, faint
+  bool plan = true;  ///< indoor pairs: the plan's walls and columns, and the scan's columns
 };
 
 struct ViewState {
@@ -132,6 +133,9 @@ std::string resolve_path(const AppState& state, const std::string& path);
 
 /// `data` with its relative paths resolved against `base_dir`.
 PairSource resolved_data(const AppState& state);
+
+/// Whether `data` is an indoor pair: a scan against a floor plan (dataset.hpp).
+bool is_indoor(const PairSource& data);
 
 /// Index of `data`'s KITTI frame pair in `pairs`, or -1.
 int index_of_pair(const std::vector<std::pair<int, int>>& pairs, const PairSource& data);

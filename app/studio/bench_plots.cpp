@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 namespace pagor::studio {
@@ -121,7 +122,17 @@ Plot picking_plot(const std::vector<PairOutcome>& outcomes) {
   p.series = {{"selected", std::vector<double>{}, std::vector<double>(levels, 0.0)},
               {"alone would succeed", std::vector<double>{}, std::vector<double>(levels, 0.0)},
               {"selected and succeeded", std::vector<double>{}, std::vector<double>(levels, 0.0)}};
-  for (std::size_t l = 0; l < levels; ++l) p.categories.push_back("level " + std::to_string(l));
+  for (std::size_t l = 0; l < levels; ++l) {
+    std::optional<double> eps;
+    std::optional<TrimKind> trim;
+    for (const PairOutcome& o : outcomes)  // the first outcome that knows this level's threshold
+      if (l < o.level_epsilons.size()) {
+        eps = o.level_epsilons[l];
+        trim = o.trim;
+        break;
+      }
+    p.categories.push_back(level_label(static_cast<int>(l), eps, trim));
+  }
   for (const PairOutcome& o : outcomes) {
     if (!o.loaded || o.negative || !o.has_ground_truth) continue;
     if (o.selected_level >= 0 && static_cast<std::size_t>(o.selected_level) < levels) {
@@ -146,6 +157,91 @@ Plot rates_plot(const BenchmarkSummary& s) {
                {},
                {rate(s.successes, s.with_truth), rate(s.upper_bound, s.with_truth),
                 rate(s.true_accepts, s.accepted), rate(s.true_accepts, s.successes)}}};
+  return p;
+}
+
+}  // namespace pagor::studio
+
+namespace pagor::studio {
+
+std::string level_label(int level, std::optional<double> epsilon, std::optional<TrimKind> trim) {
+  std::string s = "level " + std::to_string(level);
+  if (!epsilon) return s;
+  char buf[48];
+  std::snprintf(buf, sizeof(buf), ": \xCE\xB5 = %.3g%s", *epsilon,
+                trim == TrimKind::difference ? " m" : "");
+  return s + buf;
+}
+
+namespace {
+
+constexpr ImU32 kTruthColor = IM_COL32(200, 200, 210, 255);
+constexpr ImU32 kFailureColor = IM_COL32(240, 60, 50, 255);
+constexpr ImU32 kRejectedColor = IM_COL32(125, 125, 130, 255);
+
+void add_plan(Plot& p, const FloorPlan& plan) {
+  for (const PlanWall& w : plan.walls) {
+    std::vector<std::array<double, 2>> line;
+    for (const Eigen::Vector2d& v : w.points) line.push_back({v.x(), v.y()});
+    if (w.closed && w.points.size() > 2) line.push_back(line.front());
+    p.backdrop.lines.push_back(std::move(line));
+  }
+  for (const PlanColumn& c : plan.columns)
+    p.backdrop.circles.push_back({c.center.x(), c.center.y(), c.radius});
+}
+
+std::string pair_tip(const PairOutcome& o, std::size_t index, const Eigen::Vector3d& t) {
+  char buf[160];
+  std::snprintf(buf, sizeof(buf), " (scan index %zu)\nposition (%.2f, %.2f) m", index, t.x(),
+                t.y());
+  std::string tip = "pair " + o.name + buf;
+  if (o.error) {
+    std::snprintf(buf, sizeof(buf), "\nerror %.2f m, %.2f\xC2\xB0 (%s)", o.error->translation,
+                  o.error->rotation_deg, o.success ? "success" : "failure");
+    tip += buf;
+  }
+  const auto l = static_cast<std::size_t>(o.selected_level);
+  const std::optional<double> eps =
+      l < o.level_epsilons.size() ? std::optional<double>(o.level_epsilons[l]) : std::nullopt;
+  return tip + "\n" + level_label(o.selected_level, eps, o.trim) +
+         " picked\nverdict: " + (o.accepted ? "accepted" : "rejected");
+}
+
+}  // namespace
+
+Plot trajectory_plot(const std::vector<PairOutcome>& outcomes, const FloorPlan* plan) {
+  Plot p;
+  p.title = "Trajectory: re-localized positions over the plan";
+  p.kind = PlotKind::map;
+  p.x_label = "x";
+  p.x_unit = "m";
+  p.value_label = "y";
+  p.value_unit = "m";
+  if (plan) add_plan(p, *plan);
+  p.series = {{"ground truth", {}, {}},
+              {"re-localized", {}, {}},
+              {"failure", {}, {}},
+              {"rejected", {}, {}}};
+  p.series[0].line_only = true;
+  p.series[0].color = kTruthColor;
+  p.series[2].marker = PlotMarker::cross;
+  p.series[2].color = kFailureColor;
+  p.series[3].color = kRejectedColor;
+  p.color_bar = PlotColorBar{"time", "scan index", 0.0, std::max(1.0, outcomes.size() - 1.0)};
+  for (std::size_t i = 0; i < outcomes.size(); ++i) {
+    const PairOutcome& o = outcomes[i];
+    if (o.T_target_source_gt) {
+      p.series[0].x.push_back((*o.T_target_source_gt)(0, 3));
+      p.series[0].y.push_back((*o.T_target_source_gt)(1, 3));
+    }
+    if (!o.T_target_source) continue;
+    const Eigen::Vector3d t = o.T_target_source->topRightCorner<3, 1>();
+    PlotSeries& s = p.series[o.error && !o.success ? 2 : !o.accepted ? 3 : 1];
+    s.x.push_back(t.x());
+    s.y.push_back(t.y());
+    s.tips.push_back(pair_tip(o, i, t));
+    if (&s == &p.series[1]) s.color_values.push_back(static_cast<double>(i));
+  }
   return p;
 }
 

@@ -4,9 +4,12 @@
 /// per setting, and a benchmark's picking statistics (the paper's "picking times" figure). Shared
 /// by the studio's views and `pagor sweep --plot`.
 
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "pagor/benchmark.hpp"
+#include "pagor/floor_plan.hpp"
 #include "pagor/sweep.hpp"
 #include "plot.hpp"
 
@@ -24,8 +27,21 @@ Plot sweep_line_plot(const SweepResult& result);
 Plot sweep_pair_plot(const SweepResult& result, std::size_t pair);
 
 /// Bars per level: how often it was selected and how often its candidate alone would succeed
-/// [pairs], over the pairs with ground truth.
+/// [pairs], over the pairs with ground truth. Each level is labelled by its epsilon with its unit
+/// (level_label).
 Plot picking_plot(const std::vector<PairOutcome>& outcomes);
+
+/// "level 2: ε = 0.15 m" (difference TRIM), "level 2: ε = 0.15" (ratio, unitless), or
+/// "level 2" when the threshold is not known.
+std::string level_label(int level, std::optional<double> epsilon, std::optional<TrimKind> trim);
+
+/// The re-localized trajectory of a sequence (the paper's trajectory figure), a map in metres:
+/// the ground-truth positions as a thin line, each pair's selected position (the translation of
+/// its T_target_source) as a dot coloured by its index in `outcomes` (the scan's time), pairs
+/// whose error exceeds the criterion as red crosses, rejected ones grey; over the plan's walls
+/// and columns when `plan` is given. Entries without a selected pose are left out; a hovered
+/// point names the pair, its errors [m, deg] and the level picked.
+Plot trajectory_plot(const std::vector<PairOutcome>& outcomes, const FloorPlan* plan);
 
 /// Bars: success rate and upper bound of a benchmark run so far [%].
 Plot rates_plot(const BenchmarkSummary& summary);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <filesystem>
 #include <numeric>
 
 #include "pagor/errors.hpp"
@@ -15,6 +16,23 @@ constexpr std::size_t kTreeBytesPerPoint = 32;         // kd-tree node share, es
 
 double ms_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// The floor plan an indoor set registers against: the first plan target (empty: none).
+std::string plan_path(const PairSet& set) {
+  for (const PairEntry& e : set.pairs)
+    if (e.source.kind == PairSource::Kind::files && is_floor_plan_path(e.source.target))
+      return e.source.target;
+  return {};
+}
+
+// A path a results file names: as written when it exists from here, else beside the file (a
+// manifest's relative paths are relative to its directory, which the results usually share).
+std::string beside(const std::string& path, const std::string& file) {
+  const std::filesystem::path p(path);
+  std::error_code ec;
+  if (p.is_absolute() || std::filesystem::exists(p, ec)) return path;
+  return (std::filesystem::path(file).parent_path() / p).string();
 }
 
 std::size_t cloud_bytes(const PointCloud& c) {
@@ -62,6 +80,9 @@ void BenchWorker::open(PairSet set, const Config& config) {
       rows_[i].outcome.name = set.pairs[i].name;
       rows_[i].outcome.negative = set.pairs[i].negative;
     }
+    pending_plan_ = plan_path(set);
+    plan_.reset();
+    ++plan_generation_;
     pending_set_ = std::move(set);
     rerunnable_ = true;
     config_ = config;
@@ -87,6 +108,14 @@ void BenchWorker::show_results(std::vector<PairOutcome> outcomes, const std::str
       rows_.push_back(std::move(r));
     }
     pending_set_ = PairSet{};  // drops the caches
+    pending_plan_.reset();
+    plan_.reset();
+    ++plan_generation_;
+    for (const BenchRow& r : rows_)  // results of an indoor set name the plan as their target
+      if (is_floor_plan_path(r.outcome.target_name)) {
+        pending_plan_ = beside(r.outcome.target_name, origin);
+        break;
+      }
     rerunnable_ = false;
     status_.total = status_.done = static_cast<int>(rows_.size());
     status_.error.clear();
@@ -140,6 +169,35 @@ std::string BenchWorker::origin() const {
   return origin_;
 }
 
+std::shared_ptr<const FloorPlan> BenchWorker::plan() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return plan_;
+}
+
+void BenchWorker::load_pending_plan() {
+  std::string path;
+  std::uint64_t generation = 0;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!pending_plan_) return;
+    path = std::move(*pending_plan_);
+    pending_plan_.reset();
+    generation = plan_generation_;
+  }
+  if (path.empty()) return;
+  std::shared_ptr<const FloorPlan> plan;
+  std::string error;
+  try {
+    plan = std::make_shared<const FloorPlan>(read_floor_plan(path));
+  } catch (const Error& e) {
+    error = e.what();
+  }
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (plan_generation_ != generation) return;  // a newer set or results file replaced it
+  plan_ = std::move(plan);
+  if (!error.empty()) status_.error = error;
+}
+
 bool BenchWorker::can_rerun() const {
   std::lock_guard<std::mutex> lock(mutex_);
   return rerunnable_;
@@ -189,6 +247,7 @@ void BenchWorker::loop() {
       std::stable_partition(order.begin(), order.end(),
                             [&](std::size_t i) { return caches_[i].pipeline != nullptr; });
     }
+    load_pending_plan();
     const auto t0 = std::chrono::steady_clock::now();
     bool complete = true;
     for (std::size_t i : order)

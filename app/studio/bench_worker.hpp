@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "pagor/benchmark.hpp"
+#include "pagor/floor_plan.hpp"
 #include "pagor/sweep.hpp"
 
 namespace pagor::studio {
@@ -73,6 +74,10 @@ class BenchWorker {
   PairSet set() const;
   /// The pairs set or results file shown.
   std::string origin() const;
+  /// The floor plan of an indoor set (the target of its first pair against a plan), read by the
+  /// worker thread; null for other sets or until read (a plan that cannot be read: null, and
+  /// the status's error says why).
+  std::shared_ptr<const FloorPlan> plan() const;
   bool can_rerun() const;
   /// Blocks until the current pass is complete or `timeout_s` passes; true when complete.
   bool wait_idle(double timeout_s) const;
@@ -83,6 +88,8 @@ class BenchWorker {
  private:
   void loop();
   void run_pending_sweep();
+  /// Reads the plan `pending_plan_` names, if any (worker thread).
+  void load_pending_plan();
   /// Evaluates one pair; false when cancelled or the generation moved on.
   bool evaluate(std::size_t pair, const Config& config, std::uint64_t generation);
 
@@ -91,6 +98,9 @@ class BenchWorker {
   PairSet set_;                         // the thread's set
   std::optional<PairSet> pending_set_;  // a new set, taken by the thread at its next pass
   std::string origin_;
+  std::optional<std::string> pending_plan_;  // a plan to read (empty path: none)
+  std::shared_ptr<const FloorPlan> plan_;
+  std::uint64_t plan_generation_ = 0;  // counts opened sets and results files
   bool rerunnable_ = false;
   Config config_;
   std::vector<BenchRow> rows_;

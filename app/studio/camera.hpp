@@ -7,6 +7,9 @@
 
 namespace pagor::studio {
 
+/// The yaw at which a top-down view shows x to the right and y up, as a floor plan is drawn [deg].
+constexpr float kPlanYawDeg = -90.0f;
+
 struct Camera {
   Eigen::Vector3f target = Eigen::Vector3f::Zero();  ///< orbit centre [m]
   float distance = 80.0f;                            ///< from the target [m]

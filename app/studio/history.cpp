@@ -54,6 +54,8 @@ RunChanges compare_runs(const Snapshot& before, const Snapshot& after) {
   c.selected_after = after.selected;
   if (before.selected >= 0 && before.selected < static_cast<int>(before.levels.size()))
     c.selected_eps_before = before.levels[static_cast<std::size_t>(before.selected)].epsilon;
+  c.trim_before = before.config.graph.trim;
+  c.trim_after = after.config.graph.trim;
   if (after.selected >= 0 && after.selected < static_cast<int>(after.levels.size()))
     c.selected_eps_after = after.levels[static_cast<std::size_t>(after.selected)].epsilon;
   for (std::size_t i = 0; i < after.levels.size(); ++i) {

@@ -52,6 +52,8 @@ struct RunChanges {
   bool comparable = false;                        ///< same data, so a comparison means something
   int selected_before = -1, selected_after = -1;  ///< level indices in their own runs
   double selected_eps_before = 0, selected_eps_after = 0;
+  /// The TRIM of each run: a difference TRIM's epsilon is a length [m], a ratio's has no unit.
+  TrimKind trim_before = TrimKind::ratio, trim_after = TrimKind::ratio;
   std::vector<LevelChange> levels;  ///< one per level of the new run
   /// The selection moved to another ε (or to / from no valid level).
   bool selected_changed() const {

@@ -109,6 +109,21 @@ void step_pair(UiContext& ui, int delta) {
   ui.submit_data();
 }
 
+void indoor_preset_hint(UiContext& ui, bool indoor, const char* id) {
+  if (!indoor || ui.state.config.label_scheme.name == "indoor") return;
+  ImGui::PushTextWrapPos(0.0f);
+  ImGui::TextColored(
+      ImVec4(1.0f, 0.8f, 0.3f, 1.0f),
+      "scans against a floor plan: these parameters are for labelled outdoor clouds");
+  ImGui::PopTextWrapPos();
+  if (ui::button((std::string("use the indoor parameters##") + id).c_str(), ImVec2(0, 0),
+                 "Apply the 'indoor' preset (pagor config --preset indoor): column landmarks, "
+                 "difference TRIM in metres, SE(2) poses, a 1 m / 3 deg criterion.")) {
+    ui.state.config = preset_config("indoor");
+    ui.submit_config();
+  }
+}
+
 void data_panel(UiContext& ui) {
   AppState& s = ui.state;
   PairSource& d = s.data;
@@ -147,6 +162,7 @@ void data_panel(UiContext& ui) {
   }
   if (ui::button("Open", ImVec2(-1, 0), "Loads the data above and runs the pipeline."))
     open_data(ui);
+  indoor_preset_hint(ui, ui.state.have_data && is_indoor(d), "data");
 }
 
 // The built-in label schemes that name every configured landmark class (others would make the
@@ -354,6 +370,13 @@ void view_panel(UiContext& ui) {
   ImGui::SameLine();
   ui::checkbox("all corr.", &l.all_correspondences,
                "Also show every correspondence outside the clique, faint, in class colours.");
+  if (ui.snapshot && ui.snapshot->plan) {
+    ImGui::SameLine();
+    ui::checkbox(
+        "floor plan", &l.plan,
+        "Indoor pair: the plan's walls as lines and columns as circles (orange), and the "
+        "columns found in the scan as circles with a cross (blue), under the source pose.");
+  }
   ui::checkbox("grid, axes, scale", &v.grid,
                "Ground grid, XYZ axes at the origin and a scale bar.");
   ImGui::SameLine();

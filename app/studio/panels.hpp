@@ -42,6 +42,9 @@ void step_pair(UiContext& ui, int delta);
 std::pair<double, double> epsilon_range(TrimKind trim);
 
 void data_panel(UiContext& ui);
+/// For indoor data or sets (`indoor`) run with parameters of another kind: a line saying so and a
+/// button that applies the `indoor` preset. Nothing otherwise.
+void indoor_preset_hint(UiContext& ui, bool indoor, const char* id);
 void parameters_panel(UiContext& ui);
 void view_panel(UiContext& ui);
 void session_panel(UiContext& ui);

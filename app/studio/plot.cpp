@@ -4,37 +4,12 @@
 #include <cmath>
 #include <cstdio>
 
+#include "plot_map.hpp"
+
 namespace pagor::studio {
 namespace {
 
-constexpr float kPad = 8.0f;  // [px]
-// Distinguishable under the common colour-vision deficiencies (Okabe-Ito).
-const ImU32 kSeriesColors[] = {IM_COL32(86, 180, 233, 255), IM_COL32(230, 159, 0, 255),
-                               IM_COL32(0, 158, 115, 255),  IM_COL32(204, 121, 167, 255),
-                               IM_COL32(240, 228, 66, 255), IM_COL32(213, 94, 0, 255)};
-const ImU32 kBackground = IM_COL32(24, 24, 28, 255), kGrid = IM_COL32(70, 70, 78, 255),
-            kAxis = IM_COL32(170, 170, 180, 255), kText = IM_COL32(225, 225, 230, 255);
-
-ImU32 series_color(std::size_t i) {
-  return kSeriesColors[i % std::size(kSeriesColors)];
-}
-
-std::string tick_text(double v, double step) {
-  const int decimals = std::max(0, -static_cast<int>(std::floor(std::log10(step) + 1e-9)));
-  char buf[32];
-  std::snprintf(buf, sizeof(buf), "%.*f", decimals, std::abs(v) < 1e-12 ? 0.0 : v);
-  return buf;
-}
-
-std::string value_text(double v, int digits = 3) {
-  char buf[32];
-  std::snprintf(buf, sizeof(buf), "%.*g", digits, v);
-  return buf;
-}
-
-float text_w(ImFont* font, float size, const std::string& s) {
-  return font->CalcTextSizeA(size, 1e9f, 0.0f, s.c_str()).x;
-}
+using namespace plot_detail;
 
 // `s` shortened with "..." to fit `width` [px].
 std::string fit(ImFont* font, float size, std::string s, float width) {
@@ -270,6 +245,11 @@ void draw_plot(ImDrawList* d, ImVec2 min, ImVec2 max, const Plot& plot, float fs
   if (!plot.title.empty())
     d->AddText(font, fs * 1.1f, ImVec2(min.x + kPad, min.y + kPad * 0.5f), kText,
                plot.title.c_str());
+  if (plot.kind == PlotKind::map) {
+    draw_map(d, min, max, plot, font, fs);
+    d->PopClipRect();
+    return;
+  }
   const Geometry g = layout(plot, min, max, font, fs);
   draw_legend(d, plot, g, min, font, fs);
   if (plot.kind == PlotKind::bars)
@@ -286,7 +266,10 @@ void plot_widget(const char* id, const Plot& plot, ImVec2 size) {
   const float fs = ImGui::GetFontSize();
   draw_plot(ImGui::GetWindowDrawList(), min, max, plot, fs);
   ImGui::Dummy(size);
-  if (ImGui::IsItemHovered()) {
+  if (ImGui::IsItemHovered() && plot.kind == PlotKind::map) {
+    if (const auto tip = map_hover(plot, min, max, ImGui::GetFont(), fs, ImGui::GetIO().MousePos))
+      ImGui::SetTooltip("%s", tip->c_str());
+  } else if (ImGui::IsItemHovered()) {
     const ImVec2 m = ImGui::GetIO().MousePos;
     const Geometry g = layout(plot, min, max, ImGui::GetFont(), fs);
     const std::string unit = plot.value_unit.empty() ? "" : " " + plot.value_unit;
@@ -321,6 +304,7 @@ std::string plot_csv(const Plot& plot) {
     for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
     return q + "\"";
   };
+  if (plot.kind == PlotKind::map) return map_csv(plot);
   std::string out;
   if (plot.kind == PlotKind::bars) {
     out = quoted("category");

@@ -7,6 +7,7 @@
 
 #include <imgui.h>
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -14,15 +15,42 @@
 namespace pagor::studio {
 
 enum class PlotKind {
-  bars,  ///< one horizontal bar per category and series; values along x
-  lines  ///< y over a numeric x, one polyline with markers per series
+  bars,   ///< one horizontal bar per category and series; values along x
+  lines,  ///< y over a numeric x, one polyline with markers per series
+  map     ///< points in the plane (x, y in the same unit, equal aspect) over a backdrop
 };
+
+enum class PlotMarker { dot, cross };
 
 struct PlotSeries {
   std::string label;          ///< legend entry
   std::vector<double> x;      ///< lines: abscissae (ignored for bars)
   std::vector<double> y;      ///< bars: one value per category; lines: one per x
   bool markers_only = false;  ///< lines: points without the connecting line
+  // map only:
+  bool line_only = false;               ///< a thin line through the points, no markers
+  PlotMarker marker = PlotMarker::dot;  ///< how each point is drawn
+  std::optional<ImU32> color{};         ///< a fixed colour instead of the palette's
+  std::vector<double> color_values{};   ///< per point: coloured on the colour bar's scale
+  std::vector<std::string> tips{};      ///< per point: the hover text
+};
+
+/// A circle of a map's backdrop, in data units.
+struct PlotCircle {
+  double x = 0, y = 0, radius = 0;
+};
+
+/// Geometry a map is drawn over (e.g. a floor plan), in data units.
+struct PlotBackdrop {
+  std::vector<std::vector<std::array<double, 2>>> lines;  ///< polylines
+  std::vector<PlotCircle> circles;
+  bool empty() const { return lines.empty() && circles.empty(); }
+};
+
+/// The scale of a map's `color_values`: viridis from `lo` (dark) to `hi` (yellow).
+struct PlotColorBar {
+  std::string label, unit;
+  double lo = 0, hi = 1;
 };
 
 struct Plot {
@@ -34,6 +62,9 @@ struct Plot {
   std::vector<PlotSeries> series;
   std::optional<double> value_min, value_max;  ///< fixed value range (default: from the data)
   bool integer_values = false;                 ///< counts: ticks at whole numbers only
+  // map only (x: x_label/x_unit, y: value_label/value_unit):
+  PlotBackdrop backdrop;
+  std::optional<PlotColorBar> color_bar;
 };
 
 /// "success [%]": a label with its unit in brackets (no brackets without a unit).
@@ -51,7 +82,8 @@ void draw_plot(ImDrawList* draw, ImVec2 min, ImVec2 max, const Plot& plot, float
 /// point shows its category or x, series and value in a tooltip.
 void plot_widget(const char* id, const Plot& plot, ImVec2 size);
 
-/// The plot's numbers as CSV: bars `category,<series...>`, lines `x,series,y` (header included).
+/// The plot's numbers as CSV: bars `category,<series...>`, lines `x,series,y`, maps
+/// `series,x,y,colour value,tip` (header included).
 std::string plot_csv(const Plot& plot);
 
 }  // namespace pagor::studio

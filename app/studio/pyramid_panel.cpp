@@ -122,10 +122,18 @@ void pyramid_panel(UiContext& ui) {
     ImGui::PopTextWrapPos();
     ImGui::PopStyleColor();
   } else if (changes.selected_changed()) {
-    ImGui::TextColored(ImVec4(1.0f, 0.85f, 0.3f, 1.0f),
-                       "last run changed the selection: \xce\xb5 %.3g (L%d) -> \xce\xb5 %.3g (L%d)",
-                       changes.selected_eps_before, changes.selected_before,
-                       changes.selected_eps_after, changes.selected_after);
+    // A level, or "none" where a run selected nothing (no valid candidate).
+    const auto level = [&](int l, double eps, TrimKind trim) {
+      char text[48] = "none";
+      if (l >= 0)
+        std::snprintf(text, sizeof(text), "\xce\xb5 %.3g%s (L%d)", eps,
+                      trim == TrimKind::difference ? " m" : "", l);
+      return std::string(text);
+    };
+    ImGui::TextColored(
+        ImVec4(1.0f, 0.85f, 0.3f, 1.0f), "last run changed the selection: %s -> %s",
+        level(changes.selected_before, changes.selected_eps_before, changes.trim_before).c_str(),
+        level(changes.selected_after, changes.selected_eps_after, changes.trim_after).c_str());
   }
   ImGui::PushStyleVar(ImGuiStyleVar_Alpha, ui.stale_reason.empty() ? 1.0f : 0.55f);
   ImGui::Text("%s", s->description.c_str());
@@ -147,7 +155,9 @@ void pyramid_panel(UiContext& ui) {
       ImGui::GetTextLineHeightWithSpacing() * (static_cast<float>(s->levels.size()) + 2.4f);
   if (ImGui::BeginTable("pyramid", columns, flags, ImVec2(0, table_h))) {
     ImGui::TableSetupScrollFreeze(1, 1);
-    for (const char* h : {"level", "\xce\xb5", "verts", "edges", "clique", "D [m]",
+    // A difference TRIM's thresholds are lengths; a ratio's have no unit.
+    const char* eps = s->config.graph.trim == TrimKind::difference ? "\xce\xb5 [m]" : "\xce\xb5";
+    for (const char* h : {"level", eps, "verts", "edges", "clique", "D [m]",
                           "\xce\x94"
                           "D"})
       ImGui::TableSetupColumn(h);
@@ -227,7 +237,8 @@ void pyramid_panel(UiContext& ui) {
   if (shown >= 0) {
     const LevelView& l = s->levels[static_cast<std::size_t>(shown)];
     ImGui::Spacing();
-    ImGui::Text("level %d (\xce\xb5 %.3f): clique of %zu", shown, l.epsilon, l.clique.size());
+    ImGui::Text("level %d (\xce\xb5 %.3f%s): clique of %zu", shown, l.epsilon,
+                s->config.graph.trim == TrimKind::difference ? " m" : "", l.clique.size());
     if (l.pose.valid) {
       const Transform& T = l.pose.T_target_source;
       const Eigen::Vector3d a = yaw_pitch_roll_deg(T.block<3, 3>(0, 0));

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "diagnosis_overlay.hpp"
+#include "plan_overlay.hpp"
 
 namespace pagor::studio {
 namespace {
@@ -94,6 +95,10 @@ bool shown_bounds(const Snapshot& s, const ViewState& view, const Transform& pos
     for (const auto& lm : s.source_landmarks.landmarks)
       if (lm.kind == LandmarkKind::cluster) extend(lo, hi, transform_point(pose, lm.centroid));
   }
+  if (view.layers.plan && s.plan)
+    for (const PlanWall& w : s.plan->walls)
+      for (const Eigen::Vector2d& p : w.points)
+        extend(lo, hi, Eigen::Vector3f(float(p.x()), float(p.y()), 0.0f));
   if (view.layers.correspondences) {
     const int level = shown_level(view, s.selected, static_cast<int>(s.levels.size()));
     if (level >= 0)
@@ -202,8 +207,9 @@ void draw_legend(ImDrawList* dl, ImVec2 at, const Snapshot& s, const ViewState& 
     points.push_back({IM_COL32(120, 120, 120, 255), labelled ? "other labels" : "unlabelled points"});
   }
   const bool by_residual = view.diagnosis.color_by_residual && s.diagnosis;  // its own legend
-  const int lines =
-      (by_residual ? 0 : 1 + (gt ? 1 : 0)) + (view.layers.all_correspondences ? 1 : 0);
+  const bool plan = s.plan && view.layers.plan;
+  const int lines = (by_residual ? 0 : 1 + (gt ? 1 : 0)) +
+                    (view.layers.all_correspondences ? 1 : 0) + (plan ? 3 : 0);
   const float h = 17.0f * static_cast<float>(lines + points.size()) + 4.0f;
   dl->AddRectFilled(ImVec2(at.x - 4, at.y - 4), ImVec2(at.x + 190, at.y + h),
                     IM_COL32(0, 0, 0, 150), 4.0f);
@@ -213,6 +219,11 @@ void draw_legend(ImDrawList* dl, ImVec2 at, const Snapshot& s, const ViewState& 
   }
   if (view.layers.all_correspondences)
     legend_item(dl, at, IM_COL32(200, 200, 200, 160), "other corr. (class)", true);
+  if (plan) {
+    legend_item(dl, at, PlanPalette::wall, "plan: walls", true);
+    legend_item(dl, at, PlanPalette::column, "plan: columns", true);
+    legend_item(dl, at, PlanPalette::scan_column, "scan: columns found", true);
+  }
   for (const auto& [c, name] : points) legend_item(dl, at, c, name.c_str(), false);
 }
 

@@ -11,6 +11,7 @@
 #include "diagnosis_overlay.hpp"
 #include "pagor/trim.hpp"
 #include "panels.hpp"
+#include "plan_overlay.hpp"
 #include "scene_overlay.hpp"
 
 namespace pagor::studio {
@@ -121,6 +122,11 @@ void scene_window(UiContext& ui) {
                 state.camera.projection(static_cast<float>(w) / h) * state.camera.view()};
   if (state.view.grid) draw_grid_axes_scale(dl, rect, state.camera, ui.scene.ground_z(*s));
   const int shown = shown_level(state.view, s->selected, static_cast<int>(s->levels.size()));
+  if (s->plan && state.view.layers.plan) {
+    draw_floor_plan(dl, rect, *s->plan, 0.0f);
+    if (s->scan_columns && state.view.layers.source)
+      draw_scan_columns(dl, rect, *s->scan_columns, pose, 0.0f);
+  }
   draw_correspondence_lines(dl, rect, *s, state.view, pose, shown, ui.scene.class_colors());
   if (state.view.legend && w >= 360 && h >= 220) {  // a small view keeps its picture
     draw_legend(dl, ImVec2(origin.x + 10, origin.y + 10), *s, state.view, ui.scene.class_colors());

@@ -241,14 +241,16 @@ void read_view(const json& v, const std::string& where, ViewState& view) {
   if (const json* l = find(v, "layers")) {
     const std::string lw = where + ".layers";
     if (!l->is_object()) throw InputError(lw + ": expected an object");
-    reject_unknown(*l, lw,
-                   {"source", "target", "landmarks", "correspondences", "all_correspondences"});
+    reject_unknown(
+        *l, lw,
+        {"source", "target", "landmarks", "correspondences", "all_correspondences", "plan"});
     Layers& ly = view.layers;
     ly.source = get_bool(*l, "source", lw, true);
     ly.target = get_bool(*l, "target", lw, true);
     ly.landmarks = get_bool(*l, "landmarks", lw, true);
     ly.correspondences = get_bool(*l, "correspondences", lw, true);
     ly.all_correspondences = get_bool(*l, "all_correspondences", lw, false);
+    ly.plan = get_bool(*l, "plan", lw, true);
   }
   using L = ViewLimits;
   view.point_size =
@@ -278,6 +280,10 @@ void read_view(const json& v, const std::string& where, ViewState& view) {
 }
 
 }  // namespace
+
+bool is_indoor(const PairSource& data) {
+  return data.kind == PairSource::Kind::files && is_floor_plan_path(data.target);
+}
 
 std::string resolve_path(const AppState& s, const std::string& path) {
   return resolve(path, std::filesystem::path(s.base_dir));
@@ -376,7 +382,8 @@ void save_session(const AppState& s, const std::string& path) {
                 {"target", s.view.layers.target},
                 {"landmarks", s.view.layers.landmarks},
                 {"correspondences", s.view.layers.correspondences},
-                {"all_correspondences", s.view.layers.all_correspondences}}},
+                {"all_correspondences", s.view.layers.all_correspondences},
+                {"plan", s.view.layers.plan}}},
               {"point_size", number(s.view.point_size)},
               {"landmark_size", number(s.view.landmark_size)},
               {"line_width", number(s.view.line_width)},

@@ -110,7 +110,14 @@ bool Studio::init(std::string& error) {
 }
 
 void Studio::submit_data() {
-  if (state_.have_data) worker_.submit(resolved_data(state_), state_.config);
+  if (!state_.have_data) return;
+  // A scan against a floor plan is planar: new indoor data is looked at from above (a camera
+  // restored from a session stays as it was).
+  if (!state_.camera_fitted && is_indoor(state_.data)) {
+    state_.camera.top_down = true;
+    state_.camera.yaw_deg = kPlanYawDeg;
+  }
+  worker_.submit(resolved_data(state_), state_.config);
 }
 
 void Studio::submit_config() {
@@ -307,7 +314,7 @@ void Studio::layout_windows(UiContext& ui, float W, float H) {
     // Stored only when dragged: a window shrunk for a moment shows a narrower panel, and the
     // user's width comes back when it grows again.
     const ImVec2 d = ui::splitter("##left_splitter", ImVec2(kSplitter, H), true);
-    if (d.x != 0)
+    if (d.x != 0.0f)
       layout.left_width =
           std::clamp(left + d.x, ViewLimits::min_left_width,
                      std::min(ViewLimits::max_left_width,

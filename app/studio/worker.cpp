@@ -88,6 +88,11 @@ void Worker::handle(Request request) {
       source_ = std::make_shared<const PointCloud>(std::move(pair.source.cloud));
       target_ = std::make_shared<const PointCloud>(std::move(pair.target.cloud));
       ground_truth_ = pair.T_target_source_gt;
+      const bool indoor = pair.plan.has_value();  // a scan against a floor plan
+      plan_ = indoor ? std::make_shared<const FloorPlan>(std::move(*pair.plan)) : nullptr;
+      scan_columns_ =
+          indoor ? std::make_shared<const std::vector<DetectedColumn>>(std::move(pair.scan_columns))
+                 : nullptr;
       description_ = describe(*request.data);
       ++data_generation_;
       pipeline_.set_input(*source_, *target_);
@@ -158,6 +163,8 @@ std::shared_ptr<Snapshot> Worker::make_snapshot(std::uint64_t request) const {
   s->source = source_;
   s->target = target_;
   s->ground_truth = ground_truth_;
+  s->plan = plan_;
+  s->scan_columns = scan_columns_;
   s->config = p.config();
   s->source_landmarks = p.source_landmarks();
   s->target_landmarks = p.target_landmarks();

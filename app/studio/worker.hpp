@@ -37,6 +37,10 @@ struct Snapshot {
   std::string description;            ///< the data, in words
   std::shared_ptr<const PointCloud> source, target;
   std::optional<Transform> ground_truth;
+  /// Indoor pair (target a floor plan): the plan's walls and columns [m]; null otherwise.
+  std::shared_ptr<const FloorPlan> plan;
+  /// Indoor pair: the columns found in the scan, in the scan (source) frame [m].
+  std::shared_ptr<const std::vector<DetectedColumn>> scan_columns;
   Config config;
   LandmarkSet source_landmarks, target_landmarks;
   std::vector<Correspondence> correspondences;
@@ -108,6 +112,8 @@ class Worker {
   Pipeline pipeline_;
   std::shared_ptr<const PointCloud> source_, target_;
   std::optional<Transform> ground_truth_;
+  std::shared_ptr<const FloorPlan> plan_;
+  std::shared_ptr<const std::vector<DetectedColumn>> scan_columns_;
   std::string description_;
   std::uint64_t data_generation_ = 0;
   std::thread thread_;

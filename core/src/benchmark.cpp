@@ -66,12 +66,18 @@ PairOutcome pair_outcome(const Pipeline& pipeline, const PairEntry& entry,
                 ? scores[static_cast<std::size_t>(o.selected_level)]
                 : std::numeric_limits<double>::quiet_NaN();
   for (const auto& e : pipeline.level_errors()) o.level_success.push_back(e && e->success);
+  o.T_target_source = pipeline.selected_transform();
+  o.T_target_source_gt = pipeline.ground_truth();
+  o.level_epsilons = pipeline.graph().thresholds;
+  o.level_epsilons.resize(pipeline.cliques().size());
+  o.trim = pipeline.config().graph.trim;
   for (int i = 0; i < kStageCount; ++i) {
     o.stage_ms[static_cast<std::size_t>(i)] = pipeline.time_ms(static_cast<Stage>(i));
     o.total_ms += o.stage_ms[static_cast<std::size_t>(i)];
   }
   auto j = nlohmann::json::parse(registration_report_json(pipeline, source_name, target_name, -1));
   j.erase("config");
+  j["trim"] = to_string(pipeline.config().graph.trim);  // the unit of the levels' epsilon
   const std::optional<Diagnosis> diagnosis = diagnose(pipeline);
   if (diagnosis) o.diagnosis = verdict_name(diagnosis->verdict);
   j["diagnosis"] = diagnosis ? nlohmann::json::parse(diagnosis_json(*diagnosis)) : nlohmann::json();
@@ -123,6 +129,22 @@ BenchmarkSummary summarize(const std::vector<PairOutcome>& outcomes) {
 namespace pagor {
 namespace {
 
+// A 4x4 matrix written by the report (rows of four numbers); nullopt when absent or malformed.
+std::optional<Transform> transform_from_json(nlohmann::json::const_iterator it,
+                                             nlohmann::json::const_iterator end) {
+  if (it == end || !it->is_array() || it->size() != 4) return std::nullopt;
+  Transform T;
+  for (int r = 0; r < 4; ++r) {
+    const auto& row = (*it)[static_cast<std::size_t>(r)];
+    if (!row.is_array() || row.size() != 4) return std::nullopt;
+    for (int c = 0; c < 4; ++c) {
+      if (!row[static_cast<std::size_t>(c)].is_number()) return std::nullopt;
+      T(r, c) = row[static_cast<std::size_t>(c)].get<double>();
+    }
+  }
+  return T;
+}
+
 PairOutcome outcome_from_line(const nlohmann::json& j, const std::string& where) {
   if (!j.is_object() || j.value("schema", "") != "pagor.register/1" || !j.contains("pair"))
     throw InputError(where + ": not a pagor bench result (schema pagor.register/1 with 'pair')");
@@ -148,10 +170,18 @@ PairOutcome outcome_from_line(const nlohmann::json& j, const std::string& where)
     o.accepted = a->value("accepted", false);
     o.margin = a->value("margin", 0.0);
   }
+  o.T_target_source = transform_from_json(j.find("T_target_source"), j.end());
+  if (gt != j.end() && gt->is_object())
+    o.T_target_source_gt = transform_from_json(gt->find("T_target_source"), gt->end());
+  const std::string trim = j.value("trim", "");
+  if (trim == to_string(TrimKind::difference)) o.trim = TrimKind::difference;
+  if (trim == to_string(TrimKind::ratio)) o.trim = TrimKind::ratio;
   const auto levels = j.find("levels");
   if (levels != j.end() && levels->is_array())
-    for (const auto& l : *levels)
+    for (const auto& l : *levels) {
       o.level_success.push_back(l.is_object() && l.value("success", false));
+      o.level_epsilons.push_back(l.is_object() ? l.value("epsilon", 0.0) : 0.0);
+    }
   const auto t = j.find("timings_ms");
   o.timed = t != j.end() && t->is_object() && t->contains("total");
   if (o.timed) o.total_ms = t->value("total", 0.0);

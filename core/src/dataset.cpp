@@ -17,9 +17,12 @@ LoadedPair load_pair(const PairSource& src, const IndoorParams& indoor) {
         throw InputError("a file pair needs both a source and a target cloud");
       out.source = load_cloud(src.source, src.source_labels);
       if (is_floor_plan_path(src.target)) {
-        out.target.cloud = sample_floor_plan(read_floor_plan(src.target), indoor.plan_spacing);
+        out.plan = read_floor_plan(src.target);
+        out.target.cloud = sample_floor_plan(*out.plan, indoor.plan_spacing);
         try {
-          out.source.cloud = prepare_floor_scan(out.source.cloud, indoor).cloud;
+          FloorScan scan = prepare_floor_scan(out.source.cloud, indoor);
+          out.source.cloud = std::move(scan.cloud);
+          out.scan_columns = std::move(scan.columns);
         } catch (const InputError& e) {
           throw InputError(src.source + ": " + e.what());
         }

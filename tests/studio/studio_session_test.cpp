@@ -96,6 +96,7 @@ TEST_CASE("a session round-trips and writes numbers in their shortest exact form
   s.camera.distance = 41.7f;
   s.layout.left_width = 287.3f;
   s.layout.scene_share = 0.55f;
+  s.view.layers.plan = false;  // the floor plan overlay of indoor pairs, hidden
   s.view.diagnosis = {
       true, true, "pole", studio::TruthFilter::outliers, false, studio::Contribution::ground_truth};
   s.width = 1000;
@@ -117,6 +118,8 @@ TEST_CASE("a session round-trips and writes numbers in their shortest exact form
   CHECK(r.camera.distance == s.camera.distance);
   CHECK(r.layout.left_width == s.layout.left_width);
   CHECK(r.layout.scene_share == s.layout.scene_share);
+  CHECK_FALSE(r.view.layers.plan);
+  CHECK(studio::AppState{}.view.layers.plan);  // shown unless a session hides it
   CHECK(r.view.diagnosis.panel);
   CHECK(r.view.diagnosis.color_by_residual);
   CHECK(r.view.diagnosis.class_name == "pole");

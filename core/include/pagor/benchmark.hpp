@@ -35,6 +35,11 @@ struct PairOutcome {
   std::vector<bool> level_success;       ///< per level: its candidate alone within the criterion
   double margin = 0.0;  ///< D margin of the selection, fraction of mu * points (acceptance.hpp)
   double score = 0.0;   ///< D of the selected candidate [m]; NaN when none was selected
+  std::optional<Transform> T_target_source;     ///< the selected pose (refined when applied)
+  std::optional<Transform> T_target_source_gt;  ///< the ground truth, when known
+  std::vector<double> level_epsilons;  ///< each level's TRIM threshold ([m] or a ratio, `trim`)
+  std::optional<TrimKind> trim;        ///< the TRIM the thresholds are of (unknown: read from a
+                                       ///< results file written before the line named it)
 };
 
 /// Loads a pair and runs it through `pipeline` with the pipeline's configuration, and diagnoses it

@@ -7,7 +7,9 @@
 #include <optional>
 #include <string>
 
+#include "pagor/column_detector.hpp"
 #include "pagor/config.hpp"
+#include "pagor/floor_plan.hpp"
 #include "pagor/io.hpp"
 #include "pagor/types.hpp"
 
@@ -34,6 +36,10 @@ struct LoadedPair {
   LoadedCloud source, target;
   std::string source_name, target_name;         ///< file paths or descriptions, for messages
   std::optional<Transform> T_target_source_gt;  ///< ground truth when known
+  /// Indoor pair: the floor plan the target was sampled from (its vector geometry, for drawing).
+  std::optional<FloorPlan> plan;
+  /// Indoor pair: the columns found in the scan, in the scan frame (floor_projection.hpp).
+  std::vector<DetectedColumn> scan_columns;
 };
 
 /// Loads a pair. A file pair whose target is a floor plan (`.json` or `.svg`, floor_plan.hpp) is

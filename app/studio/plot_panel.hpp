@@ -1,0 +1,23 @@
+#pragma once
+/// \file plot_panel.hpp
+/// Plots in the benchmark view: a plot with its PNG and CSV export buttons, and the sweep section
+/// (grid fields, progress, the table of settings and its plots).
+
+#include "bench_worker.hpp"
+#include "panels.hpp"
+#include "plot.hpp"
+
+namespace pagor::studio {
+
+/// Height of the benchmark view's plots [px].
+constexpr float kPlotHeight = 260.0f;
+
+/// The plot `width` x `height` pixels, then buttons writing it to `<plot_path>-<id>.png / .csv`.
+void plot_with_exports(UiContext& ui, const char* id, const Plot& plot, float width,
+                       float height = kPlotHeight);
+
+/// The sweep over the open set: mu values and threshold sets, run, progress, the table of
+/// settings (each can be applied to the session) and the success plots.
+void sweep_section(UiContext& ui, BenchWorker& bench, const BenchStatus& st);
+
+}  // namespace pagor::studio
