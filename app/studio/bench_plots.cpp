@@ -245,4 +245,24 @@ Plot trajectory_plot(const std::vector<PairOutcome>& outcomes, const FloorPlan* 
   return p;
 }
 
+std::string summary_text(const BenchmarkSummary& s) {
+  const auto pct = [](int n, int of) {
+    char buf[32];
+    if (of)
+      std::snprintf(buf, sizeof(buf), "%.1f %%", percent(n, of));
+    else
+      std::snprintf(buf, sizeof(buf), "n/a");
+    return std::string(buf);
+  };
+  char line[320];
+  std::snprintf(line, sizeof(line),
+                "success %d/%d (%s), upper bound %d/%d (%s); verdict: %d accepted, precision %s, "
+                "recall %s; mean time %.0f ms per pair",
+                s.successes, s.with_truth, pct(s.successes, s.with_truth).c_str(), s.upper_bound,
+                s.with_truth, pct(s.upper_bound, s.with_truth).c_str(), s.accepted,
+                pct(s.true_accepts, s.accepted).c_str(), pct(s.true_accepts, s.successes).c_str(),
+                s.mean_total_ms);
+  return line;
+}
+
 }  // namespace pagor::studio

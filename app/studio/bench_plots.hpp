@@ -46,4 +46,8 @@ Plot trajectory_plot(const std::vector<PairOutcome>& outcomes, const FloorPlan* 
 /// Bars: success rate and upper bound of a benchmark run so far [%].
 Plot rates_plot(const BenchmarkSummary& summary);
 
+/// The set's summary in one line: success, upper bound, verdict precision and recall (each "n/a"
+/// when it is a rate of nothing) and the mean time per pair [ms].
+std::string summary_text(const BenchmarkSummary& summary);
+
 }  // namespace pagor::studio

@@ -151,13 +151,7 @@ void progress_and_cache(UiContext& ui, BenchWorker& bench, const BenchStatus& st
 }
 
 void summary_line(const BenchmarkSummary& s) {
-  const auto pct = [](int n, int of) { return of ? 100.0 * n / of : 0.0; };
-  ImGui::Text(
-      "success %d/%d (%.1f %%), upper bound %d/%d (%.1f %%); verdict: %d accepted, "
-      "precision %.1f %%, recall %.1f %%; mean time %.0f ms per pair",
-      s.successes, s.with_truth, pct(s.successes, s.with_truth), s.upper_bound, s.with_truth,
-      pct(s.upper_bound, s.with_truth), s.accepted, 100 * s.precision(), 100 * s.recall(),
-      s.mean_total_ms);
+  ImGui::TextUnformatted(summary_text(s).c_str());
 }
 
 void table_controls(BenchViewState& v) {
