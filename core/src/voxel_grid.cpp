@@ -6,11 +6,23 @@
 #include <numeric>
 #include <string>
 #include <unordered_map>
+#include <utility>
 
 #include "pagor/errors.hpp"
 
 namespace pagor {
 namespace {
+
+// Open-addressing tables of packed cell keys (voxel downsampling and RadiusGrid): an empty slot,
+// and the slot a key's probe starts from.
+constexpr std::uint64_t kEmpty = ~std::uint64_t(0);  // packed keys use 63 bits
+constexpr float kMaxCells = 1048576.0f;  // 2^20 cells per axis, keys of 3 x 21 bits
+
+std::uint64_t hash_key(std::uint64_t k) {
+  k ^= k >> 31;
+  k *= 0x9E3779B97F4A7C15ull;
+  return k ^ (k >> 29);
+}
 
 // A point's voxel is floor(coordinate / voxel size) per axis on the global lattice, computed in
 // float as always, but keyed relative to the lowest voxel of the points' bounding box: up to 2^21
@@ -60,36 +72,33 @@ void bin(std::size_t n, const Point& point, const MakeKey& make_key, VoxelDownsa
 // more in fresh pages (a page fault each) than the probing saves.
 template <class Point, class MakeKey>
 void bin_packed(std::size_t n, const Point& point, const MakeKey& make_key, VoxelDownsample& out) {
-  constexpr std::uint64_t kFree = ~std::uint64_t(0);  // packed keys use 63 bits
-  const auto slot_of = [](std::uint64_t key, std::size_t mask) {
-    std::uint64_t h = key ^ (key >> 31);
-    h *= 0x9E3779B97F4A7C15ull;
-    return static_cast<std::size_t>(h ^ (h >> 29)) & mask;
-  };
   std::size_t mask = 1023;
-  std::vector<std::uint64_t> keys(mask + 1, kFree);
+  std::vector<std::uint64_t> keys(mask + 1, kEmpty);
   std::vector<int> voxel(mask + 1);
+  // The key's slot, or the free slot where it goes.
+  const auto probe = [&](std::uint64_t key) {
+    std::size_t s = hash_key(key) & mask;
+    while (keys[s] != kEmpty && keys[s] != key) s = (s + 1) & mask;
+    return s;
+  };
   std::vector<Eigen::Vector3d> sums;
   for (std::size_t i = 0; i < n; ++i) {
     const std::uint64_t key = make_key(point(i));
-    std::size_t s = slot_of(key, mask);
-    while (keys[s] != kFree && keys[s] != key) s = (s + 1) & mask;
-    if (keys[s] == kFree) {
+    std::size_t s = probe(key);
+    if (keys[s] == kEmpty) {
       if (2 * (sums.size() + 1) > mask + 1) {  // grow, then find the key's new slot
-        std::vector<std::uint64_t> old_keys(2 * (mask + 1), kFree);
-        std::vector<int> old_voxel(2 * (mask + 1));
-        old_keys.swap(keys);
-        old_voxel.swap(voxel);
+        const std::vector<std::uint64_t> old_keys = std::move(keys);
+        const std::vector<int> old_voxel = std::move(voxel);
         mask = 2 * mask + 1;
+        keys.assign(mask + 1, kEmpty);
+        voxel.assign(mask + 1, 0);
         for (std::size_t o = 0; o < old_keys.size(); ++o) {
-          if (old_keys[o] == kFree) continue;
-          std::size_t t = slot_of(old_keys[o], mask);
-          while (keys[t] != kFree) t = (t + 1) & mask;
+          if (old_keys[o] == kEmpty) continue;
+          const std::size_t t = probe(old_keys[o]);
           keys[t] = old_keys[o];
           voxel[t] = old_voxel[o];
         }
-        s = slot_of(key, mask);
-        while (keys[s] != kFree) s = (s + 1) & mask;
+        s = probe(key);
       }
       keys[s] = key;
       voxel[s] = static_cast<int>(sums.size());
@@ -158,17 +167,6 @@ VoxelDownsample voxel_downsample(const std::vector<Eigen::Vector3f>& points, dou
   }
   return out;
 }
-
-namespace {
-constexpr std::uint64_t kEmpty = ~std::uint64_t(0);
-constexpr float kMaxCells = 1048576.0f;  // 2^20 cells per axis, keys of 3 x 21 bits
-
-std::uint64_t hash_key(std::uint64_t k) {
-  k ^= k >> 31;
-  k *= 0x9E3779B97F4A7C15ull;
-  return k ^ (k >> 29);
-}
-}  // namespace
 
 // Cells are numbered from 1 so that the neighbours of the lowest cell have valid keys.
 std::uint64_t RadiusGrid::key_of(const Eigen::Vector3f& p) const {
