@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 
 #include "bench_plots.hpp"
 #include "pagor/atomic_file.hpp"
@@ -24,13 +23,6 @@ constexpr int kColumnCount = 10;
 constexpr int kDiagnosisColumn = 9;  // sorted by name, like the pair
 const char* const kShow[] = {"all pairs", "failures", "successes", "accepted", "rejected"};
 constexpr float kTrajectoryHeight = 420.0f;  // [px]
-
-std::string absolute(const std::string& path) {
-  if (path.empty()) return path;
-  std::error_code ec;
-  const auto p = std::filesystem::absolute(path, ec);
-  return ec ? path : p.lexically_normal().string();
-}
 
 const char* truth_text(const PairOutcome& o) {
   if (!o.loaded) return "skipped";
@@ -284,7 +276,7 @@ void show_pair(AppState& state, const PairEntry& entry) {
   PairSource d = entry.source;
   for (std::string* p :
        {&d.source, &d.target, &d.source_labels, &d.target_labels, &d.ground_truth, &d.kitti_root})
-    *p = absolute(*p);
+    *p = absolute_path(*p);
   state.data = d;
   state.have_data = true;
   state.camera_fitted = false;

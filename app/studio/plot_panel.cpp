@@ -11,22 +11,28 @@
 
 namespace pagor::studio {
 
+std::string absolute_path(const std::string& path) {
+  if (path.empty()) return path;
+  std::error_code ec;
+  const auto p = std::filesystem::absolute(path, ec);
+  return ec ? path : p.lexically_normal().string();
+}
+
 void plot_with_exports(UiContext& ui, const char* id, const Plot& plot, float width, float height) {
   ImGui::BeginGroup();
   ImGui::PushID(id);
   plot_widget(id, plot, ImVec2(width, height));
-  // Absolute, so that the message after an export says where the file went.
-  std::error_code ec;
-  std::string base = ui.state.bench.plot_path + "-" + id;
-  const auto full = std::filesystem::absolute(base, ec);
-  if (!ec) base = full.lexically_normal().string();
+  // Absolute, so that the message after an export says where the file went (made on a click,
+  // not every frame).
+  const auto base = [&] { return absolute_path(ui.state.bench.plot_path + "-" + id); };
   if (ui::small_button("PNG", "write the plot as PNG (path below the plots)") && ui.export_plot)
-    ui.export_plot(plot, base + ".png");
+    ui.export_plot(plot, base() + ".png");
   ImGui::SameLine();
   if (ui::small_button("CSV", "write the plotted numbers as CSV")) {
+    const std::string path = base() + ".csv";
     try {
-      write_file_atomic(base + ".csv", plot_csv(plot));
-      ui.state.message = "wrote " + base + ".csv";
+      write_file_atomic(path, plot_csv(plot));
+      ui.state.message = "wrote " + path;
       ui.state.message_is_error = false;
     } catch (const Error& e) {
       ui.state.message = e.what();

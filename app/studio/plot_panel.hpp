@@ -3,11 +3,17 @@
 /// Plots in the benchmark view: a plot with its PNG and CSV export buttons, and the sweep section
 /// (grid fields, progress, the table of settings and its plots).
 
+#include <string>
+
 #include "bench_worker.hpp"
 #include "panels.hpp"
 #include "plot.hpp"
 
 namespace pagor::studio {
+
+/// `path` made absolute and normal (relative to the working directory); unchanged when empty or
+/// when the working directory cannot be read.
+std::string absolute_path(const std::string& path);
 
 /// Height of the benchmark view's plots [px].
 constexpr float kPlotHeight = 260.0f;
