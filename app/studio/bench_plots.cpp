@@ -12,6 +12,12 @@ double percent(int n, int of) {
   return of ? 100.0 * n / of : 0.0;
 }
 
+// A rate of nothing (no pair with a ground truth, none accepted, none successful) is NaN, shown
+// as n/a, rather than the 0 % or 100 % the summary's conventions would give.
+double rate_or_none(int n, int of) {
+  return of ? percent(n, of) : std::numeric_limits<double>::quiet_NaN();
+}
+
 // A plot whose values are percentages, on an axis from 0 to 100 %.
 Plot percent_plot(PlotKind kind, const char* value_label) {
   Plot p;
@@ -149,14 +155,11 @@ Plot rates_plot(const BenchmarkSummary& s) {
   Plot p = percent_plot(PlotKind::bars, "rate");
   p.title = "Rates";
   p.categories = {"success", "upper bound", "verdict precision", "verdict recall"};
-  // A rate of nothing (no pair with a ground truth, none accepted, none successful) is drawn as
-  // n/a rather than as the 0 % or 100 % the summary's conventions would give.
-  const double none = std::numeric_limits<double>::quiet_NaN();
-  const auto rate = [&](int n, int of) { return of ? percent(n, of) : none; };
   p.series = {{"this run",
                {},
-               {rate(s.successes, s.with_truth), rate(s.upper_bound, s.with_truth),
-                rate(s.true_accepts, s.accepted), rate(s.true_accepts, s.successes)}}};
+               {rate_or_none(s.successes, s.with_truth), rate_or_none(s.upper_bound, s.with_truth),
+                rate_or_none(s.true_accepts, s.accepted),
+                rate_or_none(s.true_accepts, s.successes)}}};
   return p;
 }
 
@@ -247,12 +250,10 @@ Plot trajectory_plot(const std::vector<PairOutcome>& outcomes, const FloorPlan* 
 
 std::string summary_text(const BenchmarkSummary& s) {
   const auto pct = [](int n, int of) {
+    const double r = rate_or_none(n, of);
     char buf[32];
-    if (of)
-      std::snprintf(buf, sizeof(buf), "%.1f %%", percent(n, of));
-    else
-      std::snprintf(buf, sizeof(buf), "n/a");
-    return std::string(buf);
+    std::snprintf(buf, sizeof(buf), "%.1f %%", r);
+    return std::isnan(r) ? std::string("n/a") : std::string(buf);
   };
   char line[320];
   std::snprintf(line, sizeof(line),
