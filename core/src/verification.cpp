@@ -42,9 +42,9 @@ struct Verifier::Impl {
     return grids.back().get();
   }
 
-  std::pair<int, float> nearest_one(const RadiusGrid* g, const Eigen::Vector3f& q,
-                                    float bound_sq) {
-    return g ? g->nearest(q, std::sqrt(bound_sq)) : tree().nearest(q, bound_sq);
+  // Nearest target point strictly closer than `bound` [m], on the grid when there is one.
+  std::pair<int, float> nearest_one(const RadiusGrid* g, const Eigen::Vector3f& q, float bound) {
+    return g ? g->nearest(q, bound) : tree().nearest(q, bound * bound);
   }
 
   // Distance from every source point with index in [begin, end), moved by T, to its nearest
@@ -53,9 +53,8 @@ struct Verifier::Impl {
                const RadiusGrid* g, float* out) {
     const Eigen::Matrix3f R = T.block<3, 3>(0, 0).cast<float>();
     const Eigen::Vector3f t = T.block<3, 1>(0, 3).cast<float>();
-    const float bound_sq = bound * bound;
     for (std::size_t i = begin; i < end; ++i) {
-      const auto [index, d2] = nearest_one(g, R * source[i] + t, bound_sq);
+      const auto [index, d2] = nearest_one(g, R * source[i] + t, bound);
       out[i] = index >= 0 ? std::sqrt(d2) : HUGE_VALF;
     }
   }
@@ -76,7 +75,8 @@ Verifier& Verifier::operator=(Verifier&&) noexcept = default;
 
 std::pair<int, float> Verifier::nearest_target(const Eigen::Vector3f& q,
                                                float max_distance_sq) const {
-  return impl_->nearest_one(impl_->grid_for(std::sqrt(max_distance_sq)), q, max_distance_sq);
+  const float bound = std::sqrt(max_distance_sq);
+  return impl_->nearest_one(impl_->grid_for(bound), q, bound);
 }
 
 const std::vector<Eigen::Vector3f>& Verifier::source_points() const {
