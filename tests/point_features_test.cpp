@@ -12,6 +12,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <random>
 #include <set>
 
@@ -150,6 +151,49 @@ TEST_CASE("normals are PCL's") {
     }
     CHECK(finite > static_cast<int>(pts.size()) / 2);
   }
+}
+
+TEST_CASE("the FPFH angle falls in atan2's bin, also beside every bin edge") {
+  // PCL's binning of the first pair feature, atan2(y, x) in [-pi, pi] into 11 bins.
+  const auto bin = [](float angle) {
+    const float d_pi = 1.0f / (2.0f * static_cast<float>(M_PI));
+    const double x = 11 * ((angle + M_PI) * d_pi);
+    return x >= 0.0 ? std::min(10, static_cast<int>(std::floor(x))) : 0;
+  };
+  const auto same = [&](float y, float x) {
+    const float fast = detail::binnable_atan2(y, x), exact = std::atan2(y, x);
+    return bin(fast) == bin(exact) && std::isnan(fast) == std::isnan(exact);
+  };
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> coordinate(-1.0f, 1.0f);
+  int mismatches = 0;
+  for (int i = 0; i < 1000000; ++i) {
+    const float y = coordinate(rng), x = coordinate(rng);
+    mismatches += !same(y, x);
+  }
+  // Directions within a few ulps to 1e-3 rad of each of the 12 bin edges, at several lengths.
+  for (int edge = 0; edge <= 11; ++edge) {
+    const double theta = -M_PI + edge * 2 * M_PI / 11;
+    for (double offset : {-1e-3, -1e-4, -1e-6, -1e-7, 0.0, 1e-7, 1e-6, 1e-4, 1e-3})
+      for (float length : {1e-3f, 0.5f, 1.0f, 7.0f}) {
+        const float y = static_cast<float>(length * std::sin(theta + offset));
+        const float x = static_cast<float>(length * std::cos(theta + offset));
+        for (float dy : {-1, 0, 1})
+          for (float dx : {-1, 0, 1}) {
+            const float yy = dy == 0 ? y : std::nextafter(y, dy * HUGE_VALF);
+            const float xx = dx == 0 ? x : std::nextafter(x, dx * HUGE_VALF);
+            mismatches += !same(yy, xx);
+          }
+      }
+  }
+  CHECK(mismatches == 0);
+  // Axes, signed zeros, infinities and NaN.
+  const float inf = HUGE_VALF, nan = std::numeric_limits<float>::quiet_NaN();
+  for (float y : {0.0f, -0.0f, 1.0f, -1.0f, inf, -inf, nan})
+    for (float x : {0.0f, -0.0f, 1.0f, -1.0f, inf, -inf, nan}) {
+      INFO("y " << y << " x " << x);
+      CHECK(same(y, x));
+    }
 }
 
 TEST_CASE("FPFH descriptors are PCL's") {

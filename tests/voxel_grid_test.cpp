@@ -95,8 +95,13 @@ TEST_CASE("the grid's nearest neighbour agrees with a linear scan, off the grid 
   // Points on cell boundaries of a 1 m grid anchored at the lowest point.
   for (int i = 0; i < 200; ++i) pts.emplace_back(std::round(u(rng)), std::round(u(rng)), 0.0f);
   pts.push_back(pts.front());  // a duplicate
-  for (float cell : {0.3f, 1.0f, 2.5f}) {
-    const RadiusGrid grid(pts, cell);
+  // The same points and one far away: a box too large for a bit per cell (the hash table).
+  std::vector<Eigen::Vector3f> sparse = pts;
+  sparse.emplace_back(5000.0f, 5000.0f, 500.0f);
+  for (float cell : {0.3f, 1.0f, 2.5f})
+    for (const auto* cloud : {&pts, &sparse}) {
+    const RadiusGrid grid(*cloud, cell);
+    CHECK(grid.dense() == (cloud == &pts));
     for (int k = 0; k < 2000; ++k) {
       Eigen::Vector3f q(u(rng) * 1.3f, u(rng) * 1.3f, u(rng) * 0.3f);
       if (k % 10 == 0) q = pts[static_cast<std::size_t>(k)] + Eigen::Vector3f(0.0f, 0.0f, 1e-3f);
@@ -107,11 +112,42 @@ TEST_CASE("the grid's nearest neighbour agrees with a linear scan, off the grid 
         for (std::size_t i = 0; i < pts.size(); ++i)
           if ((pts[i] - q).squaredNorm() < ref_d2) ref_d2 = (pts[i] - q).squaredNorm(), ref = static_cast<int>(i);
         const auto [got, d2] = grid.nearest(q, radius);
-        INFO("cell " << cell << " radius " << radius << " query " << q.transpose());
+        INFO("cell " << cell << " radius " << radius << " query " << q.transpose()
+                     << (grid.dense() ? " (dense)" : " (hashed)"));
         REQUIRE(d2 == ref_d2);
         REQUIRE((got >= 0) == (ref >= 0));
         if (ref >= 0) CHECK((pts[static_cast<std::size_t>(got)] - q).squaredNorm() == ref_d2);
       }
+    }
+  }
+}
+
+TEST_CASE("the grid's dense box and its hash table give the same neighbours in the same order") {
+  // Cells are found through a bit per cell when the box is small enough, else through the hash
+  // table; either way a search sees the same cells in the same order and a cell's points in
+  // input order, so that sums over neighbours (normals, FPFH) do not depend on the choice.
+  std::mt19937_64 rng(29);
+  std::uniform_real_distribution<float> u(-15.f, 15.f);
+  std::vector<Eigen::Vector3f> pts;
+  for (int i = 0; i < 3000; ++i)
+    pts.push_back(draw3(u, rng).cast<float>().cwiseProduct(Eigen::Vector3f(1, 1, 0.2f)));
+  std::vector<Eigen::Vector3f> sparse = pts;
+  sparse.emplace_back(4000.0f, 6000.0f, 300.0f);  // above every point: the same cells
+  for (float cell : {0.5f, 1.0f, 3.0f}) {
+    const RadiusGrid dense(pts, cell), hashed(sparse, cell);
+    REQUIRE(dense.dense());
+    REQUIRE_FALSE(hashed.dense());
+    for (int k = 0; k < 1000; ++k) {
+      Eigen::Vector3f q(u(rng) * 1.2f, u(rng) * 1.2f, u(rng) * 0.3f);
+      if (k % 50 == 0) q *= 100.0f;  // off the box
+      std::vector<int> a, b;
+      std::vector<float> da, db;
+      dense.within(q, cell, a, da);
+      hashed.within(q, cell, b, db);
+      INFO("cell " << cell << " query " << q.transpose());
+      REQUIRE(a == b);
+      REQUIRE(da == db);
+      CHECK(dense.nearest(q, cell) == hashed.nearest(q, cell));
     }
   }
 }

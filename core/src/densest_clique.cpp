@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <numeric>
 #include <random>
 
@@ -69,6 +70,7 @@ void set_weights(LevelGraph& s, const PyramidGraph& g, int level) {
 // diagonal), both in one pass over the edges. When u has few non-zeros (late in the solve, and
 // after a warm start), they are scattered from the support instead of gathered over every edge
 // (the graph is symmetric).
+constexpr std::size_t kLanes = 4;  // rows summed side by side in products()
 void products(const LevelGraph& g, const std::vector<double>& u, std::vector<double>& Mu,
               std::vector<double>& Cu) {
   const std::size_t n = g.size();
@@ -98,22 +100,47 @@ void products(const LevelGraph& g, const std::vector<double>& u, std::vector<dou
     if (g.binary) Mu = Cu;
     return;
   }
-  for (std::size_t v = 0; v < n; ++v) {
-    double c = u[v];
-    if (g.binary) {
-      for (std::size_t e = g.offsets[v]; e < g.offsets[v + 1]; ++e)
-        c += u[static_cast<std::size_t>(nb[e])];
-      Cu[v] = Mu[v] = c;
-    } else {
-      double m = u[v];
-      for (std::size_t e = g.offsets[v]; e < g.offsets[v + 1]; ++e) {
-        const double x = u[static_cast<std::size_t>(nb[e])];
-        c += x;
-        m += double(wt[e]) * x;
-      }
-      Cu[v] = c;
-      Mu[v] = m;
+  // Each row's sum runs in edge order, so every product is the plain loop's to the last bit; four
+  // rows are summed side by side over their common length, as one row's sum waits on its previous
+  // addition at every edge.
+  const auto x = [&](std::size_t e) { return u[static_cast<std::size_t>(nb[e])]; };
+  std::size_t v = 0;
+  for (; v + kLanes <= n; v += kLanes) {
+    std::size_t e[kLanes], length = SIZE_MAX;
+    double c[kLanes], m[kLanes];
+    for (std::size_t k = 0; k < kLanes; ++k) {
+      e[k] = g.offsets[v + k];
+      length = std::min(length, g.offsets[v + k + 1] - e[k]);
+      c[k] = m[k] = u[v + k];
     }
+    if (g.binary) {
+      for (std::size_t t = 0; t < length; ++t)
+        for (std::size_t k = 0; k < kLanes; ++k) c[k] += x(e[k] + t);
+    } else {
+      for (std::size_t t = 0; t < length; ++t)
+        for (std::size_t k = 0; k < kLanes; ++k) {
+          const double xe = x(e[k] + t);
+          c[k] += xe;
+          m[k] += double(wt[e[k] + t]) * xe;
+        }
+    }
+    for (std::size_t k = 0; k < kLanes; ++k) {
+      for (std::size_t f = e[k] + length; f < g.offsets[v + k + 1]; ++f) {
+        c[k] += x(f);
+        if (!g.binary) m[k] += double(wt[f]) * x(f);
+      }
+      Cu[v + k] = c[k];
+      Mu[v + k] = g.binary ? c[k] : m[k];
+    }
+  }
+  for (; v < n; ++v) {
+    double c = u[v], m = u[v];
+    for (std::size_t e = g.offsets[v]; e < g.offsets[v + 1]; ++e) {
+      c += x(e);
+      if (!g.binary) m += double(wt[e]) * x(e);
+    }
+    Cu[v] = c;
+    Mu[v] = g.binary ? c : m;
   }
 }
 
@@ -191,6 +218,7 @@ std::vector<int> relax(const LevelGraph& g, std::vector<double>& u, double d, co
                        CliqueResult& r) {
   const std::size_t n = g.size();
   std::vector<double> Mu(n), Cu(n), grad(n), cand(n), Mu_c(n), Cu_c(n);
+  std::vector<std::size_t> support(n);  // of the candidate
   double alpha = 1.0;
   products(g, u, Mu, Cu);
   double sum = std::accumulate(u.begin(), u.end(), 0.0);
@@ -206,15 +234,34 @@ std::vector<int> relax(const LevelGraph& g, std::vector<double>& u, double d, co
     alpha = 1.0 / (1.0 + d);  // the gradient grows with d
     for (int inner = 0; inner < p.max_inner_iterations; ++inner) {
       bool accepted = false;
-      double F_new = F;
+      double F_new = F, sum_c = 0;
       for (int ls = 0; ls < p.max_line_search; ++ls) {
         ++r.gradient_steps;
-        for (std::size_t i = 0; i < n; ++i) cand[i] = u[i] + alpha * grad[i];
-        if (project(cand)) {
+        // The candidate projected onto {u >= 0, |u| = 1} (project()), with its sum, F and the
+        // step: as the plain loops compute them to the last bit, but each sum runs over the
+        // support only, as adding a zero changes no sum, and most entries are zero.
+        std::size_t* const in = support.data();
+        std::size_t k = 0;
+        double n2 = 0;
+        for (std::size_t i = 0; i < n; ++i) {
+          const double c = std::max(u[i] + alpha * grad[i], 0.0);
+          cand[i] = c;
+          if (c > 0) {
+            in[k++] = i;
+            n2 += c * c;
+          }
+        }
+        if (n2 > 0) {
+          const double inv = 1.0 / std::sqrt(n2);
+          sum_c = 0;
+          for (std::size_t i = 0; i < n; ++i) cand[i] *= inv;
+          for (std::size_t j = 0; j < k; ++j) sum_c += cand[in[j]];
           products(g, cand, Mu_c, Cu_c);
-          const double sum_c = std::accumulate(cand.begin(), cand.end(), 0.0);
           double Fc = 0;
-          for (std::size_t i = 0; i < n; ++i) Fc += cand[i] * (Mu_c[i] - d * (sum_c - Cu_c[i]));
+          for (std::size_t j = 0; j < k; ++j) {
+            const std::size_t i = in[j];
+            Fc += cand[i] * (Mu_c[i] - d * (sum_c - Cu_c[i]));
+          }
           if (Fc > F) {
             F_new = Fc;
             accepted = true;
@@ -225,11 +272,12 @@ std::vector<int> relax(const LevelGraph& g, std::vector<double>& u, double d, co
       }
       if (!accepted) break;
       double step = 0;
-      for (std::size_t i = 0; i < n; ++i) step += (cand[i] - u[i]) * (cand[i] - u[i]);
+      for (std::size_t i = 0; i < n; ++i)
+        if (cand[i] != u[i]) step += (cand[i] - u[i]) * (cand[i] - u[i]);
       u.swap(cand);
       Mu.swap(Mu_c);
       Cu.swap(Cu_c);
-      sum = std::accumulate(u.begin(), u.end(), 0.0);
+      sum = sum_c;
       penalised(Mu, Cu, sum, grad);
       const double dF = F_new - F;
       F = F_new;

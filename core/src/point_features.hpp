@@ -21,6 +21,10 @@ std::vector<std::vector<int>> euclidean_clusters(const std::vector<Eigen::Vector
 std::vector<Eigen::Vector3f> estimate_normals(const std::vector<Eigen::Vector3f>& points,
                                               double radius);
 
+/// An angle in the same one of FPFH's 11 angle bins as std::atan2(y, x) [rad]: a polynomial
+/// where the angle is clear of a bin edge, atan2 itself near an edge, with NaN or at (0, 0).
+float binnable_atan2(float y, float x);
+
 /// FPFH descriptor (11 + 11 + 11 bins) at each point `keypoints[k]`, over neighbours closer than
 /// `radius` [m]; NaN normals are handled as PCL does.
 using Fpfh = std::array<float, 33>;

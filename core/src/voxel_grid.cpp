@@ -17,6 +17,9 @@ namespace {
 // and the slot a key's probe starts from.
 constexpr std::uint64_t kEmpty = ~std::uint64_t(0);  // packed keys use 63 bits
 constexpr float kMaxCells = 1048576.0f;  // 2^20 cells per axis, keys of 3 x 21 bits
+// A RadiusGrid's box up to this many cells per point is dense (a bit per cell: 32 bytes per
+// point at most). A KITTI scan's 0.5 m voxels in 1 m cells: about 100.
+constexpr std::uint64_t kDenseCellsPerPoint = 256;
 
 std::uint64_t hash_key(std::uint64_t k) {
   k ^= k >> 31;
@@ -198,25 +201,55 @@ RadiusGrid::RadiusGrid(const std::vector<Eigen::Vector3f>& points, double cell)
   if (!lo_.allFinite() || !hi.allFinite())
     throw InputError("radius grid: a coordinate is not finite");
   cell_ = std::max(cell_, (hi - lo_).maxCoeff() / kMaxCells);
-  // Cells numbered in order of first appearance through the hash table, then the points
-  // scattered cell by cell (a counting sort: linear in the points).
-  std::size_t capacity = 16;
-  while (capacity < 2 * n) capacity *= 2;
-  mask_ = capacity - 1;
-  slots_.assign(capacity, kEmpty);
-  slot_cell_.assign(capacity, -1);
   std::vector<int> cell_of(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const std::uint64_t key = key_of(points[i]);
-    std::uint64_t s = hash_key(key) & mask_;
-    while (slots_[s] != kEmpty && slots_[s] != key) s = (s + 1) & mask_;
-    if (slots_[s] == kEmpty) {
-      slots_[s] = key;
-      slot_cell_[s] = static_cast<int>(start_.size());
-      start_.push_back(0);
+  // A box of at most kDenseCellsPerPoint cells per point gets a bit per cell (with a cell of
+  // margin on every side, as searches look one cell beyond a point), cells numbered in bit order;
+  // a larger (sparse or elongated) one the hash table, cells numbered in order of first
+  // appearance. Then the points are scattered cell by cell (a counting sort: linear in the
+  // points, which keeps input order within a cell).
+  std::uint64_t bits = 1;
+  for (int a = 0; a < 3; ++a) {
+    dims_[a] = static_cast<std::uint64_t>(std::floor((hi[a] - lo_[a]) / cell_)) + 3;
+    bits *= dims_[a];
+  }
+  constexpr std::uint64_t kAxis = (std::uint64_t(1) << 21) - 1;
+  if (bits <= kDenseCellsPerPoint * n + 4096) {
+    occupancy_.assign((bits + 63) / 64, 0);
+    std::vector<std::uint64_t> bit_of(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::uint64_t key = key_of(points[i]);
+      bit_of[i] = ((key >> 42) * dims_[1] + ((key >> 21) & kAxis)) * dims_[2] + (key & kAxis);
+      occupancy_[bit_of[i] >> 6] |= std::uint64_t(1) << (bit_of[i] & 63);
     }
-    cell_of[i] = slot_cell_[s];
-    ++start_[static_cast<std::size_t>(cell_of[i])];
+    rank_.resize(occupancy_.size());
+    std::uint32_t cells = 0;
+    for (std::size_t w = 0; w < occupancy_.size(); ++w) {
+      rank_[w] = cells;
+      cells += static_cast<std::uint32_t>(__builtin_popcountll(occupancy_[w]));
+    }
+    start_.assign(cells, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+      cell_of[i] = rank(bit_of[i]);
+      ++start_[static_cast<std::size_t>(cell_of[i])];
+    }
+  } else {
+    std::size_t capacity = 16;
+    while (capacity < 2 * n) capacity *= 2;
+    mask_ = capacity - 1;
+    slots_.assign(capacity, kEmpty);
+    slot_cell_.assign(capacity, -1);
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::uint64_t key = key_of(points[i]);
+      std::uint64_t s = hash_key(key) & mask_;
+      while (slots_[s] != kEmpty && slots_[s] != key) s = (s + 1) & mask_;
+      if (slots_[s] == kEmpty) {
+        slots_[s] = key;
+        slot_cell_[s] = static_cast<int>(start_.size());
+        start_.push_back(0);
+      }
+      cell_of[i] = slot_cell_[s];
+      ++start_[static_cast<std::size_t>(cell_of[i])];
+    }
   }
   int total = 0;  // counts -> starts
   for (int& c : start_) {

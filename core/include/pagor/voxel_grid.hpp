@@ -50,24 +50,34 @@ class RadiusGrid {
   /// Cell size actually used [m].
   float cell() const { return cell_; }
 
+  /// True when cells are found through a bit per cell of the cloud's box rather than the hash
+  /// table (a box of at most 256 cells per point).
+  bool dense() const { return !occupancy_.empty(); }
+
  private:
   std::uint64_t key_of(const Eigen::Vector3f& p) const;
   int find(std::uint64_t key) const;  // cell number, or -1
+  // Cell number of bit `b` of the dense box (a set bit): the set bits before it.
+  int rank(std::uint64_t b) const {
+    const std::uint64_t below = occupancy_[b >> 6] & ((std::uint64_t(1) << (b & 63)) - 1);
+    return static_cast<int>(rank_[b >> 6]) + __builtin_popcountll(below);
+  }
+  bool has(std::uint64_t b) const { return (occupancy_[b >> 6] >> (b & 63)) & 1; }
+
   // Calls f(begin, end) with the range of sorted_ of each occupied cell of the 27 around q whose
   // box is nearer to q than sqrt(bound()) (bound() may shrink as f finds points), q's own cell
-  // first. A box's distance is taken a little short: points sit in their cell up to rounding.
+  // first, then by x, y, z. A box's distance is taken a little short: points sit in their cell up
+  // to rounding. Cells come from the bits of the dense box, else from the hash table; either way
+  // the same cells in the same order, and a cell's points in input order.
   template <class Bound, class F>
   void for_cells_near(const Eigen::Vector3f& q, const Bound& bound, F&& f) const {
     if (sorted_.empty()) return;
     const std::uint64_t center = key_of(q);
     constexpr std::uint64_t kAxis = (std::uint64_t(1) << 21) - 1;
     const std::uint64_t c[3] = {center >> 42, (center >> 21) & kAxis, center & kAxis};
-    const auto visit = [&](std::uint64_t key) {
-      const int cell = find(key);
-      if (cell >= 0)
-        f(start_[static_cast<std::size_t>(cell)], start_[static_cast<std::size_t>(cell) + 1]);
+    const auto range = [&](int cell) {
+      f(start_[static_cast<std::size_t>(cell)], start_[static_cast<std::size_t>(cell) + 1]);
     };
-    visit(center);
     // gap[a][k]: squared distance along axis a from q to the slab of the cell at offset k - 1.
     float gap[3][3];
     const float slack = 1e-4f * cell_;
@@ -79,6 +89,37 @@ class RadiusGrid {
       gap[a][1] = 0.0f;
       gap[a][2] = above * above;
     }
+    if (dense()) {
+      // Queries off the box (clamped to its edge or beyond) see only the axis offsets inside it.
+      bool inside[3][3];
+      for (int a = 0; a < 3; ++a)
+        for (int k = 0; k < 3; ++k) inside[a][k] = c[a] + static_cast<std::uint64_t>(k) - 1 < dims_[a];
+      const std::uint64_t stride_x = dims_[1] * dims_[2], stride_y = dims_[2];
+      const auto bit = [&](int x, int y, int z) {
+        return (c[0] + static_cast<std::uint64_t>(x) - 1) * stride_x +
+               (c[1] + static_cast<std::uint64_t>(y) - 1) * stride_y +
+               (c[2] + static_cast<std::uint64_t>(z) - 1);
+      };
+      if (inside[0][1] && inside[1][1] && inside[2][1] && has(bit(1, 1, 1))) range(rank(bit(1, 1, 1)));
+      for (int x = 0; x < 3; ++x) {
+        if (!inside[0][x]) continue;
+        for (int y = 0; y < 3; ++y) {
+          const float gxy = gap[0][x] + gap[1][y];
+          if (!inside[1][y] || gxy >= bound()) continue;
+          for (int z = 0; z < 3; ++z)
+            if (inside[2][z] && !(x == 1 && y == 1 && z == 1) && gxy + gap[2][z] < bound()) {
+              const std::uint64_t b = bit(x, y, z);
+              if (has(b)) range(rank(b));
+            }
+        }
+      }
+      return;
+    }
+    const auto visit = [&](std::uint64_t key) {
+      const int cell = find(key);
+      if (cell >= 0) range(cell);
+    };
+    visit(center);
     for (int x = 0; x < 3; ++x)
       for (int y = 0; y < 3; ++y) {
         const float gxy = gap[0][x] + gap[1][y];
@@ -96,8 +137,14 @@ class RadiusGrid {
   std::vector<Eigen::Vector3f> sorted_;  // the points, cell by cell
   std::vector<int> index_;               // input index of sorted_[i]
   std::vector<int> start_;               // cell c holds sorted_[start_[c], start_[c + 1])
-  std::vector<std::uint64_t> slots_;     // open-addressing table of cell keys
-  std::vector<int> slot_cell_;           // the cell of each slot
+  // Dense box: a bit per cell (cell numbers from 0 on each axis, one cell of margin around the
+  // points), and the set bits before each word; cells numbered in bit order.
+  std::vector<std::uint64_t> occupancy_;
+  std::vector<std::uint32_t> rank_;
+  std::uint64_t dims_[3] = {0, 0, 0};
+  // Otherwise an open-addressing table of cell keys, cells numbered in order of first appearance.
+  std::vector<std::uint64_t> slots_;
+  std::vector<int> slot_cell_;  // the cell of each slot
   std::uint64_t mask_ = 0;
 };
 
