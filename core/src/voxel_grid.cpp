@@ -225,7 +225,7 @@ RadiusGrid::RadiusGrid(const std::vector<Eigen::Vector3f>& points, double cell)
     std::uint32_t cells = 0;
     for (std::size_t w = 0; w < occupancy_.size(); ++w) {
       rank_[w] = cells;
-      cells += static_cast<std::uint32_t>(__builtin_popcountll(occupancy_[w]));
+      cells += static_cast<std::uint32_t>(popcount(occupancy_[w]));
     }
     start_.assign(cells, 0);
     for (std::size_t i = 0; i < n; ++i) {

@@ -60,9 +60,24 @@ class RadiusGrid {
   // Cell number of bit `b` of the dense box (a set bit): the set bits before it.
   int rank(std::uint64_t b) const {
     const std::uint64_t below = occupancy_[b >> 6] & ((std::uint64_t(1) << (b & 63)) - 1);
-    return static_cast<int>(rank_[b >> 6]) + __builtin_popcountll(below);
+    return static_cast<int>(rank_[b >> 6]) + popcount(below);
+  }
+  // Set bits of x, inline (without a popcnt instruction the builtin is a library call).
+  static int popcount(std::uint64_t x) {
+    x -= (x >> 1) & 0x5555555555555555ull;
+    x = (x & 0x3333333333333333ull) + ((x >> 2) & 0x3333333333333333ull);
+    x = (x + (x >> 4)) & 0x0F0F0F0F0F0F0F0Full;
+    return static_cast<int>((x * 0x0101010101010101ull) >> 56);
   }
   bool has(std::uint64_t b) const { return (occupancy_[b >> 6] >> (b & 63)) & 1; }
+  // Bits b, b + 1, b + 2 of the dense box as the low three bits (b within it; bits past its end
+  // read as zero).
+  unsigned three_bits(std::uint64_t b) const {
+    const std::uint64_t w = b >> 6, s = b & 63;
+    std::uint64_t v = occupancy_[w] >> s;
+    if (s > 61 && w + 1 < occupancy_.size()) v |= occupancy_[w + 1] << (64 - s);
+    return static_cast<unsigned>(v & 7u);
+  }
 
   // Calls f(begin, end) with the range of sorted_ of each occupied cell of the 27 around q whose
   // box is nearer to q than sqrt(bound()) (bound() may shrink as f finds points), q's own cell
@@ -100,17 +115,20 @@ class RadiusGrid {
                (c[1] + static_cast<std::uint64_t>(y) - 1) * stride_y +
                (c[2] + static_cast<std::uint64_t>(z) - 1);
       };
+      const unsigned z_inside = (inside[2][0] ? 1u : 0u) | (inside[2][1] ? 2u : 0u) |
+                                (inside[2][2] ? 4u : 0u);
       if (inside[0][1] && inside[1][1] && inside[2][1] && has(bit(1, 1, 1))) range(rank(bit(1, 1, 1)));
-      for (int x = 0; x < 3; ++x) {
+      for (int x = 0; x < 3 && z_inside; ++x) {
         if (!inside[0][x]) continue;
         for (int y = 0; y < 3; ++y) {
           const float gxy = gap[0][x] + gap[1][y];
           if (!inside[1][y] || gxy >= bound()) continue;
-          for (int z = 0; z < 3; ++z)
-            if (inside[2][z] && !(x == 1 && y == 1 && z == 1) && gxy + gap[2][z] < bound()) {
-              const std::uint64_t b = bit(x, y, z);
-              if (has(b)) range(rank(b));
-            }
+          // The column's three cells are consecutive bits: the occupied ones at once.
+          const std::uint64_t b0 = bit(x, y, 0);
+          unsigned occupied = three_bits(b0) & z_inside;
+          if (x == 1 && y == 1) occupied &= ~2u;  // the own cell came first
+          for (int z = 0; occupied; ++z, occupied >>= 1)
+            if ((occupied & 1u) && gxy + gap[2][z] < bound()) range(rank(b0 + static_cast<std::uint64_t>(z)));
         }
       }
       return;
