@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #include "pagor/voxel_grid.hpp"
@@ -29,13 +30,17 @@ float binnable_atan2(float y, float x) {
   // Its position in FPFH's 11 bins, as PCL computes it (bins_of below); a bin edge closer than
   // 1e-3 of a bin (5.7e-4 rad, far above the polynomial's error) is decided by atan2 itself.
   const double bin = 11 * ((a + M_PI) * (1.0f / (2.0f * static_cast<float>(M_PI))));
-  if (std::fabs(bin - std::round(bin)) > 1e-3) return static_cast<float>(a);
-  return std::atan2(y, x);  // also for NaN
+  if (bin > -0.5 && bin < 11.5) {  // (false for NaN)
+    const double edge = static_cast<double>(static_cast<int>(bin + 0.5));  // the nearest
+    if (std::fabs(bin - edge) > 1e-3) return static_cast<float>(a);
+  }
+  return std::atan2(y, x);
 }
 
 namespace {
 
 constexpr int kBins = 11;  // per feature, as PCL's FPFH
+typedef float Float4 __attribute__((vector_size(16)));  // GCC and Clang vector extension
 
 // PCL's computePairFeatures (pcl/features/pfh_tools.h) on 4-vectors with w = 0, so that every
 // operation is the one PCL performs. The order of the pair is decided as PCL does by comparing
@@ -89,7 +94,7 @@ PairFeatures pair_features(const Eigen::Vector4f& p1, const Eigen::Vector4f& n1,
 // conversion of NaN to int (INT_MIN) does in PCL.
 int bin_of(double x) {
   if (!(x >= 0.0)) return 0;
-  return std::min(kBins - 1, static_cast<int>(std::floor(x)));
+  return x < kBins ? static_cast<int>(x) : kBins - 1;  // truncation is floor here
 }
 std::array<int, 3> bins_of(const PairFeatures& f) {
   const float d_pi = 1.0f / (2.0f * static_cast<float>(M_PI));
@@ -239,7 +244,15 @@ std::vector<Fpfh> compute_fpfh(const std::vector<Eigen::Vector3f>& points,
       const float weight = 1.0f / near_d2[k][a];
       const float* h =
           hist.data() + static_cast<std::size_t>(row[static_cast<std::size_t>(near[k][a])]) * 33;
-      for (int b = 0; b < 33; ++b) fpfh[b] += h[b] * weight;
+      // Bin by bin as the plain loop, four bins at a time (each bin's sum in the same order).
+      for (int b = 0; b < 32; b += 4) {
+        Float4 acc, hb;
+        std::memcpy(&acc, fpfh + b, sizeof acc);
+        std::memcpy(&hb, h + b, sizeof hb);
+        acc += hb * weight;
+        std::memcpy(fpfh + b, &acc, sizeof acc);
+      }
+      fpfh[32] += h[32] * weight;
     }
     for (int t = 0; t < 3; ++t) {
       double sum = 0;
