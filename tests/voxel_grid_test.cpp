@@ -6,6 +6,7 @@
 #include <cmath>
 #include <map>
 #include <random>
+#include <set>
 
 #include "pagor/errors.hpp"
 #include "pagor/voxel_grid.hpp"
@@ -150,4 +151,40 @@ TEST_CASE("the grid's dense box and its hash table give the same neighbours in t
       CHECK(dense.nearest(q, cell) == hashed.nearest(q, cell));
     }
   }
+}
+
+TEST_CASE("the grid's pairs within a radius are a brute-force search's, each once") {
+  std::mt19937_64 rng(31);
+  std::uniform_real_distribution<float> u(-6.f, 6.f);
+  std::vector<Eigen::Vector3f> pts;
+  for (int i = 0; i < 1500; ++i)
+    pts.push_back(draw3(u, rng).cast<float>().cwiseProduct(Eigen::Vector3f(1, 1, 0.3f)));
+  pts.push_back(pts[3]);  // a duplicate: a pair at distance 0
+  std::vector<Eigen::Vector3f> sparse = pts;
+  sparse.emplace_back(3000.0f, 3000.0f, 3000.0f);  // far from all: the hash table
+  for (float cell : {0.4f, 1.0f})
+    for (const auto* cloud : {&pts, &sparse}) {
+      const RadiusGrid grid(*cloud, cell);
+      CHECK(grid.dense() == (cloud == &pts));
+      for (float radius : {cell, 0.5f * cell}) {
+        std::set<std::pair<int, int>> expected, got;
+        for (std::size_t i = 0; i < cloud->size(); ++i)
+          for (std::size_t j = i + 1; j < cloud->size(); ++j)
+            if (((*cloud)[i] - (*cloud)[j]).squaredNorm() < radius * radius)
+              expected.insert({static_cast<int>(i), static_cast<int>(j)});
+        std::size_t calls = 0;
+        bool distances_right = true;
+        grid.for_each_pair_within(radius, [&](int i, int j, float d2) {
+          ++calls;
+          got.insert({std::min(i, j), std::max(i, j)});
+          distances_right = distances_right &&
+                            d2 == ((*cloud)[static_cast<std::size_t>(i)] -
+                                   (*cloud)[static_cast<std::size_t>(j)]).squaredNorm();
+        });
+        INFO("cell " << cell << " radius " << radius << (grid.dense() ? " dense" : " hashed"));
+        CHECK(got == expected);
+        CHECK(calls == expected.size());  // no pair twice
+        CHECK(distances_right);
+      }
+    }
 }

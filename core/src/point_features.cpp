@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <numeric>
 
 #include "pagor/voxel_grid.hpp"
 
@@ -115,29 +116,38 @@ std::vector<std::vector<int>> euclidean_clusters(const std::vector<Eigen::Vector
                                                  double tolerance, int min_size, int max_size) {
   std::vector<std::vector<int>> clusters;
   if (points.empty() || !(tolerance > 0)) return clusters;
+  // Connected components of the pairs closer than the tolerance (union-find, each pair seen
+  // once): the same components as PCL's breadth-first growth from every unvisited point.
   const RadiusGrid grid(points, tolerance);
-  const float r = static_cast<float>(tolerance);
-  std::vector<char> seen(points.size(), 0);
-  std::vector<int> queue, found;
-  std::vector<float> d2;
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    if (seen[i]) continue;
-    queue.assign(1, static_cast<int>(i));
-    seen[i] = 1;
-    for (std::size_t k = 0; k < queue.size(); ++k) {
-      found.clear();
-      d2.clear();
-      grid.within(points[static_cast<std::size_t>(queue[k])], r, found, d2);
-      for (int j : found)
-        if (!seen[static_cast<std::size_t>(j)]) {
-          seen[static_cast<std::size_t>(j)] = 1;
-          queue.push_back(j);
-        }
+  std::vector<int> parent(points.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  const auto root = [&](int i) {
+    while (parent[static_cast<std::size_t>(i)] != i) {
+      parent[static_cast<std::size_t>(i)] =
+          parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(i)])];
+      i = parent[static_cast<std::size_t>(i)];
     }
-    const int size = static_cast<int>(queue.size());
-    if (size < min_size || size > max_size) continue;
-    std::sort(queue.begin(), queue.end());
-    clusters.push_back(queue);
+    return i;
+  };
+  grid.for_each_pair_within(static_cast<float>(tolerance), [&](int i, int j, float) {
+    const int a = root(i), b = root(j);
+    if (a != b) parent[static_cast<std::size_t>(std::max(a, b))] = std::min(a, b);
+  });
+  // Components in order of their smallest member (the order growth finds them in), members
+  // ascending; then the sizes kept, largest first (stable: ties by smallest member).
+  std::vector<int> component(points.size(), -1);
+  std::vector<std::vector<int>> all;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const auto r = static_cast<std::size_t>(root(static_cast<int>(i)));
+    if (component[r] < 0) {
+      component[r] = static_cast<int>(all.size());
+      all.emplace_back();
+    }
+    all[static_cast<std::size_t>(component[r])].push_back(static_cast<int>(i));
+  }
+  for (auto& c : all) {
+    const int size = static_cast<int>(c.size());
+    if (size >= min_size && size <= max_size) clusters.push_back(std::move(c));
   }
   std::stable_sort(clusters.begin(), clusters.end(),
                    [](const auto& a, const auto& b) { return a.size() > b.size(); });

@@ -50,6 +50,60 @@ class RadiusGrid {
   /// Cell size actually used [m].
   float cell() const { return cell_; }
 
+  /// Calls f(i, j, d2) once for every pair of input points i != j strictly closer than `radius`
+  /// [m] (at most the cell), with their squared distance, in no particular order: each cell is
+  /// paired with itself and its 13 neighbours that come after it, so no pair is looked at twice.
+  template <class F>
+  void for_each_pair_within(float radius, F&& f) const {
+    const float r2 = radius * radius;
+    const auto pair_cells = [&](int a, int b) {
+      const int a_end = start_[static_cast<std::size_t>(a) + 1];
+      const int b_end = start_[static_cast<std::size_t>(b) + 1];
+      for (int i = start_[static_cast<std::size_t>(a)]; i < a_end; ++i) {
+        const Eigen::Vector3f& p = sorted_[static_cast<std::size_t>(i)];
+        for (int j = a == b ? i + 1 : start_[static_cast<std::size_t>(b)]; j < b_end; ++j) {
+          const float d2 = (sorted_[static_cast<std::size_t>(j)] - p).squaredNorm();
+          if (d2 < r2) f(index_[static_cast<std::size_t>(i)], index_[static_cast<std::size_t>(j)], d2);
+        }
+      }
+    };
+    // The 13 offsets after (0, 0, 0) in lexicographic order.
+    static constexpr int kForward[13][3] = {{0, 0, 1},  {0, 1, -1}, {0, 1, 0},  {0, 1, 1},  {1, -1, -1},
+                                            {1, -1, 0}, {1, -1, 1}, {1, 0, -1}, {1, 0, 0},  {1, 0, 1},
+                                            {1, 1, -1}, {1, 1, 0},  {1, 1, 1}};
+    constexpr std::uint64_t kAxis = (std::uint64_t(1) << 21) - 1;
+    const auto each_cell = [&](std::uint64_t key, int cell) {
+      pair_cells(cell, cell);
+      const std::uint64_t c[3] = {key >> 42, (key >> 21) & kAxis, key & kAxis};  // all >= 1
+      for (const auto& o : kForward) {
+        const std::uint64_t n[3] = {c[0] + static_cast<std::uint64_t>(o[0]),
+                                    c[1] + static_cast<std::uint64_t>(o[1]),
+                                    c[2] + static_cast<std::uint64_t>(o[2])};
+        int other = -1;
+        if (dense()) {
+          const std::uint64_t b = (n[0] * dims_[1] + n[1]) * dims_[2] + n[2];
+          if (n[0] < dims_[0] && n[1] < dims_[1] && n[2] < dims_[2] && has(b)) other = rank(b);
+        } else {
+          other = find((n[0] << 42) | (n[1] << 21) | n[2]);
+        }
+        if (other >= 0) pair_cells(cell, other);
+      }
+    };
+    if (dense()) {
+      int cell = 0;
+      for (std::size_t w = 0; w < occupancy_.size(); ++w)
+        for (std::uint64_t bits = occupancy_[w]; bits; bits &= bits - 1) {
+          const std::uint64_t b = w * 64 + static_cast<std::uint64_t>(__builtin_ctzll(bits));
+          const std::uint64_t z = b % dims_[2], y = (b / dims_[2]) % dims_[1];
+          const std::uint64_t x = b / (dims_[1] * dims_[2]);
+          each_cell((x << 42) | (y << 21) | z, cell++);
+        }
+    } else {
+      for (std::size_t s = 0; s < slots_.size(); ++s)
+        if (slots_[s] != ~std::uint64_t(0)) each_cell(slots_[s], slot_cell_[s]);
+    }
+  }
+
   /// True when cells are found through a bit per cell of the cloud's box rather than the hash
   /// table (a box of at most 256 cells per point).
   bool dense() const { return !occupancy_.empty(); }
