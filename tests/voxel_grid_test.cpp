@@ -77,6 +77,10 @@ TEST_CASE("voxel downsampling equals a straightforward map-based reference") {
     }
     const VoxelDownsample d = voxel_downsample(pts, voxel);
     INFO("voxel " << voxel << " m");
+    const VoxelDownsample lean = voxel_downsample(pts, voxel, nullptr, false);
+    CHECK(lean.voxel_of.empty());
+    CHECK(lean.points == d.points);
+    CHECK(lean.counts == d.counts);
     CHECK(d.counts == counts);
     CHECK(d.voxel_of == voxel_of);
     REQUIRE(d.points.size() == sums.size());

@@ -260,7 +260,7 @@ ClassParams params_for_spacing(const ClassParams& p, double spacing, const Landm
 std::string label_scheme_mismatch(const PointCloud& cloud, const LabelScheme& scheme,
                                   const LandmarkParams& params) {
   if (!cloud.has_labels() || cloud.empty()) return {};
-  std::vector<std::size_t> counts(1u << 16, 0);
+  std::vector<std::size_t> counts(1024, 0);  // the usual ids; others go to the map directly
   std::map<std::uint32_t, std::size_t> histogram;
   for (std::uint32_t l : cloud.labels) {
     const std::uint32_t id = semantic_id(l);

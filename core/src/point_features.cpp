@@ -163,20 +163,33 @@ std::vector<Eigen::Vector3f> estimate_normals(const std::vector<Eigen::Vector3f>
   cloud.resize(points.size());
   for (std::size_t i = 0; i < points.size(); ++i)
     cloud[i] = pcl::PointXYZ(points[i].x(), points[i].y(), points[i].z());
+  // Every point's neighbours closer than the radius (itself included) from the grid's pairs,
+  // counted in one pass and gathered in a second.
   const RadiusGrid grid(points, radius);
+  const float r = static_cast<float>(radius);
+  std::vector<std::size_t> start(points.size() + 1, 0);
+  for (std::size_t i = 0; i < points.size(); ++i) start[i + 1] = 1;  // itself
+  grid.for_each_pair_within(r, [&](int i, int j, float) {
+    ++start[static_cast<std::size_t>(i) + 1];
+    ++start[static_cast<std::size_t>(j) + 1];
+  });
+  for (std::size_t i = 0; i < points.size(); ++i) start[i + 1] += start[i];
+  std::vector<std::pair<float, int>> near(start.back());
+  std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+  for (std::size_t i = 0; i < points.size(); ++i) near[fill[i]++] = {0.0f, static_cast<int>(i)};
+  grid.for_each_pair_within(r, [&](int i, int j, float d2) {
+    near[fill[static_cast<std::size_t>(i)]++] = {d2, j};
+    near[fill[static_cast<std::size_t>(j)]++] = {d2, i};
+  });
   pcl::Indices found;
-  std::vector<float> d2;
-  std::vector<std::pair<float, int>> order;
   for (std::size_t i = 0; i < points.size(); ++i) {
-    found.clear();
-    d2.clear();
-    grid.within(points[i], static_cast<float>(radius), found, d2);
     // In FLANN's order (by distance, then index): the covariance sums in float, and a nearly
     // degenerate neighbourhood's normal depends on the order of the sum.
-    order.clear();
-    for (std::size_t k = 0; k < found.size(); ++k) order.emplace_back(d2[k], found[k]);
-    std::sort(order.begin(), order.end());
-    for (std::size_t k = 0; k < found.size(); ++k) found[k] = order[k].second;
+    const auto first = near.begin() + static_cast<std::ptrdiff_t>(start[i]);
+    const auto last = near.begin() + static_cast<std::ptrdiff_t>(start[i + 1]);
+    std::sort(first, last);
+    found.clear();
+    for (auto it = first; it != last; ++it) found.push_back(it->second);
     EIGEN_ALIGN16 Eigen::Matrix3f covariance;
     Eigen::Vector4f centroid;
     if (found.size() < 3 ||

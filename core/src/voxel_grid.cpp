@@ -62,7 +62,7 @@ void bin(std::size_t n, const Point& point, const MakeKey& make_key, VoxelDownsa
     }
     sums[static_cast<std::size_t>(it->second)] += point(i).template cast<double>();
     ++out.counts[static_cast<std::size_t>(it->second)];
-    out.voxel_of[i] = it->second;
+    if (!out.voxel_of.empty()) out.voxel_of[i] = it->second;
   }
   out.points.resize(sums.size());
   for (std::size_t v = 0; v < sums.size(); ++v)
@@ -111,7 +111,7 @@ void bin_packed(std::size_t n, const Point& point, const MakeKey& make_key, Voxe
     const int v = voxel[s];
     sums[static_cast<std::size_t>(v)] += point(i).template cast<double>();
     ++out.counts[static_cast<std::size_t>(v)];
-    out.voxel_of[i] = v;
+    if (!out.voxel_of.empty()) out.voxel_of[i] = v;
   }
   out.points.resize(sums.size());
   for (std::size_t v = 0; v < sums.size(); ++v)
@@ -121,19 +121,19 @@ void bin_packed(std::size_t n, const Point& point, const MakeKey& make_key, Voxe
 }  // namespace
 
 VoxelDownsample voxel_downsample(const std::vector<Eigen::Vector3f>& points, double voxel_size,
-                                 const std::vector<int>* subset) {
+                                 const std::vector<int>* subset, bool with_voxel_of) {
   const std::size_t n = subset ? subset->size() : points.size();
   const auto point = [&](std::size_t i) -> const Eigen::Vector3f& {
     return points[subset ? static_cast<std::size_t>((*subset)[i]) : i];
   };
   VoxelDownsample out;
-  out.voxel_of.resize(n);
+  if (with_voxel_of) out.voxel_of.resize(n);
   if (voxel_size <= 0 || n == 0) {
     out.points.reserve(n);
     for (std::size_t i = 0; i < n; ++i) {
       out.points.push_back(point(i));
       out.counts.push_back(1);
-      out.voxel_of[i] = static_cast<int>(i);
+      if (with_voxel_of) out.voxel_of[i] = static_cast<int>(i);
     }
     return out;
   }

@@ -25,8 +25,10 @@ struct VoxelDownsample {
 /// (multiples of `voxel_size`), keyed relative to the cloud's lowest cell, so a cloud far from the
 /// origin (georeferenced) is binned as finely as one near it and far-apart points never merge.
 /// Throws InputError when a lattice index would exceed 2^52 or a coordinate is not finite.
+/// `voxel_of` is left empty when `with_voxel_of` is false (a table as long as the input).
 VoxelDownsample voxel_downsample(const std::vector<Eigen::Vector3f>& points, double voxel_size,
-                                 const std::vector<int>* subset = nullptr);
+                                 const std::vector<int>* subset = nullptr,
+                                 bool with_voxel_of = true);
 
 /// Fixed-radius neighbour search: the points hashed on cells of a grid at least as coarse as the
 /// search radius, so a search looks at the 27 cells around the query (what a kd-tree's radius
