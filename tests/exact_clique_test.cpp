@@ -219,3 +219,37 @@ TEST_CASE(
     CHECK(r.vertices.size() == test::plain_max_clique(g, 0));
   }
 }
+
+TEST_CASE("the search for a larger clique finds one whenever it exists, from any start") {
+  // The search first colours the vertices that could be in a larger clique and stops when that
+  // needs no more colours than the start has: it must never stop while a larger clique exists.
+  for (std::uint64_t seed = 0; seed < 60; ++seed) {
+    const int n = 10 + static_cast<int>(seed % 9);
+    const double p = 0.25 + 0.1 * static_cast<double>(seed % 6);
+    const PyramidGraph g = random_graph(n, p, 0, seed);
+    const std::size_t maximum = test::brute_force_clique(g);
+    // Start from a maximal clique grown from each vertex: often smaller than the maximum.
+    const detail::PyramidLevel view{g, 0};
+    detail::Marks marks(g.vertices);
+    const std::vector<int> degree = detail::level_degrees(g, 0);
+    for (int v = 0; v < n; ++v) {
+      const std::vector<int> start = detail::extend_clique(view, {v}, degree, 1, marks);
+      bool optimal = false;
+      const std::vector<int> got = detail::larger_clique(g, 0, start, 1000000, optimal);
+      INFO("seed " << seed << ", start vertex " << v << ", start size " << start.size());
+      CHECK(optimal);
+      CHECK(is_clique(g, 0, got));
+      CHECK(got.size() == maximum);
+    }
+  }
+  // A 5-cycle: its maximum clique (an edge) is proved only by the search (a greedy colouring
+  // needs 3 colours); a 5-cycle with one chord and a triangle: the colouring proves it.
+  const PyramidGraph cycle = test::graph_from_lists({{1, 4}, {0, 2}, {1, 3}, {2, 4}, {0, 3}});
+  bool optimal = false;
+  CHECK(detail::larger_clique(cycle, 0, {0, 1}, 1000, optimal).size() == 2);
+  CHECK(optimal);
+  const PyramidGraph chord =
+      test::graph_from_lists({{1, 2, 4}, {0, 2}, {0, 1, 3}, {2, 4}, {0, 3}});
+  CHECK(detail::larger_clique(chord, 0, {3, 4}, 1000, optimal).size() == 3);
+  CHECK(detail::larger_clique(chord, 0, {0, 1, 2}, 1000, optimal) == std::vector<int>{0, 1, 2});
+}
