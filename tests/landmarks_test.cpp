@@ -194,3 +194,32 @@ TEST_CASE("an unlabelled cloud gets class-agnostic keypoints above the ground") 
   always.mode = FallbackMode::always;
   CHECK(needs_fallback(scene.source, scene.source, rich, rich, always));
 }
+
+TEST_CASE("classes whose ids are large or shared pick the same points as small distinct ids") {
+  // Points are sorted into classes in one pass when every id is small and in one class; other
+  // schemes take a pass per class. Both must pick the same points.
+  const SyntheticScene scene = make_synthetic_scene();
+  const Config config = default_config();
+  const LandmarkSet plain = extract_landmarks(scene.source, config.label_scheme, config.landmarks);
+  // The same labels moved to ids above 4000 (the upper 16 bits, the instance, kept).
+  LabelScheme big = config.label_scheme;
+  for (auto& c : big.classes)
+    for (auto& id : c.ids) id += 4000;
+  PointCloud moved = scene.source;
+  for (auto& l : moved.labels) l = (l & 0xFFFF0000u) | (semantic_id(l) + 4000);
+  const LandmarkSet large = extract_landmarks(moved, big, config.landmarks);
+  // A scheme where a second class (an extra landmark class) shares the car's ids.
+  LandmarkParams twice = config.landmarks;
+  twice.classes.push_back(twice.classes[0]);
+  const LandmarkSet shared = extract_landmarks(scene.source, config.label_scheme, twice);
+  for (const LandmarkSet* set : {&large, &shared}) {
+    REQUIRE(set->classes.size() >= plain.classes.size());
+    for (std::size_t c = 0; c < plain.classes.size(); ++c) {
+      INFO("class " << plain.classes[c].name);
+      CHECK(set->classes[c].points == plain.classes[c].points);
+      CHECK(set->classes[c].landmarks == plain.classes[c].landmarks);
+    }
+  }
+  CHECK(shared.classes.back().points == plain.classes[0].points);
+  CHECK(shared.classes.back().landmarks == plain.classes[0].landmarks);
+}

@@ -33,15 +33,38 @@ std::vector<Eigen::Vector3f> local_points(const std::vector<Eigen::Vector3f>& po
   return out;
 }
 
-// Indices of the points whose semantic id is one of `ids` (a table over the 16-bit ids).
-std::vector<int> points_of_class(const PointCloud& cloud, const std::vector<std::uint32_t>& ids) {
-  std::vector<char> wanted(1u << 16, 0);
-  for (std::uint32_t id : ids)
-    if (id < wanted.size()) wanted[id] = 1;
-  std::vector<int> out;
-  for (std::size_t i = 0; i < cloud.size(); ++i) {
-    const std::uint32_t id = semantic_id(cloud.labels[i]);
-    if (id < wanted.size() && wanted[id]) out.push_back(static_cast<int>(i));
+// For each class of `params`, the indices of the points whose semantic id is one of the class's
+// ids. One pass over the labels with a table of the class of each id when every id is below
+// kSmallIds and in one class at most (as in every built-in scheme); else a pass per class.
+std::vector<std::vector<int>> points_of_classes(const PointCloud& cloud, const LabelScheme& scheme,
+                                                const LandmarkParams& params) {
+  constexpr std::uint32_t kSmallIds = 1024;
+  const std::size_t classes = params.classes.size();
+  std::vector<std::vector<int>> out(classes);
+  std::vector<int> owner(kSmallIds, -1);
+  bool one_pass = true;
+  for (std::size_t c = 0; c < classes && one_pass; ++c)
+    for (std::uint32_t id : scheme.ids_of(params.classes[c].name)) {
+      if (id >= kSmallIds || (owner[id] >= 0 && owner[id] != static_cast<int>(c))) {
+        one_pass = false;
+        break;
+      }
+      owner[id] = static_cast<int>(c);
+    }
+  if (one_pass) {
+    for (std::size_t i = 0; i < cloud.size(); ++i) {
+      const std::uint32_t id = semantic_id(cloud.labels[i]);
+      if (id < kSmallIds && owner[id] >= 0)
+        out[static_cast<std::size_t>(owner[id])].push_back(static_cast<int>(i));
+    }
+    return out;
+  }
+  for (std::size_t c = 0; c < classes; ++c) {
+    std::vector<std::uint32_t> ids = scheme.ids_of(params.classes[c].name);
+    std::sort(ids.begin(), ids.end());
+    for (std::size_t i = 0; i < cloud.size(); ++i)
+      if (std::binary_search(ids.begin(), ids.end(), semantic_id(cloud.labels[i])))
+        out[c].push_back(static_cast<int>(i));
   }
   return out;
 }
@@ -326,12 +349,11 @@ LandmarkSet extract_landmarks(const PointCloud& cloud, const LabelScheme& scheme
     out.warnings.push_back("no semantic labels: no semantic landmarks");
   else if (const std::string m = label_scheme_mismatch(cloud, scheme, params); !m.empty())
     out.warnings.push_back(m);
-  for (std::size_t ci = 0; ci < params.classes.size(); ++ci) {
-    const ClassParams& p = params.classes[ci];
-    const std::vector<int> subset =
-        cloud.has_labels() ? points_of_class(cloud, scheme.ids_of(p.name)) : std::vector<int>{};
-    extract_class(cloud, subset, static_cast<int>(ci), p, params, out);
-  }
+  const std::vector<std::vector<int>> subsets =
+      cloud.has_labels() ? points_of_classes(cloud, scheme, params)
+                         : std::vector<std::vector<int>>(params.classes.size());
+  for (std::size_t ci = 0; ci < params.classes.size(); ++ci)
+    extract_class(cloud, subsets[ci], static_cast<int>(ci), params.classes[ci], params, out);
   if (!cloud.has_labels())  // one warning for the cloud, not one per class
     out.warnings.erase(out.warnings.begin() + 1, out.warnings.end());
   out.time_ms = ms_since(t_all);
