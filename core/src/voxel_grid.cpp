@@ -150,7 +150,13 @@ VoxelDownsample voxel_downsample(const std::vector<Eigen::Vector3f>& points, dou
     throw InputError("voxel size " + std::to_string(voxel_size) + " m for coordinates up to " +
                      std::to_string(reach * voxel_size) +
                      " m: voxel indices beyond 2^52 (or a non-finite coordinate)");
-  const auto index = [inv](float v) { return static_cast<std::int64_t>(std::floor(v * inv)); };
+  // floor(v * inv) as an integer: truncation, one down below zero (|v * inv| < 2^52 here; from
+  // 2^23 on a float has no fraction and truncation is exact).
+  const auto index = [inv](float v) {
+    const float x = v * inv;
+    const auto t = static_cast<std::int64_t>(x);
+    return t - (x < static_cast<float>(t) ? 1 : 0);
+  };
   const std::int64_t base[3] = {index(lo.x()), index(lo.y()), index(lo.z())};
   const std::int64_t span =
       std::max({index(hi.x()) - base[0], index(hi.y()) - base[1], index(hi.z()) - base[2]});
@@ -174,7 +180,8 @@ VoxelDownsample voxel_downsample(const std::vector<Eigen::Vector3f>& points, dou
 // Cells are numbered from 1 so that the neighbours of the lowest cell have valid keys.
 std::uint64_t RadiusGrid::key_of(const Eigen::Vector3f& p) const {
   const auto axis = [&](int a) {
-    const float c = std::floor((p[a] - lo_[a]) / cell_);  // queries off the grid are clamped
+    // floor, with queries off the grid clamped (truncation is floor once clamped to >= 0)
+    const float c = (p[a] - lo_[a]) / cell_;
     return static_cast<std::uint64_t>(std::min(std::max(0.0f, c), kMaxCells + 1.0f)) + 1;
   };
   return (axis(0) << 42) | (axis(1) << 21) | axis(2);
