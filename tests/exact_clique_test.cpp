@@ -248,8 +248,16 @@ TEST_CASE("the search for a larger clique finds one whenever it exists, from any
   bool optimal = false;
   CHECK(detail::larger_clique(cycle, 0, {0, 1}, 1000, optimal).size() == 2);
   CHECK(optimal);
-  const PyramidGraph chord =
-      test::graph_from_lists({{1, 2, 4}, {0, 2}, {0, 1, 3}, {2, 4}, {0, 3}});
+  const PyramidGraph chord = test::graph_from_lists({{1, 2, 4}, {0, 2}, {0, 1, 3}, {2, 4}, {0, 3}});
   CHECK(detail::larger_clique(chord, 0, {3, 4}, 1000, optimal).size() == 3);
+  CHECK(optimal);
   CHECK(detail::larger_clique(chord, 0, {0, 1, 2}, 1000, optimal) == std::vector<int>{0, 1, 2});
+  CHECK(optimal);
+  // The octahedron (every vertex but its opposite one adjacent): 4-regular, so each vertex's
+  // subproblem (a 4-cycle) survives pruning and needs search nodes, but three colours suffice and
+  // prove its triangles maximum. With no node budget only the colouring can prove it.
+  const PyramidGraph octahedron = test::graph_from_lists(
+      {{2, 3, 4, 5}, {2, 3, 4, 5}, {0, 1, 4, 5}, {0, 1, 4, 5}, {0, 1, 2, 3}, {0, 1, 2, 3}});
+  CHECK(detail::larger_clique(octahedron, 0, {0, 2, 4}, 0, optimal) == std::vector<int>{0, 2, 4});
+  CHECK(optimal);
 }

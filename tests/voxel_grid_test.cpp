@@ -1,9 +1,10 @@
 // Voxel downsampling far from the origin: the grid follows the cloud, so a cloud moved by 300 km
 // gives the same voxels (moved), and a cloud too wide for its voxel size is an error.
 
-#include <catch2/catch.hpp>
 #include <array>
+#include <catch2/catch.hpp>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <random>
 #include <set>
@@ -45,6 +46,17 @@ TEST_CASE("points hundreds of kilometres apart never share a voxel") {
   CHECK(d.counts == std::vector<int>{1, 2});
 }
 
+TEST_CASE("a non-finite coordinate anywhere is an error for the voxels and the grid") {
+  // The bounding box's min and max pass a NaN over: every point is checked.
+  std::vector<Eigen::Vector3f> pts(10, Eigen::Vector3f(1, 2, 3));
+  pts[5].y() = std::numeric_limits<float>::quiet_NaN();
+  CHECK_THROWS_AS(voxel_downsample(pts, 0.5), InputError);
+  CHECK_THROWS_AS(RadiusGrid(pts, 0.5), InputError);
+  pts[5].y() = HUGE_VALF;
+  CHECK_THROWS_AS(voxel_downsample(pts, 0.5), InputError);
+  CHECK_THROWS_AS(RadiusGrid(pts, 0.5), InputError);
+}
+
 TEST_CASE("a grid of more than 2^52 voxels per axis is an error, not undefined behaviour") {
   const std::vector<Eigen::Vector3f> huge = {{-1e29f, 0, 0}, {1e29f, 0, 0}};
   CHECK_THROWS_AS(voxel_downsample(huge, 0.5), InputError);
@@ -61,6 +73,8 @@ TEST_CASE("voxel downsampling equals a straightforward map-based reference") {
   for (int i = 0; i < 20000; ++i)
     pts.push_back(draw3(u, rng).cast<float>().cwiseQuotient(Eigen::Vector3f(1, 1, 10)));
   for (int i = 0; i < 500; ++i) pts.push_back(pts[static_cast<std::size_t>(i) * 7]);  // repeats
+  // On voxel edges, below zero too (a voxel index is a floor: -1.0 / 0.5 is -2, not -1).
+  for (float x : {-1.0f, -0.5f, -0.2f, 0.0f, -0.0f, 0.5f, -3.0f}) pts.emplace_back(x, x, -x);
   for (double voxel : {0.2, 0.5, 3.0}) {
     std::map<std::array<long long, 3>, int> id;
     std::vector<Eigen::Vector3d> sums;
@@ -105,26 +119,29 @@ TEST_CASE("the grid's nearest neighbour agrees with a linear scan, off the grid 
   sparse.emplace_back(5000.0f, 5000.0f, 500.0f);
   for (float cell : {0.3f, 1.0f, 2.5f})
     for (const auto* cloud : {&pts, &sparse}) {
-    const RadiusGrid grid(*cloud, cell);
-    CHECK(grid.dense() == (cloud == &pts));
-    for (int k = 0; k < 2000; ++k) {
-      Eigen::Vector3f q(u(rng) * 1.3f, u(rng) * 1.3f, u(rng) * 0.3f);
-      if (k % 10 == 0) q = pts[static_cast<std::size_t>(k)] + Eigen::Vector3f(0.0f, 0.0f, 1e-3f);
-      if (k % 97 == 0) q *= 1e4f;  // clamped into the border cells
-      for (float radius : {cell, cell * 0.5f, cell * 0.01f}) {
-        int ref = -1;
-        float ref_d2 = radius * radius;
-        for (std::size_t i = 0; i < pts.size(); ++i)
-          if ((pts[i] - q).squaredNorm() < ref_d2) ref_d2 = (pts[i] - q).squaredNorm(), ref = static_cast<int>(i);
-        const auto [got, d2] = grid.nearest(q, radius);
-        INFO("cell " << cell << " radius " << radius << " query " << q.transpose()
-                     << (grid.dense() ? " (dense)" : " (hashed)"));
-        REQUIRE(d2 == ref_d2);
-        REQUIRE((got >= 0) == (ref >= 0));
-        if (ref >= 0) CHECK((pts[static_cast<std::size_t>(got)] - q).squaredNorm() == ref_d2);
+      const RadiusGrid grid(*cloud, cell);
+      CHECK(grid.dense() == (cloud == &pts));
+      for (int k = 0; k < 2000; ++k) {
+        Eigen::Vector3f q(u(rng) * 1.3f, u(rng) * 1.3f, u(rng) * 0.3f);
+        if (k % 10 == 0) q = pts[static_cast<std::size_t>(k)] + Eigen::Vector3f(0.0f, 0.0f, 1e-3f);
+        if (k % 97 == 0) q *= 1e4f;  // clamped into the border cells
+        for (float radius : {cell, cell * 0.5f, cell * 0.01f}) {
+          int ref = -1;
+          float ref_d2 = radius * radius;
+          for (std::size_t i = 0; i < cloud->size(); ++i) {
+            const float d2 = ((*cloud)[i] - q).squaredNorm();
+            if (d2 < ref_d2) ref_d2 = d2, ref = static_cast<int>(i);
+          }
+          const auto [got, d2] = grid.nearest(q, radius);
+          INFO("cell " << cell << " radius " << radius << " query " << q.transpose()
+                       << (grid.dense() ? " (dense)" : " (hashed)"));
+          REQUIRE(d2 == ref_d2);
+          REQUIRE((got >= 0) == (ref >= 0));
+          if (ref >= 0)
+            CHECK(((*cloud)[static_cast<std::size_t>(got)] - q).squaredNorm() == ref_d2);
+        }
       }
     }
-  }
 }
 
 TEST_CASE("the grid's dense box and its hash table give the same neighbours in the same order") {
@@ -181,9 +198,9 @@ TEST_CASE("the grid's pairs within a radius are a brute-force search's, each onc
         grid.for_each_pair_within(radius, [&](int i, int j, float d2) {
           ++calls;
           got.insert({std::min(i, j), std::max(i, j)});
-          distances_right = distances_right &&
-                            d2 == ((*cloud)[static_cast<std::size_t>(i)] -
-                                   (*cloud)[static_cast<std::size_t>(j)]).squaredNorm();
+          distances_right = distances_right && d2 == ((*cloud)[static_cast<std::size_t>(i)] -
+                                                      (*cloud)[static_cast<std::size_t>(j)])
+                                                         .squaredNorm();
         });
         INFO("cell " << cell << " radius " << radius << (grid.dense() ? " dense" : " hashed"));
         CHECK(got == expected);

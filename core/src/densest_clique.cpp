@@ -66,11 +66,12 @@ void set_weights(LevelGraph& s, const PyramidGraph& g, int level) {
   for (float& w : s.weights) w = static_cast<float>(std::exp(scale * double(w) * w));
 }
 
+constexpr std::size_t kLanes = 4;  // rows summed side by side in products()
+
 // Products the relaxation needs: Mu = M u (affinities, unit diagonal), Cu = C u (adjacency, unit
 // diagonal), both in one pass over the edges. When u has few non-zeros (late in the solve, and
 // after a warm start), they are scattered from the support instead of gathered over every edge
 // (the graph is symmetric).
-constexpr std::size_t kLanes = 4;  // rows summed side by side in products()
 void products(const LevelGraph& g, const std::vector<double>& u, std::vector<double>& Mu,
               std::vector<double>& Cu) {
   const std::size_t n = g.size();

@@ -5,7 +5,8 @@
 // first in the degeneracy order has all other members among its later neighbours. So each vertex
 // v of that core is one subproblem: v and its later neighbours, pruned to the local core that can
 // hold a larger clique, solved exactly on a bit-matrix. The degeneracy bounds each subproblem's
-// size, which keeps the bit-matrices small even on large sparse graphs.
+// size, which keeps the bit-matrices small even on large sparse graphs. Before any subproblem, a
+// greedy colouring of that core that needs no more colours than |best| proves best maximum.
 
 #include <algorithm>
 #include <chrono>
@@ -328,11 +329,11 @@ std::vector<int> solve_subproblem(const detail::LevelCsr& g, const detail::CoreD
 
 // Whether a greedy colouring of the vertices that could be in a clique larger than `size` (core
 // number at least `size`), taken from the end of the degeneracy order, needs no more than `size`
-// colours: then every clique among them has at most `size` vertices, and none is larger. On the
-// KITTI pairs this settles 11 of the cascade's 12 searches before any subproblem.
+// colours: then every clique among them has at most `size` vertices, and none is larger.
 bool colouring_proves(const detail::LevelCsr& g, const detail::CoreDecomposition& cd, int size) {
   const int n = g.size();
-  std::vector<int> colour(static_cast<std::size_t>(n), -1), taken_by(static_cast<std::size_t>(n) + 1, -1);
+  std::vector<int> colour(static_cast<std::size_t>(n), -1),
+      taken_by(static_cast<std::size_t>(n) + 1, -1);
   for (int i = n - 1; i >= 0; --i) {
     const int v = cd.order[static_cast<std::size_t>(i)];
     if (cd.core[static_cast<std::size_t>(v)] < size) continue;

@@ -31,8 +31,9 @@ float binnable_atan2(float y, float x) {
   // Its position in FPFH's 11 bins, as PCL computes it (bins_of below); a bin edge closer than
   // 1e-3 of a bin (5.7e-4 rad, far above the polynomial's error) is decided by atan2 itself.
   const double bin = 11 * ((a + M_PI) * (1.0f / (2.0f * static_cast<float>(M_PI))));
-  if (bin > -0.5 && bin < 11.5) {  // (false for NaN)
-    const double edge = static_cast<double>(static_cast<int>(bin + 0.5));  // the nearest
+  // (false for NaN); edge: the nearest
+  if (bin > -0.5 && bin < 11.5) {
+    const double edge = static_cast<double>(static_cast<int>(bin + 0.5));
     if (std::fabs(bin - edge) > 1e-3) return static_cast<float>(a);
   }
   return std::atan2(y, x);
@@ -41,7 +42,7 @@ float binnable_atan2(float y, float x) {
 namespace {
 
 constexpr int kBins = 11;  // per feature, as PCL's FPFH
-typedef float Float4 __attribute__((vector_size(16)));  // GCC and Clang vector extension
+using Float4 = float __attribute__((vector_size(16)));  // GCC and Clang vector extension
 
 // PCL's computePairFeatures (pcl/features/pfh_tools.h) on 4-vectors with w = 0, so that every
 // operation is the one PCL performs. The order of the pair is decided as PCL does by comparing

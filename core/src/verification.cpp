@@ -63,8 +63,10 @@ struct Verifier::Impl {
 Verifier::Verifier(const PointCloud& source, const PointCloud& target, double voxel_size)
     : impl_(std::make_unique<Impl>()) {
   const auto t0 = std::chrono::steady_clock::now();
-  impl_->source = voxel_downsample(source.points, voxel_size, nullptr, false).points;
-  impl_->target = voxel_downsample(target.points, voxel_size, nullptr, false).points;
+  impl_->source =
+      voxel_downsample(source.points, voxel_size, nullptr, /*with_voxel_of=*/false).points;
+  impl_->target =
+      voxel_downsample(target.points, voxel_size, nullptr, /*with_voxel_of=*/false).points;
   impl_->build_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }

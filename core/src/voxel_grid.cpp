@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <numeric>
 #include <string>
 #include <unordered_map>
@@ -18,7 +19,7 @@ namespace {
 constexpr std::uint64_t kEmpty = ~std::uint64_t(0);  // packed keys use 63 bits
 constexpr float kMaxCells = 1048576.0f;  // 2^20 cells per axis, keys of 3 x 21 bits
 // A RadiusGrid's box up to this many cells per point is dense (a bit per cell: 32 bytes per
-// point at most). A KITTI scan's 0.5 m voxels in 1 m cells: about 100.
+// point at most).
 constexpr std::uint64_t kDenseCellsPerPoint = 256;
 
 std::uint64_t hash_key(std::uint64_t k) {
@@ -138,15 +139,17 @@ VoxelDownsample voxel_downsample(const std::vector<Eigen::Vector3f>& points, dou
     return out;
   }
   Eigen::Vector3f lo = point(0), hi = lo;
+  bool finite = lo.allFinite();  // (the min and max pass a NaN over)
   for (std::size_t i = 1; i < n; ++i) {
     lo = lo.cwiseMin(point(i));
     hi = hi.cwiseMax(point(i));
+    finite = finite && point(i).allFinite();
   }
   const float inv = static_cast<float>(1.0 / voxel_size);
   const double reach =
       std::max(lo.cast<double>().cwiseAbs().maxCoeff(), hi.cast<double>().cwiseAbs().maxCoeff()) *
       static_cast<double>(inv);
-  if (!(reach < kMaxIndex))  // also catches NaN and inf coordinates
+  if (!finite || !(reach < kMaxIndex))
     throw InputError("voxel size " + std::to_string(voxel_size) + " m for coordinates up to " +
                      std::to_string(reach * voxel_size) +
                      " m: voxel indices beyond 2^52 (or a non-finite coordinate)");
@@ -201,13 +204,17 @@ RadiusGrid::RadiusGrid(const std::vector<Eigen::Vector3f>& points, double cell)
   if (n == 0) return;
   lo_ = points[0];
   Eigen::Vector3f hi = lo_;
+  bool finite = true;  // (the min and max pass a NaN over)
   for (const auto& p : points) {
     lo_ = lo_.cwiseMin(p);
     hi = hi.cwiseMax(p);
+    finite = finite && p.allFinite();
   }
-  if (!lo_.allFinite() || !hi.allFinite())
+  if (!finite || !lo_.allFinite() || !hi.allFinite())
     throw InputError("radius grid: a coordinate is not finite");
   cell_ = std::max(cell_, (hi - lo_).maxCoeff() / kMaxCells);
+  const float across = (hi - lo_).maxCoeff() / cell_ + 2.0f;  // cells across the cloud
+  slack_ = cell_ * std::max(1e-4f, 8.0f * std::numeric_limits<float>::epsilon() * across);
   std::vector<int> cell_of(n);
   // A box of at most kDenseCellsPerPoint cells per point gets a bit per cell (with a cell of
   // margin on every side, as searches look one cell beyond a point), cells numbered in bit order;

@@ -1,7 +1,7 @@
 #pragma once
 /// \file voxel_grid.hpp
-/// Voxel downsampling that remembers which voxel every input point fell into, and a fixed-radius
-/// neighbour search over points hashed on a grid.
+/// Voxel downsampling that can remember which voxel every input point fell into, and fixed-radius
+/// neighbour searches over points sorted into the cells of a grid.
 
 #include <Eigen/Core>
 #include <algorithm>
@@ -16,7 +16,7 @@ struct VoxelDownsample {
   std::vector<Eigen::Vector3f>
       points;                 ///< one point per occupied voxel: the mean of its points [m]
   std::vector<int> counts;    ///< input points per voxel
-  std::vector<int> voxel_of;  ///< per input point (or per subset entry): its voxel index
+  std::vector<int> voxel_of;  ///< per input point (or subset entry): its voxel; may be empty
 };
 
 /// Downsamples `points` (or only `points[subset[i]]` when `subset` is given) on a grid of
@@ -30,13 +30,14 @@ VoxelDownsample voxel_downsample(const std::vector<Eigen::Vector3f>& points, dou
                                  const std::vector<int>* subset = nullptr,
                                  bool with_voxel_of = true);
 
-/// Fixed-radius neighbour search: the points hashed on cells of a grid at least as coarse as the
-/// search radius, so a search looks at the 27 cells around the query (what a kd-tree's radius
-/// search does with a tree walk). Points are kept relative to their lowest corner in float.
+/// Fixed-radius neighbour search: the points sorted into the cells of a grid at least as coarse as
+/// the search radius, so a search looks at the 27 cells around the query (what a kd-tree's radius
+/// search does with a tree walk). Cells are counted from the cloud's lowest corner.
 class RadiusGrid {
  public:
-  /// Hashes `points` on cells of `cell` [m] (> 0); the cell grows when the cloud is more than
-  /// 2^20 cells wide, which keeps every search correct and only scans more points.
+  /// Sorts `points` into cells of `cell` [m] (> 0); the cell grows when the cloud is more than
+  /// 2^20 cells wide, which keeps every search correct and only scans more points. Throws
+  /// InputError for a non-finite coordinate.
   RadiusGrid(const std::vector<Eigen::Vector3f>& points, double cell);
 
   /// The points strictly closer than `radius` [m] (at most the cell) to `q`, appended to `index`
@@ -65,14 +66,15 @@ class RadiusGrid {
         const Eigen::Vector3f& p = sorted_[static_cast<std::size_t>(i)];
         for (int j = a == b ? i + 1 : start_[static_cast<std::size_t>(b)]; j < b_end; ++j) {
           const float d2 = (sorted_[static_cast<std::size_t>(j)] - p).squaredNorm();
-          if (d2 < r2) f(index_[static_cast<std::size_t>(i)], index_[static_cast<std::size_t>(j)], d2);
+          if (d2 < r2)
+            f(index_[static_cast<std::size_t>(i)], index_[static_cast<std::size_t>(j)], d2);
         }
       }
     };
     // The 13 offsets after (0, 0, 0) in lexicographic order.
-    static constexpr int kForward[13][3] = {{0, 0, 1},  {0, 1, -1}, {0, 1, 0},  {0, 1, 1},  {1, -1, -1},
-                                            {1, -1, 0}, {1, -1, 1}, {1, 0, -1}, {1, 0, 0},  {1, 0, 1},
-                                            {1, 1, -1}, {1, 1, 0},  {1, 1, 1}};
+    static constexpr int kForward[13][3] = {
+        {0, 0, 1},  {0, 1, -1}, {0, 1, 0}, {0, 1, 1},  {1, -1, -1}, {1, -1, 0}, {1, -1, 1},
+        {1, 0, -1}, {1, 0, 0},  {1, 0, 1}, {1, 1, -1}, {1, 1, 0},   {1, 1, 1}};
     constexpr std::uint64_t kAxis = (std::uint64_t(1) << 21) - 1;
     const auto each_cell = [&](std::uint64_t key, int cell) {
       pair_cells(cell, cell);
@@ -102,12 +104,12 @@ class RadiusGrid {
         }
     } else {
       for (std::size_t s = 0; s < slots_.size(); ++s)
-        if (slots_[s] != ~std::uint64_t(0)) each_cell(slots_[s], slot_cell_[s]);
+        if (slots_[s] != kEmptySlot) each_cell(slots_[s], slot_cell_[s]);
     }
   }
 
-  /// True when cells are found through a bit per cell of the cloud's box rather than the hash
-  /// table (a box of at most 256 cells per point).
+  /// True when cells are found through a bit per cell of the cloud's box (with a cell of margin
+  /// on every side) rather than the hash table: a box of at most 256 cells per point, plus 4096.
   bool dense() const { return !occupancy_.empty(); }
 
  private:
@@ -149,13 +151,14 @@ class RadiusGrid {
     const auto range = [&](int cell) {
       f(start_[static_cast<std::size_t>(cell)], start_[static_cast<std::size_t>(cell) + 1]);
     };
-    // gap[a][k]: squared distance along axis a from q to the slab of the cell at offset k - 1.
+    // gap[a][k]: squared distance along axis a from q to the slab of the cell at offset k - 1,
+    // relative to the lowest corner (as cells are assigned), less the slack.
     float gap[3][3];
-    const float slack = 1e-4f * cell_;
     for (int a = 0; a < 3; ++a) {
-      const float low = lo_[a] + static_cast<float>(c[a] - 1) * cell_;  // cells count from 1
-      const float below = std::max(0.0f, q[a] - low - slack);
-      const float above = std::max(0.0f, low + cell_ - q[a] - slack);
+      const float rel = q[a] - lo_[a];
+      const float low = static_cast<float>(c[a] - 1) * cell_;  // cells count from 1
+      const float below = std::max(0.0f, rel - low - slack_);
+      const float above = std::max(0.0f, low + cell_ - rel - slack_);
       gap[a][0] = below * below;
       gap[a][1] = 0.0f;
       gap[a][2] = above * above;
@@ -164,16 +167,18 @@ class RadiusGrid {
       // Queries off the box (clamped to its edge or beyond) see only the axis offsets inside it.
       bool inside[3][3];
       for (int a = 0; a < 3; ++a)
-        for (int k = 0; k < 3; ++k) inside[a][k] = c[a] + static_cast<std::uint64_t>(k) - 1 < dims_[a];
+        for (int k = 0; k < 3; ++k)
+          inside[a][k] = c[a] + static_cast<std::uint64_t>(k) - 1 < dims_[a];
       const std::uint64_t stride_x = dims_[1] * dims_[2], stride_y = dims_[2];
       const auto bit = [&](int x, int y, int z) {
         return (c[0] + static_cast<std::uint64_t>(x) - 1) * stride_x +
                (c[1] + static_cast<std::uint64_t>(y) - 1) * stride_y +
                (c[2] + static_cast<std::uint64_t>(z) - 1);
       };
-      const unsigned z_inside = (inside[2][0] ? 1u : 0u) | (inside[2][1] ? 2u : 0u) |
-                                (inside[2][2] ? 4u : 0u);
-      if (inside[0][1] && inside[1][1] && inside[2][1] && has(bit(1, 1, 1))) range(rank(bit(1, 1, 1)));
+      const unsigned z_inside =
+          (inside[2][0] ? 1u : 0u) | (inside[2][1] ? 2u : 0u) | (inside[2][2] ? 4u : 0u);
+      if (inside[0][1] && inside[1][1] && inside[2][1] && has(bit(1, 1, 1)))
+        range(rank(bit(1, 1, 1)));
       for (int x = 0; x < 3 && z_inside; ++x) {
         if (!inside[0][x]) continue;
         for (int y = 0; y < 3; ++y) {
@@ -184,7 +189,8 @@ class RadiusGrid {
           unsigned occupied = three_bits(b0) & z_inside;
           if (x == 1 && y == 1) occupied &= ~2u;  // the own cell came first
           for (int z = 0; occupied; ++z, occupied >>= 1)
-            if ((occupied & 1u) && gxy + gap[2][z] < bound()) range(rank(b0 + static_cast<std::uint64_t>(z)));
+            if ((occupied & 1u) && gxy + gap[2][z] < bound())
+              range(rank(b0 + static_cast<std::uint64_t>(z)));
         }
       }
       return;
@@ -207,6 +213,9 @@ class RadiusGrid {
   }
 
   float cell_ = 1.0f;
+  // How far a point may sit outside its cell's box by rounding [m]: a cell index is computed to
+  // a few float ulps of itself, so this grows with the number of cells across the cloud.
+  float slack_ = 1e-4f;
   Eigen::Vector3f lo_ = Eigen::Vector3f::Zero();
   std::vector<Eigen::Vector3f> sorted_;  // the points, cell by cell
   std::vector<int> index_;               // input index of sorted_[i]
@@ -217,6 +226,7 @@ class RadiusGrid {
   std::vector<std::uint32_t> rank_;
   std::uint64_t dims_[3] = {0, 0, 0};
   // Otherwise an open-addressing table of cell keys, cells numbered in order of first appearance.
+  static constexpr std::uint64_t kEmptySlot = ~std::uint64_t(0);  // (keys use 63 bits)
   std::vector<std::uint64_t> slots_;
   std::vector<int> slot_cell_;  // the cell of each slot
   std::uint64_t mask_ = 0;
