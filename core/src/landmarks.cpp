@@ -69,17 +69,27 @@ std::vector<std::vector<int>> points_of_classes(const PointCloud& cloud, const L
   return out;
 }
 
-// For each voxel, the input points (indices into the cloud) that fell into it.
-std::vector<std::vector<int>> members_of_voxels(const VoxelDownsample& ds,
-                                                const std::vector<int>& subset) {
-  std::vector<std::vector<int>> members(ds.points.size());
+// For each voxel, the input points (indices into the cloud) that fell into it, ascending: voxel
+// v's are point[start[v], start[v + 1]) (one array, not a vector per voxel).
+struct VoxelMembers {
+  std::vector<int> start, point;
+  const int* begin(std::size_t v) const { return point.data() + start[v]; }
+  const int* end(std::size_t v) const { return point.data() + start[v + 1]; }
+};
+VoxelMembers members_of_voxels(const VoxelDownsample& ds, const std::vector<int>& subset) {
+  VoxelMembers m;
+  m.start.assign(ds.points.size() + 1, 0);
+  for (std::size_t v = 0; v < ds.points.size(); ++v)
+    m.start[v + 1] = m.start[v] + ds.counts[v];
+  m.point.resize(subset.size());
+  std::vector<int> fill(m.start.begin(), m.start.end() - 1);
   for (std::size_t i = 0; i < subset.size(); ++i)
-    members[static_cast<std::size_t>(ds.voxel_of[i])].push_back(subset[i]);
-  return members;
+    m.point[static_cast<std::size_t>(fill[static_cast<std::size_t>(ds.voxel_of[i])]++)] = subset[i];
+  return m;
 }
 
 void add_clusters(int class_index, const ClassParams& p, const VoxelDownsample& ds,
-                  const std::vector<std::vector<int>>& members, LandmarkSet& out) {
+                  const VoxelMembers& members, LandmarkSet& out) {
   check_radius_work(ds.points, p.cluster_tolerance,
                     "landmarks.classes[" + std::to_string(class_index) + "].cluster_tolerance",
                     "class '" + p.name + "'");
@@ -99,10 +109,9 @@ void add_clusters(int class_index, const ClassParams& p, const VoxelDownsample& 
     }
     lm.centroid = mean;
     lm.covariance = cov / static_cast<double>(c.size());
-    for (int v : c) {
-      const auto& m = members[static_cast<std::size_t>(v)];
-      lm.point_indices.insert(lm.point_indices.end(), m.begin(), m.end());
-    }
+    for (int v : c)
+      lm.point_indices.insert(lm.point_indices.end(), members.begin(static_cast<std::size_t>(v)),
+                              members.end(static_cast<std::size_t>(v)));
     std::sort(lm.point_indices.begin(), lm.point_indices.end());
     lm.point_count = lm.point_indices.size();
     out.landmarks.push_back(std::move(lm));
@@ -140,7 +149,7 @@ std::vector<int> spread_keypoints(const VoxelDownsample& ds, double voxel_size, 
 // FPFH keypoints: normals and descriptors see every voxel of the class (the configured grid),
 // descriptors are computed only at a budget of evenly spread keypoints.
 void add_keypoints(int class_index, const ClassParams& p, const VoxelDownsample& ds,
-                   const std::vector<std::vector<int>>& members, LandmarkSet& out) {
+                   const VoxelMembers& members, LandmarkSet& out) {
   check_radius_work(ds.points, p.feature_radius,
                     "landmarks.classes[" + std::to_string(class_index) + "].feature_radius",
                     "class '" + p.name + "'");
@@ -160,7 +169,7 @@ void add_keypoints(int class_index, const ClassParams& p, const VoxelDownsample&
     lm.class_index = class_index;
     lm.kind = LandmarkKind::keypoint;
     lm.centroid = ds.points[v].cast<double>();
-    lm.point_indices = members[v];
+    lm.point_indices.assign(members.begin(v), members.end(v));
     lm.point_count = lm.point_indices.size();
     out.landmarks.push_back(std::move(lm));
     out.descriptors.emplace_back(h, h + 33);
