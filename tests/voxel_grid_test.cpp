@@ -15,6 +15,20 @@
 
 using namespace pagor;
 
+namespace {
+
+// n points drawn from u on each axis, then scaled per axis (a flat cloud, as a scan is).
+template <class Rng>
+std::vector<Eigen::Vector3f> random_points(Rng& rng, std::uniform_real_distribution<float>& u,
+                                           int n, const Eigen::Vector3f& scale) {
+  std::vector<Eigen::Vector3f> out;
+  for (int i = 0; i < n; ++i)
+    out.push_back(draw3(u, rng).template cast<float>().cwiseProduct(scale));
+  return out;
+}
+
+}  // namespace
+
 TEST_CASE("voxel downsampling is the same 300 km from the origin") {
   std::mt19937 rng(3);
   std::uniform_real_distribution<float> u(0.0f, 80.0f);
@@ -108,9 +122,7 @@ TEST_CASE("the grid's nearest neighbour agrees with a linear scan, off the grid 
   // nearest point strictly within the radius, for queries inside, beside and far off the grid.
   std::mt19937_64 rng(23);
   std::uniform_real_distribution<float> u(-20.f, 20.f);
-  std::vector<Eigen::Vector3f> pts;
-  for (int i = 0; i < 4000; ++i)
-    pts.push_back(draw3(u, rng).cast<float>().cwiseProduct(Eigen::Vector3f(1, 1, 0.1f)));
+  std::vector<Eigen::Vector3f> pts = random_points(rng, u, 4000, Eigen::Vector3f(1, 1, 0.1f));
   // Points on cell boundaries of a 1 m grid anchored at the lowest point.
   for (int i = 0; i < 200; ++i) pts.emplace_back(std::round(u(rng)), std::round(u(rng)), 0.0f);
   pts.push_back(pts.front());  // a duplicate
@@ -150,9 +162,7 @@ TEST_CASE("the grid's dense box and its hash table give the same neighbours in t
   // input order, so that sums over neighbours (normals, FPFH) do not depend on the choice.
   std::mt19937_64 rng(29);
   std::uniform_real_distribution<float> u(-15.f, 15.f);
-  std::vector<Eigen::Vector3f> pts;
-  for (int i = 0; i < 3000; ++i)
-    pts.push_back(draw3(u, rng).cast<float>().cwiseProduct(Eigen::Vector3f(1, 1, 0.2f)));
+  std::vector<Eigen::Vector3f> pts = random_points(rng, u, 3000, Eigen::Vector3f(1, 1, 0.2f));
   std::vector<Eigen::Vector3f> sparse = pts;
   sparse.emplace_back(4000.0f, 6000.0f, 300.0f);  // above every point: the same cells
   for (float cell : {0.5f, 1.0f, 3.0f}) {
@@ -177,9 +187,7 @@ TEST_CASE("the grid's dense box and its hash table give the same neighbours in t
 TEST_CASE("the grid's pairs within a radius are a brute-force search's, each once") {
   std::mt19937_64 rng(31);
   std::uniform_real_distribution<float> u(-6.f, 6.f);
-  std::vector<Eigen::Vector3f> pts;
-  for (int i = 0; i < 1500; ++i)
-    pts.push_back(draw3(u, rng).cast<float>().cwiseProduct(Eigen::Vector3f(1, 1, 0.3f)));
+  std::vector<Eigen::Vector3f> pts = random_points(rng, u, 1500, Eigen::Vector3f(1, 1, 0.3f));
   pts.push_back(pts[3]);  // a duplicate: a pair at distance 0
   std::vector<Eigen::Vector3f> sparse = pts;
   sparse.emplace_back(3000.0f, 3000.0f, 3000.0f);  // far from all: the hash table

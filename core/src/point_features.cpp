@@ -14,6 +14,18 @@
 #include "pagor/voxel_grid.hpp"
 
 namespace pagor::detail {
+namespace {
+
+constexpr int kBins = 11;  // per feature, as PCL's FPFH
+
+// Where PCL puts the angle feature among the bins, before its floor: in [0, kBins] for an angle
+// in [-pi, pi] (binnable_atan2 and bins_of below must agree on it).
+double angle_bin_position(double angle) {
+  const float d_pi = 1.0f / (2.0f * static_cast<float>(M_PI));
+  return kBins * ((angle + M_PI) * d_pi);
+}
+
+}  // namespace
 
 float binnable_atan2(float y, float x) {
   // atan on [0, 1] by the odd polynomial of Abramowitz and Stegun 4.4.47 (error below 1e-5 rad),
@@ -30,9 +42,9 @@ float binnable_atan2(float y, float x) {
   if (y < 0) a = -a;
   // Its position in FPFH's 11 bins, as PCL computes it (bins_of below); a bin edge closer than
   // 1e-3 of a bin (5.7e-4 rad, far above the polynomial's error) is decided by atan2 itself.
-  const double bin = 11 * ((a + M_PI) * (1.0f / (2.0f * static_cast<float>(M_PI))));
+  const double bin = angle_bin_position(a);
   // (false for NaN); edge: the nearest
-  if (bin > -0.5 && bin < 11.5) {
+  if (bin > -0.5 && bin < kBins + 0.5) {
     const double edge = static_cast<double>(static_cast<int>(bin + 0.5));
     if (std::fabs(bin - edge) > 1e-3) return static_cast<float>(a);
   }
@@ -41,7 +53,6 @@ float binnable_atan2(float y, float x) {
 
 namespace {
 
-constexpr int kBins = 11;  // per feature, as PCL's FPFH
 using Float4 = float __attribute__((vector_size(16)));  // GCC and Clang vector extension
 
 // PCL's computePairFeatures (pcl/features/pfh_tools.h) on 4-vectors with w = 0, so that every
@@ -99,8 +110,7 @@ int bin_of(double x) {
   return x < kBins ? static_cast<int>(x) : kBins - 1;  // truncation is floor here
 }
 std::array<int, 3> bins_of(const PairFeatures& f) {
-  const float d_pi = 1.0f / (2.0f * static_cast<float>(M_PI));
-  return {bin_of(kBins * ((f.f1 + M_PI) * d_pi)), kBins + bin_of(kBins * ((f.f2 + 1.0) * 0.5)),
+  return {bin_of(angle_bin_position(f.f1)), kBins + bin_of(kBins * ((f.f2 + 1.0) * 0.5)),
           2 * kBins + bin_of(kBins * ((f.f3 + 1.0) * 0.5))};
 }
 

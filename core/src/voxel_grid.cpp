@@ -28,6 +28,27 @@ std::uint64_t hash_key(std::uint64_t k) {
   return k ^ (k >> 29);
 }
 
+// The slot of `key` in a table of keys (linear probing), or the empty slot where it would go.
+std::size_t probe(const std::vector<std::uint64_t>& keys, std::size_t mask, std::uint64_t key) {
+  std::size_t s = hash_key(key) & mask;
+  while (keys[s] != kEmpty && keys[s] != key) s = (s + 1) & mask;
+  return s;
+}
+
+// The bounding box of point(0 .. n-1) (n >= 1); false when a coordinate is not finite (the min
+// and max alone pass a NaN over).
+template <class Point>
+bool bounding_box(std::size_t n, const Point& point, Eigen::Vector3f& lo, Eigen::Vector3f& hi) {
+  lo = hi = point(0);
+  bool finite = true;
+  for (std::size_t i = 0; i < n; ++i) {
+    lo = lo.cwiseMin(point(i));
+    hi = hi.cwiseMax(point(i));
+    finite = finite && point(i).allFinite();
+  }
+  return finite;
+}
+
 // A point's voxel is floor(coordinate / voxel size) per axis on the global lattice, computed in
 // float as always, but keyed relative to the lowest voxel of the points' bounding box: up to 2^21
 // voxels per axis the three relative indices are packed into one 63-bit key, wider clouds (a
@@ -79,16 +100,10 @@ void bin_packed(std::size_t n, const Point& point, const MakeKey& make_key, Voxe
   std::size_t mask = 1023;
   std::vector<std::uint64_t> keys(mask + 1, kEmpty);
   std::vector<int> voxel(mask + 1);
-  // The key's slot, or the free slot where it goes.
-  const auto probe = [&](std::uint64_t key) {
-    std::size_t s = hash_key(key) & mask;
-    while (keys[s] != kEmpty && keys[s] != key) s = (s + 1) & mask;
-    return s;
-  };
   std::vector<Eigen::Vector3d> sums;
   for (std::size_t i = 0; i < n; ++i) {
     const std::uint64_t key = make_key(point(i));
-    std::size_t s = probe(key);
+    std::size_t s = probe(keys, mask, key);
     if (keys[s] == kEmpty) {
       if (2 * (sums.size() + 1) > mask + 1) {  // grow, then find the key's new slot
         const std::vector<std::uint64_t> old_keys = std::move(keys);
@@ -98,11 +113,11 @@ void bin_packed(std::size_t n, const Point& point, const MakeKey& make_key, Voxe
         voxel.assign(mask + 1, 0);
         for (std::size_t o = 0; o < old_keys.size(); ++o) {
           if (old_keys[o] == kEmpty) continue;
-          const std::size_t t = probe(old_keys[o]);
+          const std::size_t t = probe(keys, mask, old_keys[o]);
           keys[t] = old_keys[o];
           voxel[t] = old_voxel[o];
         }
-        s = probe(key);
+        s = probe(keys, mask, key);
       }
       keys[s] = key;
       voxel[s] = static_cast<int>(sums.size());
@@ -138,13 +153,8 @@ VoxelDownsample voxel_downsample(const std::vector<Eigen::Vector3f>& points, dou
     }
     return out;
   }
-  Eigen::Vector3f lo = point(0), hi = lo;
-  bool finite = lo.allFinite();  // (the min and max pass a NaN over)
-  for (std::size_t i = 1; i < n; ++i) {
-    lo = lo.cwiseMin(point(i));
-    hi = hi.cwiseMax(point(i));
-    finite = finite && point(i).allFinite();
-  }
+  Eigen::Vector3f lo, hi;
+  const bool finite = bounding_box(n, point, lo, hi);
   const float inv = static_cast<float>(1.0 / voxel_size);
   const double reach =
       std::max(lo.cast<double>().cwiseAbs().maxCoeff(), hi.cast<double>().cwiseAbs().maxCoeff()) *
@@ -180,21 +190,18 @@ VoxelDownsample voxel_downsample(const std::vector<Eigen::Vector3f>& points, dou
   return out;
 }
 
-// Cells are numbered from 1 so that the neighbours of the lowest cell have valid keys.
-std::uint64_t RadiusGrid::key_of(const Eigen::Vector3f& p) const {
+RadiusGrid::Cell RadiusGrid::cell_of(const Eigen::Vector3f& p) const {
   const auto axis = [&](int a) {
     // floor, with queries off the grid clamped (truncation is floor once clamped to >= 0)
     const float c = (p[a] - lo_[a]) / cell_;
     return static_cast<std::uint64_t>(std::min(std::max(0.0f, c), kMaxCells + 1.0f)) + 1;
   };
-  return (axis(0) << 42) | (axis(1) << 21) | axis(2);
+  return {axis(0), axis(1), axis(2)};
 }
 
 int RadiusGrid::find(std::uint64_t key) const {
-  for (std::uint64_t s = hash_key(key) & mask_;; s = (s + 1) & mask_) {
-    if (slots_[s] == key) return slot_cell_[s];
-    if (slots_[s] == kEmpty) return -1;
-  }
+  const std::size_t s = probe(slots_, mask_, key);
+  return slots_[s] == key ? slot_cell_[s] : -1;
 }
 
 RadiusGrid::RadiusGrid(const std::vector<Eigen::Vector3f>& points, double cell)
@@ -202,20 +209,13 @@ RadiusGrid::RadiusGrid(const std::vector<Eigen::Vector3f>& points, double cell)
   if (!(cell > 0)) throw InputError("radius grid: cell size must be > 0");
   const std::size_t n = points.size();
   if (n == 0) return;
-  lo_ = points[0];
-  Eigen::Vector3f hi = lo_;
-  bool finite = true;  // (the min and max pass a NaN over)
-  for (const auto& p : points) {
-    lo_ = lo_.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-    finite = finite && p.allFinite();
-  }
-  if (!finite || !lo_.allFinite() || !hi.allFinite())
-    throw InputError("radius grid: a coordinate is not finite");
+  const auto point = [&](std::size_t i) -> const Eigen::Vector3f& { return points[i]; };
+  Eigen::Vector3f hi;
+  if (!bounding_box(n, point, lo_, hi)) throw InputError("radius grid: a coordinate is not finite");
   cell_ = std::max(cell_, (hi - lo_).maxCoeff() / kMaxCells);
   const float across = (hi - lo_).maxCoeff() / cell_ + 2.0f;  // cells across the cloud
   slack_ = cell_ * std::max(1e-4f, 8.0f * std::numeric_limits<float>::epsilon() * across);
-  std::vector<int> cell_of(n);
+  std::vector<int> number(n);  // each point's cell number
   // A box of at most kDenseCellsPerPoint cells per point gets a bit per cell (with a cell of
   // margin on every side, as searches look one cell beyond a point), cells numbered in bit order;
   // a larger (sparse or elongated) one the hash table, cells numbered in order of first
@@ -226,14 +226,12 @@ RadiusGrid::RadiusGrid(const std::vector<Eigen::Vector3f>& points, double cell)
     dims_[a] = static_cast<std::uint64_t>(std::floor((hi[a] - lo_[a]) / cell_)) + 3;
     bits *= dims_[a];
   }
-  constexpr std::uint64_t kAxis = (std::uint64_t(1) << 21) - 1;
   if (bits <= kDenseCellsPerPoint * n + 4096) {
     occupancy_.assign((bits + 63) / 64, 0);
-    std::vector<std::uint64_t> bit_of(n);
+    std::vector<std::uint64_t> bit_at(n);  // each point's bit
     for (std::size_t i = 0; i < n; ++i) {
-      const std::uint64_t key = key_of(points[i]);
-      bit_of[i] = ((key >> 42) * dims_[1] + ((key >> 21) & kAxis)) * dims_[2] + (key & kAxis);
-      occupancy_[bit_of[i] >> 6] |= std::uint64_t(1) << (bit_of[i] & 63);
+      bit_at[i] = bit_of(cell_of(points[i]));
+      occupancy_[bit_at[i] >> 6] |= std::uint64_t(1) << (bit_at[i] & 63);
     }
     rank_.resize(occupancy_.size());
     std::uint32_t cells = 0;
@@ -243,8 +241,8 @@ RadiusGrid::RadiusGrid(const std::vector<Eigen::Vector3f>& points, double cell)
     }
     start_.assign(cells, 0);
     for (std::size_t i = 0; i < n; ++i) {
-      cell_of[i] = rank(bit_of[i]);
-      ++start_[static_cast<std::size_t>(cell_of[i])];
+      number[i] = rank(bit_at[i]);
+      ++start_[static_cast<std::size_t>(number[i])];
     }
   } else {
     std::size_t capacity = 16;
@@ -253,16 +251,15 @@ RadiusGrid::RadiusGrid(const std::vector<Eigen::Vector3f>& points, double cell)
     slots_.assign(capacity, kEmpty);
     slot_cell_.assign(capacity, -1);
     for (std::size_t i = 0; i < n; ++i) {
-      const std::uint64_t key = key_of(points[i]);
-      std::uint64_t s = hash_key(key) & mask_;
-      while (slots_[s] != kEmpty && slots_[s] != key) s = (s + 1) & mask_;
+      const std::uint64_t key = pack(cell_of(points[i]));
+      const std::size_t s = probe(slots_, mask_, key);
       if (slots_[s] == kEmpty) {
         slots_[s] = key;
         slot_cell_[s] = static_cast<int>(start_.size());
         start_.push_back(0);
       }
-      cell_of[i] = slot_cell_[s];
-      ++start_[static_cast<std::size_t>(cell_of[i])];
+      number[i] = slot_cell_[s];
+      ++start_[static_cast<std::size_t>(number[i])];
     }
   }
   int total = 0;  // counts -> starts
@@ -276,7 +273,7 @@ RadiusGrid::RadiusGrid(const std::vector<Eigen::Vector3f>& points, double cell)
   sorted_.resize(n);
   index_.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
-    const auto at = static_cast<std::size_t>(fill[static_cast<std::size_t>(cell_of[i])]++);
+    const auto at = static_cast<std::size_t>(fill[static_cast<std::size_t>(number[i])]++);
     sorted_[at] = points[i];
     index_[at] = static_cast<int>(i);
   }

@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -75,21 +76,12 @@ class RadiusGrid {
     static constexpr int kForward[13][3] = {
         {0, 0, 1},  {0, 1, -1}, {0, 1, 0}, {0, 1, 1},  {1, -1, -1}, {1, -1, 0}, {1, -1, 1},
         {1, 0, -1}, {1, 0, 0},  {1, 0, 1}, {1, 1, -1}, {1, 1, 0},   {1, 1, 1}};
-    constexpr std::uint64_t kAxis = (std::uint64_t(1) << 21) - 1;
-    const auto each_cell = [&](std::uint64_t key, int cell) {
+    const auto each_cell = [&](const Cell& c, int cell) {  // (all coordinates >= 1)
       pair_cells(cell, cell);
-      const std::uint64_t c[3] = {key >> 42, (key >> 21) & kAxis, key & kAxis};  // all >= 1
       for (const auto& o : kForward) {
-        const std::uint64_t n[3] = {c[0] + static_cast<std::uint64_t>(o[0]),
-                                    c[1] + static_cast<std::uint64_t>(o[1]),
-                                    c[2] + static_cast<std::uint64_t>(o[2])};
-        int other = -1;
-        if (dense()) {
-          const std::uint64_t b = (n[0] * dims_[1] + n[1]) * dims_[2] + n[2];
-          if (n[0] < dims_[0] && n[1] < dims_[1] && n[2] < dims_[2] && has(b)) other = rank(b);
-        } else {
-          other = find((n[0] << 42) | (n[1] << 21) | n[2]);
-        }
+        const int other = number_of({c[0] + static_cast<std::uint64_t>(o[0]),
+                                     c[1] + static_cast<std::uint64_t>(o[1]),
+                                     c[2] + static_cast<std::uint64_t>(o[2])});
         if (other >= 0) pair_cells(cell, other);
       }
     };
@@ -98,13 +90,11 @@ class RadiusGrid {
       for (std::size_t w = 0; w < occupancy_.size(); ++w)
         for (std::uint64_t bits = occupancy_[w]; bits; bits &= bits - 1) {
           const std::uint64_t b = w * 64 + static_cast<std::uint64_t>(__builtin_ctzll(bits));
-          const std::uint64_t z = b % dims_[2], y = (b / dims_[2]) % dims_[1];
-          const std::uint64_t x = b / (dims_[1] * dims_[2]);
-          each_cell((x << 42) | (y << 21) | z, cell++);
+          each_cell({b / (dims_[1] * dims_[2]), (b / dims_[2]) % dims_[1], b % dims_[2]}, cell++);
         }
     } else {
       for (std::size_t s = 0; s < slots_.size(); ++s)
-        if (slots_[s] != kEmptySlot) each_cell(slots_[s], slot_cell_[s]);
+        if (slots_[s] != kEmptySlot) each_cell(unpack(slots_[s]), slot_cell_[s]);
     }
   }
 
@@ -113,8 +103,24 @@ class RadiusGrid {
   bool dense() const { return !occupancy_.empty(); }
 
  private:
-  std::uint64_t key_of(const Eigen::Vector3f& p) const;
-  int find(std::uint64_t key) const;  // cell number, or -1
+  // A cell: its index along each axis, counted from 1 at the cloud's lowest corner (so that the
+  // neighbours of the lowest cell are cells too). The hash table keys a cell by its three indices
+  // packed in 21 bits each; the dense box numbers its bits x-major.
+  using Cell = std::array<std::uint64_t, 3>;
+  Cell cell_of(const Eigen::Vector3f& p) const;  // (queries off the grid clamped to it)
+  static std::uint64_t pack(const Cell& c) { return (c[0] << 42) | (c[1] << 21) | c[2]; }
+  static Cell unpack(std::uint64_t key) {
+    constexpr std::uint64_t kAxis = (std::uint64_t(1) << 21) - 1;
+    return {key >> 42, (key >> 21) & kAxis, key & kAxis};
+  }
+  std::uint64_t bit_of(const Cell& c) const { return (c[0] * dims_[1] + c[1]) * dims_[2] + c[2]; }
+  int find(std::uint64_t key) const;  // cell number in the hash table, or -1
+  // Cell number of cell c, or -1 when it holds no point (or lies off the dense box).
+  int number_of(const Cell& c) const {
+    if (!dense()) return find(pack(c));
+    if (c[0] >= dims_[0] || c[1] >= dims_[1] || c[2] >= dims_[2] || !has(bit_of(c))) return -1;
+    return rank(bit_of(c));
+  }
   // Cell number of bit `b` of the dense box (a set bit): the set bits before it.
   int rank(std::uint64_t b) const {
     const std::uint64_t below = occupancy_[b >> 6] & ((std::uint64_t(1) << (b & 63)) - 1);
@@ -145,9 +151,7 @@ class RadiusGrid {
   template <class Bound, class F>
   void for_cells_near(const Eigen::Vector3f& q, const Bound& bound, F&& f) const {
     if (sorted_.empty()) return;
-    const std::uint64_t center = key_of(q);
-    constexpr std::uint64_t kAxis = (std::uint64_t(1) << 21) - 1;
-    const std::uint64_t c[3] = {center >> 42, (center >> 21) & kAxis, center & kAxis};
+    const Cell c = cell_of(q);
     const auto range = [&](int cell) {
       f(start_[static_cast<std::size_t>(cell)], start_[static_cast<std::size_t>(cell) + 1]);
     };
@@ -169,11 +173,10 @@ class RadiusGrid {
       for (int a = 0; a < 3; ++a)
         for (int k = 0; k < 3; ++k)
           inside[a][k] = c[a] + static_cast<std::uint64_t>(k) - 1 < dims_[a];
-      const std::uint64_t stride_x = dims_[1] * dims_[2], stride_y = dims_[2];
       const auto bit = [&](int x, int y, int z) {
-        return (c[0] + static_cast<std::uint64_t>(x) - 1) * stride_x +
-               (c[1] + static_cast<std::uint64_t>(y) - 1) * stride_y +
-               (c[2] + static_cast<std::uint64_t>(z) - 1);
+        return bit_of({c[0] + static_cast<std::uint64_t>(x) - 1,
+                       c[1] + static_cast<std::uint64_t>(y) - 1,
+                       c[2] + static_cast<std::uint64_t>(z) - 1});
       };
       const unsigned z_inside =
           (inside[2][0] ? 1u : 0u) | (inside[2][1] ? 2u : 0u) | (inside[2][2] ? 4u : 0u);
@@ -195,20 +198,20 @@ class RadiusGrid {
       }
       return;
     }
-    const auto visit = [&](std::uint64_t key) {
-      const int cell = find(key);
+    const auto visit = [&](const Cell& at) {
+      const int cell = find(pack(at));
       if (cell >= 0) range(cell);
     };
-    visit(center);
+    visit(c);
     for (int x = 0; x < 3; ++x)
       for (int y = 0; y < 3; ++y) {
         const float gxy = gap[0][x] + gap[1][y];
         if (gxy >= bound()) continue;
         for (int z = 0; z < 3; ++z)
           if (!(x == 1 && y == 1 && z == 1) && gxy + gap[2][z] < bound())
-            visit(((c[0] + static_cast<std::uint64_t>(x) - 1) << 42) |
-                  ((c[1] + static_cast<std::uint64_t>(y) - 1) << 21) |
-                  (c[2] + static_cast<std::uint64_t>(z) - 1));
+            visit({c[0] + static_cast<std::uint64_t>(x) - 1,
+                   c[1] + static_cast<std::uint64_t>(y) - 1,
+                   c[2] + static_cast<std::uint64_t>(z) - 1});
       }
   }
 
