@@ -1,5 +1,5 @@
 #include "association_problem.hpp"
-#include "pagor/random_draw.hpp"
+#include "util/random_draw.hpp"
 
 #include <Eigen/Geometry>
 #include <algorithm>

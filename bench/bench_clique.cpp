@@ -7,7 +7,7 @@
 #include "bench_sections.hpp"
 #include "bench_util.hpp"
 #include "pagor/pipeline.hpp"
-#include "pagor/pyramid_graph.hpp"
+#include "pagor/graph/pyramid_graph.hpp"
 
 namespace pagor::bench {
 namespace {

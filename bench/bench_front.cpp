@@ -10,10 +10,10 @@
 
 #include "bench_sections.hpp"
 #include "bench_util.hpp"
-#include "pagor/correspondences.hpp"
-#include "pagor/io.hpp"
-#include "pagor/kitti.hpp"
-#include "pagor/landmarks.hpp"
+#include "pagor/front/correspondences.hpp"
+#include "pagor/io/clouds.hpp"
+#include "pagor/io/kitti.hpp"
+#include "pagor/front/landmarks.hpp"
 
 namespace pagor::bench {
 namespace {

@@ -9,12 +9,12 @@
 
 #include "bench_sections.hpp"
 #include "bench_util.hpp"
-#include "pagor/gnc.hpp"
-#include "pagor/kitti.hpp"
+#include "pagor/pose/gnc.hpp"
+#include "pagor/io/kitti.hpp"
 #include "pagor/pipeline.hpp"
-#include "pagor/pyramid_graph.hpp"
-#include "pagor/verification.hpp"
-#include "pagor/random_draw.hpp"
+#include "pagor/graph/pyramid_graph.hpp"
+#include "pagor/verify/verification.hpp"
+#include "util/random_draw.hpp"
 
 namespace pagor::bench {
 

@@ -13,9 +13,9 @@
 #include <string>
 #include <vector>
 
-#include "bench_worker.hpp"
+#include "runners/bench_worker.hpp"
 #include "pagor/config.hpp"
-#include "pagor/pair_set.hpp"
+#include "pagor/sets/pair_set.hpp"
 
 using namespace pagor;
 

@@ -10,8 +10,8 @@
 #include <fstream>
 #include <random>
 
-#include "pagor/kitti.hpp"
-#include "pagor/random_draw.hpp"
+#include "pagor/io/kitti.hpp"
+#include "util/random_draw.hpp"
 
 namespace pagor::bench {
 

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "pagor/densest_clique.hpp"
-#include "pagor/io.hpp"
+#include "pagor/graph/densest_clique.hpp"
+#include "pagor/io/clouds.hpp"
 #include "pagor/types.hpp"
 
 namespace pagor::bench {

@@ -4,7 +4,7 @@
 #include <string_view>
 
 #include "pagor/errors.hpp"
-#include "pagor/floor_plan.hpp"
+#include "pagor/indoor/floor_plan.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);

@@ -10,8 +10,8 @@
 #include <string>
 
 #include "pagor/errors.hpp"
-#include "pagor/io.hpp"
-#include "pagor/kitti.hpp"
+#include "pagor/io/clouds.hpp"
+#include "pagor/io/kitti.hpp"
 
 namespace {
 

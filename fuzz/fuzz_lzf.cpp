@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "pagor/lzf.hpp"
+#include "io/lzf.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size < 2) return 0;

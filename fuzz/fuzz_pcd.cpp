@@ -5,7 +5,7 @@
 #include <string_view>
 
 #include "pagor/errors.hpp"
-#include "pagor/pcd_reader.hpp"
+#include "io/pcd_reader.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   try {

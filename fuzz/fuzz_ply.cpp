@@ -4,7 +4,7 @@
 #include <string_view>
 
 #include "pagor/errors.hpp"
-#include "pagor/ply_reader.hpp"
+#include "io/ply_reader.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   try {

@@ -2,7 +2,7 @@
 
 #include "pagor/config.hpp"
 #include "pagor/errors.hpp"
-#include "test_util.hpp"
+#include "support/test_util.hpp"
 
 using namespace pagor;
 

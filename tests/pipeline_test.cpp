@@ -4,7 +4,7 @@
 #include "pagor/errors.hpp"
 #include "pagor/pipeline.hpp"
 #include "pagor/report.hpp"
-#include "pagor/synthetic.hpp"
+#include "pagor/sets/synthetic.hpp"
 
 using namespace pagor;
 

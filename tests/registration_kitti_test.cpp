@@ -3,11 +3,11 @@
 #include <cmath>
 #include <tuple>
 
-#include "pagor/evaluation.hpp"
-#include "pagor/kitti.hpp"
+#include "pagor/verify/evaluation.hpp"
+#include "pagor/io/kitti.hpp"
 #include "pagor/pipeline.hpp"
-#include "pagor/refinement.hpp"
-#include "test_util.hpp"
+#include "pagor/pose/refinement.hpp"
+#include "support/test_util.hpp"
 
 using namespace pagor;
 

@@ -4,8 +4,8 @@
 
 #include <catch2/catch.hpp>
 
-#include "pagor/benchmark.hpp"
-#include "pagor/pair_set.hpp"
+#include "pagor/sets/benchmark.hpp"
+#include "pagor/sets/pair_set.hpp"
 
 using namespace pagor;
 

@@ -7,7 +7,7 @@
 
 #include "command.hpp"
 #include "pagor/errors.hpp"
-#include "pagor/threshold_comparison.hpp"
+#include "pagor/sets/threshold_comparison.hpp"
 
 namespace pagor::cli {
 

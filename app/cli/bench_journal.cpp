@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "pagor/errors.hpp"
-#include "pagor/json_input.hpp"
+#include "io/json_input.hpp"
 
 namespace pagor::cli {
 namespace {

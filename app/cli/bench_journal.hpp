@@ -12,7 +12,7 @@
 #include <string>
 #include <utility>
 
-#include "pagor/atomic_file.hpp"
+#include "pagor/io/atomic_file.hpp"
 
 namespace pagor::cli {
 

@@ -12,7 +12,7 @@
 
 #include "bench_journal.hpp"
 #include "command.hpp"
-#include "pagor/benchmark.hpp"
+#include "pagor/sets/benchmark.hpp"
 #include "pagor/errors.hpp"
 
 namespace pagor::cli {

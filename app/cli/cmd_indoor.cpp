@@ -6,7 +6,7 @@
 
 #include "command.hpp"
 #include "pagor/errors.hpp"
-#include "pagor/indoor_synthetic.hpp"
+#include "pagor/indoor/indoor_synthetic.hpp"
 
 namespace pagor::cli {
 

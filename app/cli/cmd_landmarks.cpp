@@ -6,7 +6,7 @@
 
 #include "command.hpp"
 #include "pagor/errors.hpp"
-#include "pagor/landmarks.hpp"
+#include "pagor/front/landmarks.hpp"
 
 namespace pagor::cli {
 namespace {

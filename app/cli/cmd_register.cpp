@@ -7,9 +7,9 @@
 #include <nlohmann/json.hpp>
 
 #include "command.hpp"
-#include "pagor/diagnosis.hpp"
+#include "pagor/verify/diagnosis.hpp"
 #include "pagor/errors.hpp"
-#include "pagor/evaluation.hpp"
+#include "pagor/verify/evaluation.hpp"
 #include "pagor/pipeline.hpp"
 #include "pagor/report.hpp"
 

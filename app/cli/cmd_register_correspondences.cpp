@@ -9,12 +9,12 @@
 #include <optional>
 
 #include "command.hpp"
-#include "pagor/correspondence_file.hpp"
-#include "pagor/densest_clique.hpp"
-#include "pagor/evaluation.hpp"
-#include "pagor/gnc.hpp"
-#include "pagor/pyramid_graph.hpp"
-#include "pagor/verification.hpp"
+#include "pagor/io/correspondence_file.hpp"
+#include "pagor/graph/densest_clique.hpp"
+#include "pagor/verify/evaluation.hpp"
+#include "pagor/pose/gnc.hpp"
+#include "pagor/graph/pyramid_graph.hpp"
+#include "pagor/verify/verification.hpp"
 
 namespace pagor::cli {
 namespace {

@@ -6,12 +6,12 @@
 #include <sstream>
 
 #include "command.hpp"
-#include "pagor/atomic_file.hpp"
+#include "pagor/io/atomic_file.hpp"
 #include "pagor/errors.hpp"
-#include "pagor/sweep.hpp"
+#include "pagor/sets/sweep.hpp"
 #ifdef PAGOR_CLI_PLOT
-#include "bench_plots.hpp"
-#include "plot_export.hpp"
+#include "widgets/bench_plots.hpp"
+#include "widgets/plot_export.hpp"
 #endif
 
 namespace pagor::cli {

@@ -9,8 +9,8 @@
 #include "common/args.hpp"
 #include "common/pair_args.hpp"
 #include "pagor/config.hpp"
-#include "pagor/dataset.hpp"
-#include "pagor/pair_set.hpp"
+#include "pagor/io/dataset.hpp"
+#include "pagor/sets/pair_set.hpp"
 
 namespace pagor::cli {
 

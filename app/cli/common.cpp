@@ -3,10 +3,10 @@
 #include <iostream>
 
 #include "command.hpp"
-#include "pagor/atomic_file.hpp"
+#include "pagor/io/atomic_file.hpp"
 #include "pagor/errors.hpp"
-#include "pagor/kitti.hpp"
-#include "pagor/synthetic.hpp"
+#include "pagor/io/kitti.hpp"
+#include "pagor/sets/synthetic.hpp"
 
 namespace pagor::cli {
 

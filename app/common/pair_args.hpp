@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "common/args.hpp"
-#include "pagor/dataset.hpp"
+#include "pagor/io/dataset.hpp"
 
 namespace pagor::cli {
 

@@ -13,9 +13,9 @@
 
 #include "common/args.hpp"
 #include "common/pair_args.hpp"
-#include "headless.hpp"
+#include "render/headless.hpp"
 #include "pagor/errors.hpp"
-#include "pagor/kitti.hpp"
+#include "pagor/io/kitti.hpp"
 #include "studio.hpp"
 
 namespace pagor::studio {

@@ -10,13 +10,13 @@
 #include <cstdio>
 #include <vector>
 
-#include "benchmark_view.hpp"
-#include "pagor/atomic_file.hpp"
+#include "panels/benchmark_view.hpp"
+#include "pagor/io/atomic_file.hpp"
 #include "pagor/errors.hpp"
-#include "panels.hpp"
-#include "plot_export.hpp"
-#include "resources.hpp"
-#include "widgets.hpp"
+#include "panels/panels.hpp"
+#include "widgets/plot_export.hpp"
+#include "render/resources.hpp"
+#include "widgets/widgets.hpp"
 
 namespace pagor::studio {
 namespace {

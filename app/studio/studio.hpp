@@ -7,14 +7,14 @@
 #include <memory>
 #include <string>
 
-#include "app_state.hpp"
-#include "bench_worker.hpp"
-#include "gl.hpp"
-#include "history.hpp"
-#include "imgui_renderer.hpp"
-#include "plot.hpp"
-#include "scene_view.hpp"
-#include "worker.hpp"
+#include "state/app_state.hpp"
+#include "runners/bench_worker.hpp"
+#include "render/gl.hpp"
+#include "state/history.hpp"
+#include "render/imgui_renderer.hpp"
+#include "widgets/plot.hpp"
+#include "scene/scene_view.hpp"
+#include "runners/worker.hpp"
 
 namespace pagor::studio {
 

@@ -13,7 +13,7 @@
 #include <utility>
 
 #include "pagor/errors.hpp"
-#include "pagor/json_input.hpp"
+#include "io/json_input.hpp"
 
 namespace pagor {
 namespace {

@@ -6,11 +6,11 @@
 #include <fstream>
 #include <thread>
 
-#include "bench_plots.hpp"
-#include "bench_worker.hpp"
-#include "benchmark_view.hpp"
+#include "widgets/bench_plots.hpp"
+#include "runners/bench_worker.hpp"
+#include "panels/benchmark_view.hpp"
 #include "pagor/errors.hpp"
-#include "plot_export.hpp"
+#include "widgets/plot_export.hpp"
 #include "studio_test_util.hpp"
 #include "ui_driver.hpp"
 

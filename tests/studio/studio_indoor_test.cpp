@@ -6,16 +6,16 @@
 #include <catch2/catch.hpp>
 #include <fstream>
 
-#include "bench_plots.hpp"
-#include "bench_worker.hpp"
-#include "pagor/floor_projection.hpp"
-#include "pagor/indoor_synthetic.hpp"
-#include "pagor/io.hpp"
-#include "plan_overlay.hpp"
-#include "plot_export.hpp"
+#include "widgets/bench_plots.hpp"
+#include "runners/bench_worker.hpp"
+#include "pagor/indoor/floor_projection.hpp"
+#include "pagor/indoor/indoor_synthetic.hpp"
+#include "pagor/io/clouds.hpp"
+#include "scene/plan_overlay.hpp"
+#include "widgets/plot_export.hpp"
 #include "studio_test_util.hpp"
 #include "ui_driver.hpp"
-#include "worker.hpp"
+#include "runners/worker.hpp"
 
 using namespace pagor;
 using namespace pagor::test;

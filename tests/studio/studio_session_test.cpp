@@ -6,11 +6,11 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "app_state.hpp"
-#include "number_format.hpp"
+#include "state/app_state.hpp"
+#include "widgets/number_format.hpp"
 #include "pagor/errors.hpp"
 #include "studio_test_util.hpp"
-#include "widgets.hpp"
+#include "widgets/widgets.hpp"
 
 using namespace pagor;
 using namespace pagor::test;

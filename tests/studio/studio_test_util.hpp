@@ -3,9 +3,9 @@
 
 #include <string>
 
-#include "app_state.hpp"
-#include "pagor/kitti.hpp"
-#include "test_util.hpp"
+#include "state/app_state.hpp"
+#include "pagor/io/kitti.hpp"
+#include "support/test_util.hpp"
 
 namespace pagor::test {
 

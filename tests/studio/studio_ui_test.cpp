@@ -7,7 +7,7 @@
 #include <cstdlib>
 #include <filesystem>
 
-#include "panels.hpp"
+#include "panels/panels.hpp"
 #include "studio_test_util.hpp"
 #include "ui_driver.hpp"
 

@@ -5,7 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include "pagor/config.hpp"
-#include "worker.hpp"
+#include "runners/worker.hpp"
 
 using namespace pagor;
 using studio::Worker;

@@ -10,7 +10,7 @@
 #include <cstdlib>
 
 #include "pagor/errors.hpp"
-#include "panels.hpp"
+#include "panels/panels.hpp"
 
 namespace pagor::test {
 namespace {

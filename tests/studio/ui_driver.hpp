@@ -13,11 +13,11 @@
 #include <string>
 #include <vector>
 
-#include "app_state.hpp"
-#include "gl.hpp"
-#include "headless.hpp"
+#include "state/app_state.hpp"
+#include "render/gl.hpp"
+#include "render/headless.hpp"
 #include "studio.hpp"
-#include "widgets.hpp"
+#include "widgets/widgets.hpp"
 
 namespace pagor::test {
 

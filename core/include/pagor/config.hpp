@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "pagor/label_scheme.hpp"
+#include "pagor/front/label_scheme.hpp"
 
 namespace pagor {
 

@@ -13,17 +13,17 @@
 #include <string>
 #include <vector>
 
-#include "pagor/acceptance.hpp"
+#include "pagor/verify/acceptance.hpp"
 #include "pagor/config.hpp"
-#include "pagor/correspondences.hpp"
-#include "pagor/densest_clique.hpp"
-#include "pagor/evaluation.hpp"
-#include "pagor/gnc.hpp"
-#include "pagor/landmarks.hpp"
-#include "pagor/pyramid_graph.hpp"
-#include "pagor/refinement.hpp"
+#include "pagor/front/correspondences.hpp"
+#include "pagor/graph/densest_clique.hpp"
+#include "pagor/verify/evaluation.hpp"
+#include "pagor/pose/gnc.hpp"
+#include "pagor/front/landmarks.hpp"
+#include "pagor/graph/pyramid_graph.hpp"
+#include "pagor/pose/refinement.hpp"
 #include "pagor/types.hpp"
-#include "pagor/verification.hpp"
+#include "pagor/verify/verification.hpp"
 
 namespace pagor {
 

@@ -1,0 +1,320 @@
+#include "panels/benchmark_view.hpp"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "widgets/bench_plots.hpp"
+#include "pagor/io/atomic_file.hpp"
+#include "pagor/errors.hpp"
+#include "panels/panels.hpp"
+#include "widgets/plot.hpp"
+#include "panels/plot_panel.hpp"
+#include "widgets/widgets.hpp"
+
+namespace pagor::studio {
+namespace {
+
+const char* const kColumns[] = {"pair",  "verdict",      "success",   "t err [m]", "r err [deg]",
+                                "level", "D margin [%]", "time [ms]", "cached",    "diagnosis"};
+constexpr int kColumnCount = 10;
+constexpr int kDiagnosisColumn = 9;  // sorted by name, like the pair
+const char* const kShow[] = {"all pairs", "failures", "successes", "accepted", "rejected"};
+constexpr float kTrajectoryHeight = 420.0f;  // [px]
+
+const char* truth_text(const PairOutcome& o) {
+  if (!o.loaded) return "skipped";
+  if (o.negative) return "negative";
+  if (!o.has_ground_truth) return "-";
+  return o.success ? "yes" : "no";
+}
+
+// Sort key of a column (numbers; strings compare by name).
+double key(const BenchRow& r, int column) {
+  const PairOutcome& o = r.outcome;
+  const double none = -1e300;
+  switch (column) {
+    case 1:
+      return o.accepted;
+    case 2:
+      return o.negative ? 2 : (o.success ? 1 : 0);
+    case 3:
+      return o.error ? o.error->translation : none;
+    case 4:
+      return o.error ? o.error->rotation_deg : none;
+    case 5:
+      return o.selected_level;
+    case 6:
+      return o.margin;
+    case 7:
+      return r.last_ms;
+    case 8:
+      return r.cached;
+    default:
+      return 0;
+  }
+}
+
+bool shown(const BenchRow& r, const BenchViewState& v) {
+  const PairOutcome& o = r.outcome;
+  if (!v.filter.empty() && o.name.find(v.filter) == std::string::npos) return false;
+  switch (v.show) {
+    case 1:
+      return r.done && (!o.loaded || (!o.negative && !o.success) || (o.negative && o.accepted));
+    case 2:
+      return r.done && o.success;
+    case 3:
+      return r.done && o.accepted;
+    case 4:
+      return r.done && !o.accepted;
+    default:
+      return true;
+  }
+}
+
+void source_controls(UiContext& ui, BenchWorker& bench) {
+  BenchViewState& v = ui.state.bench;
+  ui::radio("manifest", &v.source, BenchViewState::manifest,
+            "a generic manifest: SOURCE TARGET [gt=...] per line (pagor bench --manifest)");
+  ImGui::SameLine();
+  ui::radio("KITTI pairs file", &v.source, BenchViewState::kitti_pairs,
+            "frame numbers 'source target' per line, with a KITTI root");
+  ImGui::SameLine();
+  ui::radio("bench results", &v.source, BenchViewState::results,
+            "the JSON lines of pagor bench --out (shown as they are; nothing re-runs)");
+  ui::input_text("file##bench_path", &v.path, "path of the manifest, pairs file or results file");
+  if (v.source == BenchViewState::kitti_pairs) {
+    ui::input_text("KITTI root##bench", &v.kitti_root, "directory holding sequences/");
+    ui::input_text("sequence##bench", &v.sequence, "KITTI sequence, e.g. 00");
+  }
+  ui::input_text("parameters file##bench", &v.config_path,
+                 "a configuration JSON for this set, e.g. bench/manifests/semreg-dev.json");
+  ImGui::SameLine();
+  if (ui::button("load##bench_config", ImVec2(0, 0),
+                 "use the file's parameters in the session (absent keys: the defaults)")) {
+    try {
+      ui.state.config = load_config(resolve_path(ui.state, v.config_path));
+      ui.submit_config();
+      ui.state.message = "parameters from " + v.config_path;
+      ui.state.message_is_error = false;
+    } catch (const Error& e) {
+      ui.state.message = e.what();
+      ui.state.message_is_error = true;
+    }
+  }
+  if (ui::button("open and run##bench", ImVec2(0, 0),
+                 "read the file and run every pair with the current parameters")) {
+    try {
+      open_benchmark(ui.state, bench);
+      ui.state.message = "opened " + v.path;
+      ui.state.message_is_error = false;
+    } catch (const Error& e) {
+      ui.state.message = e.what();
+      ui.state.message_is_error = true;
+    }
+  }
+  ImGui::SameLine();
+  if (ui::button("close##bench", ImVec2(0, 0), "forget the set and its caches")) {
+    bench.close();
+    v.open = false;
+  }
+  ImGui::SameLine();
+  if (ui::button("pair view##bench", ImVec2(0, 0), "back to the 3D view of the current pair"))
+    ui.state.main_view = MainView::pair;
+}
+
+void progress_and_cache(UiContext& ui, BenchWorker& bench, const BenchStatus& st) {
+  BenchViewState& v = ui.state.bench;
+  char text[160];
+  std::snprintf(text, sizeof(text), "%d / %d pairs with these parameters%s, %.2f s", st.done,
+                st.total, st.busy ? " (running)" : "", st.pass_ms / 1000.0);
+  ImGui::ProgressBar(st.total ? float(st.done) / st.total : 0.0f, ImVec2(-1, 0), text);
+  ImGui::Text("caches: %d of %d pairs kept, %.0f MiB of %d MiB", st.cached, st.total,
+              double(st.cache_bytes) / (1 << 20), v.budget_mib);
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(160);
+  if (ui::slider_int(
+          "budget [MiB]##bench", &v.budget_mib, 64, 8192, true,
+          "memory the per-pair caches may hold; pairs beyond it re-run from their files"))
+    bench.set_budget(std::size_t(v.budget_mib) << 20);
+  if (!st.error.empty()) ImGui::TextColored(ImVec4(1, 0.45f, 0.4f, 1), "%s", st.error.c_str());
+}
+
+void summary_line(const BenchmarkSummary& s) {
+  ImGui::TextUnformatted(summary_text(s).c_str());
+}
+
+void table_controls(BenchViewState& v) {
+  ImGui::SetNextItemWidth(160);
+  ui::input_text("filter##bench", &v.filter, "show the pairs whose name contains this");
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(130);
+  if (ui::begin_combo("show##bench", kShow[std::clamp(v.show, 0, 4)], "which rows to list")) {
+    for (int i = 0; i < 5; ++i)
+      if (ui::selectable((std::string(kShow[i]) + "##show").c_str(), v.show == i)) v.show = i;
+    ui::end_combo();
+  }
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(130);
+  if (ui::begin_combo("sort by##bench", kColumns[std::clamp(v.sort, 0, kColumnCount - 1)],
+                      "column the rows are sorted by")) {
+    for (int i = 0; i < kColumnCount; ++i)
+      if (ui::selectable((std::string(kColumns[i]) + "##sort").c_str(), v.sort == i)) v.sort = i;
+    ui::end_combo();
+  }
+  ImGui::SameLine();
+  ui::checkbox("descending##bench", &v.descending, "reverse the order");
+}
+
+// The cells after the name of a row that has an outcome.
+void row_cells(const BenchRow& r) {
+  const PairOutcome& o = r.outcome;
+  ImGui::TableNextColumn();
+  ImGui::TextUnformatted(!o.loaded ? "skipped" : o.accepted ? "accept" : "reject");
+  if (!o.loaded) ui::tooltip(o.load_error.c_str());
+  ImGui::TableNextColumn();
+  ImGui::TextUnformatted(truth_text(o));
+  ImGui::TableNextColumn();
+  if (o.error)
+    ImGui::Text("%.2f", o.error->translation);
+  else
+    ImGui::TextUnformatted("-");
+  ImGui::TableNextColumn();
+  if (o.error)
+    ImGui::Text("%.2f", o.error->rotation_deg);
+  else
+    ImGui::TextUnformatted("-");
+  ImGui::TableNextColumn();
+  if (o.selected_level >= 0)
+    ImGui::Text("%d", o.selected_level);
+  else
+    ImGui::TextUnformatted("-");
+  ImGui::TableNextColumn();
+  ImGui::Text("%.1f", 100.0 * o.margin);
+  ImGui::TableNextColumn();
+  ImGui::Text("%.0f", r.last_ms);
+  ImGui::TableNextColumn();
+  ImGui::TextUnformatted(r.cached ? "yes" : "no");
+  ImGui::TableNextColumn();  // the stage at fault (diagnosis.hpp); needs the ground truth
+  ImGui::TextUnformatted(o.diagnosis.empty() ? "-" : o.diagnosis.c_str());
+  if (!o.diagnosis.empty())
+    ui::tooltip(
+        "the diagnosis against the ground truth: open the pair and switch the bottom "
+        "panel to 'diagnosis' for why");
+}
+
+void rows_table(UiContext& ui, const std::vector<BenchRow>& rows, BenchWorker& bench) {
+  BenchViewState& v = ui.state.bench;
+  std::vector<std::size_t> order;
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    if (shown(rows[i], v)) order.push_back(i);
+  const auto text = [&](std::size_t i) -> const std::string& {
+    return v.sort == kDiagnosisColumn ? rows[i].outcome.diagnosis : rows[i].outcome.name;
+  };
+  const bool by_text = v.sort == 0 || v.sort == kDiagnosisColumn;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    const bool less = by_text ? text(a) < text(b) : key(rows[a], v.sort) < key(rows[b], v.sort);
+    const bool more = by_text ? text(b) < text(a) : key(rows[b], v.sort) < key(rows[a], v.sort);
+    return v.descending ? more : less;
+  });
+  const float h = std::min(ImGui::GetTextLineHeightWithSpacing() * (order.size() + 1.5f), 300.0f);
+  if (!ImGui::BeginTable("##bench_rows", kColumnCount,
+                         ImGuiTableFlags_RowBg | ImGuiTableFlags_Borders | ImGuiTableFlags_ScrollY,
+                         ImVec2(0, h)))
+    return;
+  ImGui::TableSetupScrollFreeze(0, 1);
+  for (const char* c : kColumns) ImGui::TableSetupColumn(c);
+  ImGui::TableHeadersRow();
+  const PairSet set = bench.set();
+  for (std::size_t i : order) {
+    const BenchRow& r = rows[i];
+    const PairOutcome& o = r.outcome;
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn();
+    if (!r.current) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.55f, 0.55f, 0.6f, 1));
+    const std::string label = o.name + "##bench_row" + std::to_string(i);
+    if (ui::selectable(label.c_str(), false) && i < set.pairs.size()) {
+      show_pair(ui.state, set.pairs[i]);
+      ui.submit_data();
+    }
+    if (i < set.pairs.size()) ui::tooltip("open this pair in the pair view with these parameters");
+    if (!r.done) {  // not run yet with any parameters
+      for (int c = 1; c < kColumnCount; ++c) {
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted("...");
+      }
+    } else {
+      row_cells(r);
+    }
+    if (!r.current) ImGui::PopStyleColor();
+  }
+  ImGui::EndTable();
+}
+
+}  // namespace
+
+void open_benchmark(AppState& state, BenchWorker& bench) {
+  BenchViewState& v = state.bench;
+  const std::string path = resolve_path(state, v.path);
+  if (v.path.empty()) throw InputError("benchmark: name a file to open");
+  if (v.source == BenchViewState::results) {
+    bench.show_results(read_bench_results(path), path);
+  } else {
+    PairSet set = v.source == BenchViewState::kitti_pairs
+                      ? kitti_pair_set(resolve_path(state, v.kitti_root), v.sequence, path)
+                      : read_pair_manifest(path);
+    bench.set_budget(std::size_t(std::max(1, v.budget_mib)) << 20);
+    bench.open(std::move(set), state.config);
+  }
+  v.open = true;
+  state.main_view = MainView::benchmark;
+}
+
+void show_pair(AppState& state, const PairEntry& entry) {
+  PairSource d = entry.source;
+  for (std::string* p :
+       {&d.source, &d.target, &d.source_labels, &d.target_labels, &d.ground_truth, &d.kitti_root})
+    *p = absolute_path(*p);
+  state.data = d;
+  state.have_data = true;
+  state.camera_fitted = false;
+  state.main_view = MainView::pair;
+}
+
+void benchmark_view(UiContext& ui) {
+  if (!ui.bench) return;
+  BenchWorker& bench = *ui.bench;
+  const BenchStatus st = bench.status();
+  const std::vector<BenchRow> rows = bench.rows();
+  source_controls(ui, bench);
+  if (!bench.origin().empty()) ImGui::Text("open: %s", bench.origin().c_str());
+  indoor_preset_hint(ui, bench.plan() != nullptr, "bench");
+  if (bench.can_rerun()) progress_and_cache(ui, bench, st);
+  std::vector<PairOutcome> outcomes;
+  for (const BenchRow& r : rows)
+    if (r.done && r.current) outcomes.push_back(r.outcome);
+  const BenchmarkSummary summary = summarize(outcomes);
+  summary_line(summary);
+  table_controls(ui.state.bench);
+  rows_table(ui, rows, bench);
+  const float w = ImGui::GetContentRegionAvail().x;
+  plot_with_exports(ui, "rates", rates_plot(summary), w * 0.5f - 4);
+  ImGui::SameLine();
+  plot_with_exports(ui, "picking", picking_plot(outcomes), w * 0.5f - 4);
+  if (const auto plan = bench.plan()) {              // an indoor set: its trajectory over the plan
+    std::vector<PairOutcome> sequence(rows.size());  // by scan index; not yet run: left out
+    for (std::size_t i = 0; i < rows.size(); ++i)
+      if (rows[i].done && rows[i].current) sequence[i] = rows[i].outcome;
+    plot_with_exports(ui, "trajectory", trajectory_plot(sequence, plan.get()), w,
+                      kTrajectoryHeight);
+  }
+  ui::input_text("export path##bench", &ui.state.bench.plot_path,
+                 "plots are written to PATH-<plot>.png and .csv");
+  ImGui::PushID("sweep_section");
+  if (ui::header("Sweep", true) && bench.can_rerun()) sweep_section(ui, bench, st);
+  ImGui::PopID();
+}
+
+}  // namespace pagor::studio

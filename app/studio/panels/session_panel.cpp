@@ -1,0 +1,69 @@
+// The History panel (undo/redo, the last runs) and the Session panel.
+
+#include <imgui.h>
+
+#include "panels/panels.hpp"
+#include "widgets/widgets.hpp"
+
+namespace pagor::studio {
+namespace {
+const ImVec4 kRed(1.0f, 0.4f, 0.4f, 1.0f);
+}  // namespace
+
+void history_panel(UiContext& ui) {
+  ImGui::BeginDisabled(!ui.params || !ui.params->can_undo());
+  if (ui::button("undo##history", ImVec2(0, 0), "Undo the last parameter change (Ctrl+Z)."))
+    ui.undo();
+  ImGui::EndDisabled();
+  ImGui::SameLine();
+  ImGui::BeginDisabled(!ui.params || !ui.params->can_redo());
+  if (ui::button("redo##history", ImVec2(0, 0), "Redo (Ctrl+Y).")) ui.redo();
+  ImGui::EndDisabled();
+  ImGui::SameLine();
+  ImGui::TextDisabled("%zu undo, %zu redo", ui.params ? ui.params->undo_steps() : 0,
+                      ui.params ? ui.params->redo_steps() : 0);
+  if (!ui.runs || ui.runs->runs().empty()) {
+    ImGui::TextDisabled("no runs yet");
+    return;
+  }
+  const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit;
+  if (ImGui::BeginTable("runs", 4, flags)) {
+    ImGui::TableSetupColumn("run");
+    ImGui::TableSetupColumn("sel");
+    ImGui::TableSetupColumn("outcome");
+    ImGui::TableSetupColumn("change");
+    ImGui::TableHeadersRow();
+    for (const RunRecord& r : ui.runs->runs()) {
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::Text("#%llu", static_cast<unsigned long long>(r.request));
+      ImGui::TableNextColumn();
+      ImGui::Text("L%d", r.selected);
+      ImGui::TableNextColumn();
+      if (r.success)
+        ImGui::TextColored(*r.success ? ImVec4(0.35f, 0.9f, 0.45f, 1) : kRed, "%s D %.0f",
+                           *r.success ? "ok" : "FAIL", r.best_d);
+      else
+        ImGui::Text("D %.0f", r.best_d);
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(r.change.c_str());
+    }
+    ImGui::EndTable();
+  }
+}
+
+void session_panel(UiContext& ui) {
+  AppState& s = ui.state;
+  ui::input_text("session", &s.session_path,
+                 "Session file: data, parameters, camera, layers, level and layout.");
+  if (ui::button("save session", ImVec2(0, 0), "Writes the session file (Ctrl+S)."))
+    ui.save_session();
+  ImGui::SameLine();
+  if (ui::button("load session", ImVec2(0, 0), "Reads the session file (Ctrl+O)."))
+    ui.load_session();
+  ui::input_text("PNG", &s.screenshot_path, "Where a screenshot is written.");
+  if (ui::button("save screenshot", ImVec2(0, 0), "Writes the whole window as a PNG (S)."))
+    s.want_screenshot = true;
+}
+
+}  // namespace pagor::studio

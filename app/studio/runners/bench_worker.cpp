@@ -1,0 +1,386 @@
+#include "runners/bench_worker.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <numeric>
+
+#include "pagor/errors.hpp"
+
+namespace pagor::studio {
+namespace {
+
+constexpr int kPipelineThreads = 2;                    // graph and verification
+constexpr std::size_t kDefaultBudget = 1024ull << 20;  // [bytes]
+constexpr std::size_t kTreeBytesPerPoint = 32;         // kd-tree node share, estimated
+
+double ms_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// The floor plan an indoor set registers against: the first plan target (empty: none).
+std::string plan_path(const PairSet& set) {
+  for (const PairEntry& e : set.pairs)
+    if (e.source.kind == PairSource::Kind::files && is_floor_plan_path(e.source.target))
+      return e.source.target;
+  return {};
+}
+
+// A path a results file names: as written when it exists from here, else beside the file (a
+// manifest's relative paths are relative to its directory, which the results usually share).
+std::string beside(const std::string& path, const std::string& file) {
+  const std::filesystem::path p(path);
+  std::error_code ec;
+  if (p.is_absolute() || std::filesystem::exists(p, ec)) return path;
+  return (std::filesystem::path(file).parent_path() / p).string();
+}
+
+std::size_t cloud_bytes(const PointCloud& c) {
+  return c.points.capacity() * sizeof(Eigen::Vector3f) + c.intensities.capacity() * sizeof(float) +
+         c.labels.capacity() * sizeof(std::uint32_t);
+}
+
+}  // namespace
+
+BenchWorker::BenchWorker() : config_(default_config()) {
+  status_.budget_bytes = kDefaultBudget;
+  thread_ = std::thread([this] { loop(); });
+}
+
+BenchWorker::~BenchWorker() {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    stop_ = true;
+    cancel_ = true;
+  }
+  changed_.notify_all();
+  thread_.join();
+}
+
+std::size_t BenchWorker::estimate_bytes(const Pipeline& p) {
+  std::size_t bytes = cloud_bytes(p.source()) + cloud_bytes(p.target());
+  if (const Verifier* v = p.verifier())
+    bytes += (v->source_points().size() + v->target_points().size()) * sizeof(Eigen::Vector3f) +
+             v->target_points().size() * kTreeBytesPerPoint;
+  bytes += p.correspondences().items.size() * sizeof(Correspondence);
+  const PyramidGraph& g = p.graph();
+  bytes += g.neighbors.size() * (sizeof(int) + sizeof(std::uint8_t) + sizeof(float)) +
+           g.offsets.size() * sizeof(std::int64_t);
+  for (const LandmarkSet* l : {&p.source_landmarks(), &p.target_landmarks()})
+    bytes += l->landmarks.size() * 256;  // centroid, extent, descriptor share
+  return bytes;
+}
+
+void BenchWorker::open(PairSet set, const Config& config) {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    origin_ = set.origin;
+    rows_.assign(set.pairs.size(), BenchRow{});
+    for (std::size_t i = 0; i < set.pairs.size(); ++i) {
+      rows_[i].outcome.name = set.pairs[i].name;
+      rows_[i].outcome.negative = set.pairs[i].negative;
+    }
+    pending_plan_ = plan_path(set);
+    plan_.reset();
+    ++plan_generation_;
+    pending_set_ = std::move(set);
+    rerunnable_ = true;
+    config_ = config;
+    status_.total = static_cast<int>(rows_.size());
+    status_.done = 0;
+    status_.error.clear();
+    ++status_.generation;
+    cancel_ = true;
+  }
+  changed_.notify_all();
+}
+
+void BenchWorker::show_results(std::vector<PairOutcome> outcomes, const std::string& origin) {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    origin_ = origin;
+    rows_.clear();
+    for (PairOutcome& o : outcomes) {
+      BenchRow r;
+      r.outcome = std::move(o);
+      r.done = r.current = true;
+      r.last_ms = r.outcome.total_ms;
+      rows_.push_back(std::move(r));
+    }
+    pending_set_ = PairSet{};  // drops the caches
+    pending_plan_.reset();
+    plan_.reset();
+    ++plan_generation_;
+    for (const BenchRow& r : rows_)  // results of an indoor set name the plan as their target
+      if (is_floor_plan_path(r.outcome.target_name)) {
+        pending_plan_ = beside(r.outcome.target_name, origin);
+        break;
+      }
+    rerunnable_ = false;
+    status_.total = status_.done = static_cast<int>(rows_.size());
+    status_.error.clear();
+    ++status_.generation;
+    cancel_ = true;
+  }
+  changed_.notify_all();
+}
+
+void BenchWorker::set_config(const Config& config) {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!rerunnable_) return;
+    if (config_to_json(config, -1) == config_to_json(config_, -1)) return;
+    config_ = config;
+    for (BenchRow& r : rows_) r.current = false;
+    status_.done = 0;
+    status_.error.clear();
+    ++status_.generation;
+    cancel_ = true;
+  }
+  changed_.notify_all();
+}
+
+void BenchWorker::set_budget(std::size_t bytes) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  status_.budget_bytes = bytes;
+}
+
+void BenchWorker::close() {
+  show_results({}, "");
+}
+
+std::vector<BenchRow> BenchWorker::rows() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return rows_;
+}
+
+BenchStatus BenchWorker::status() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return status_;
+}
+
+PairSet BenchWorker::set() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return rerunnable_ ? (pending_set_ ? *pending_set_ : set_) : PairSet{};
+}
+
+std::string BenchWorker::origin() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return origin_;
+}
+
+std::shared_ptr<const FloorPlan> BenchWorker::plan() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return plan_;
+}
+
+void BenchWorker::load_pending_plan() {
+  std::string path;
+  std::uint64_t generation = 0;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!pending_plan_) return;
+    path = std::move(*pending_plan_);
+    pending_plan_.reset();
+    generation = plan_generation_;
+  }
+  if (path.empty()) return;
+  std::shared_ptr<const FloorPlan> plan;
+  std::string error;
+  try {
+    plan = std::make_shared<const FloorPlan>(read_floor_plan(path));
+  } catch (const Error& e) {
+    error = e.what();
+  }
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (plan_generation_ != generation) return;  // a newer set or results file replaced it
+  plan_ = std::move(plan);
+  if (!error.empty()) status_.error = error;
+}
+
+bool BenchWorker::can_rerun() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return rerunnable_;
+}
+
+bool BenchWorker::wait_idle(double timeout_s) const {
+  std::unique_lock<std::mutex> lock(mutex_);
+  return changed_.wait_for(lock, std::chrono::duration<double>(timeout_s),
+                           [this] { return status_.finished == status_.generation; });
+}
+
+void BenchWorker::loop() {
+  std::uint64_t handled = 0;
+  for (;;) {
+    Config config;
+    std::uint64_t gen = 0;
+    std::vector<std::size_t> order;
+    {
+      std::unique_lock<std::mutex> lock(mutex_);
+      changed_.wait(lock, [&] {
+        return stop_ || status_.generation != handled || pending_sweep_.has_value();
+      });
+      if (stop_) return;
+      if (status_.generation == handled) {  // only a sweep to do
+        lock.unlock();
+        run_pending_sweep();
+        continue;
+      }
+      gen = handled = status_.generation;
+      config = config_;
+      cancel_ = false;
+      if (pending_set_) {
+        set_ = std::move(*pending_set_);
+        pending_set_.reset();
+        caches_.clear();
+        caches_.resize(set_.pairs.size());
+        bytes_.assign(set_.pairs.size(), 0);
+        status_.cached = 0;
+        status_.cache_bytes = 0;
+      }
+      status_.busy = !set_.pairs.empty();
+      status_.pass_ms = 0;
+      // Cached pairs first: they re-run only what the change invalidated, so the rates of most
+      // of the set update at once.
+      order.resize(set_.pairs.size());
+      std::iota(order.begin(), order.end(), 0);
+      std::stable_partition(order.begin(), order.end(),
+                            [&](std::size_t i) { return caches_[i].pipeline != nullptr; });
+    }
+    load_pending_plan();
+    const auto t0 = std::chrono::steady_clock::now();
+    bool complete = true;
+    for (std::size_t i : order)
+      if (!evaluate(i, config, gen)) {
+        complete = false;
+        break;
+      }
+    if (complete) {
+      bool sweep = false;
+      {
+        std::lock_guard<std::mutex> lock(mutex_);
+        sweep = pending_sweep_.has_value() && status_.generation == gen;
+        if (sweep) {
+          status_.finished = gen;
+          status_.busy = false;
+          status_.pass_ms = ms_since(t0);
+        }
+      }
+      if (sweep) run_pending_sweep();
+    }
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (complete && status_.generation == gen) {
+      status_.finished = gen;
+      status_.busy = false;
+      status_.pass_ms = ms_since(t0);
+    }
+    changed_.notify_all();
+  }
+}
+
+void BenchWorker::sweep(std::vector<SweepSetting> settings) {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!rerunnable_) return;
+    status_.sweep_total = static_cast<int>(settings.size()) * status_.total;
+    status_.sweep_done = 0;
+    status_.sweep_error.clear();
+    status_.sweeping = true;
+    pending_sweep_ = std::move(settings);
+  }
+  changed_.notify_all();
+}
+
+std::shared_ptr<const SweepResult> BenchWorker::sweep_result() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return sweep_result_;
+}
+
+void BenchWorker::run_pending_sweep() {
+  std::vector<SweepSetting> settings;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    settings = std::move(*pending_sweep_);
+    pending_sweep_.reset();
+    cancel_ = false;
+  }
+  std::shared_ptr<SweepResult> result;
+  std::string error;
+  try {
+    result = std::make_shared<SweepResult>(run_sweep(
+        set_, settings, kPipelineThreads,
+        [this](int, int, const PairOutcome&) {
+          std::lock_guard<std::mutex> lock(mutex_);
+          ++status_.sweep_done;
+        },
+        &cancel_, &caches_));
+  } catch (const Cancelled&) {
+    error = "the sweep was cancelled by a parameter change";
+  } catch (const Error& e) {
+    error = e.what();
+  }
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (result) sweep_result_ = std::move(result);
+  status_.sweep_error = error;
+  status_.sweeping = pending_sweep_.has_value();
+  changed_.notify_all();
+}
+
+bool BenchWorker::evaluate(std::size_t i, const Config& config, std::uint64_t gen) {
+  if (cancel_) return false;
+  const PairEntry& entry = set_.pairs[i];
+  PairCache& slot = caches_[i];
+  const auto t0 = std::chrono::steady_clock::now();
+  PairOutcome o;
+  std::string error;
+  try {
+    if (slot.pipeline) {
+      slot.pipeline->set_config(config);
+      slot.pipeline->run(ProgressFn{}, &cancel_);
+      o = pair_outcome(*slot.pipeline, entry, slot.source_name, slot.target_name);
+    } else {
+      auto pipeline = std::make_unique<Pipeline>(config, kPipelineThreads);
+      o = run_pair(*pipeline, entry);
+      if (o.loaded) {
+        slot.pipeline = std::move(pipeline);
+        slot.source_name = o.source_name;
+        slot.target_name = o.target_name;
+      }
+    }
+  } catch (const Cancelled&) {
+    return false;
+  } catch (const Error& e) {  // a work budget exceeded, unreadable data: the row says why
+    slot.pipeline.reset();
+    o = PairOutcome{};
+    o.name = entry.name;
+    o.negative = entry.negative;
+    o.load_error = e.what();
+    error = entry.name + ": " + e.what();
+  }
+  const double ms = ms_since(t0);
+  bytes_[i] = slot.pipeline ? estimate_bytes(*slot.pipeline) : 0;
+  std::lock_guard<std::mutex> lock(mutex_);
+  // Keep the pipelines already kept; a new one only when it fits (a stable cached set).
+  std::size_t total = 0;
+  for (std::size_t k = 0; k < caches_.size(); ++k)
+    if (k != i && caches_[k].pipeline) total += bytes_[k];
+  if (slot.pipeline && total + bytes_[i] > status_.budget_bytes) {
+    slot.pipeline.reset();
+    bytes_[i] = 0;
+  }
+  status_.cache_bytes = total + bytes_[i];
+  status_.cached = static_cast<int>(std::count_if(
+      caches_.begin(), caches_.end(), [](const PairCache& c) { return c.pipeline != nullptr; }));
+  if (status_.generation != gen) return false;
+  BenchRow& row = rows_[i];
+  row.outcome = std::move(o);
+  row.done = row.current = true;
+  row.cached = slot.pipeline != nullptr;
+  row.last_ms = ms;
+  ++status_.done;
+  if (!error.empty()) status_.error = error;
+  status_.pass_ms += ms;
+  return true;
+}
+
+}  // namespace pagor::studio

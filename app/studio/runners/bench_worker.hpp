@@ -1,0 +1,117 @@
+#pragma once
+/// \file bench_worker.hpp
+/// The benchmark view's runner: every pair of a set through the core's benchmark functions on a
+/// background thread, one cached Pipeline per pair kept within a memory budget. A new
+/// configuration re-evaluates the whole set: each cached pair re-runs only the stages the change
+/// invalidated (cached pairs first, so the rates update fast), the others run from their files.
+
+#include <atomic>
+#include <condition_variable>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "pagor/sets/benchmark.hpp"
+#include "pagor/indoor/floor_plan.hpp"
+#include "pagor/sets/sweep.hpp"
+
+namespace pagor::studio {
+
+/// One row of the table.
+struct BenchRow {
+  PairOutcome outcome;   ///< the latest outcome (of an earlier configuration until `current`)
+  bool done = false;     ///< has an outcome at all
+  bool current = false;  ///< the outcome is of the configuration being evaluated
+  bool cached = false;   ///< its pipeline is kept in memory
+  double last_ms = 0;    ///< wall time of its last evaluation (only invalidated stages) [ms]
+};
+
+struct BenchStatus {
+  bool busy = false;
+  int total = 0, done = 0;              ///< pairs in the set; with an outcome of the current config
+  int cached = 0;                       ///< pairs whose pipeline is kept
+  std::size_t cache_bytes = 0;          ///< estimated memory of the kept pipelines [bytes]
+  std::size_t budget_bytes = 0;         ///< the budget [bytes]
+  double pass_ms = 0;                   ///< wall time of the last complete pass (or so far) [ms]
+  std::uint64_t generation = 0;         ///< increases with every open or configuration
+  std::uint64_t finished = 0;           ///< generation of the last complete pass
+  std::string error;                    ///< why the last pass stopped (empty when fine)
+  bool sweeping = false;                ///< a sweep is queued or running
+  int sweep_done = 0, sweep_total = 0;  ///< (pair, setting) runs of the sweep
+  std::string sweep_error;              ///< why the last sweep stopped
+};
+
+class BenchWorker {
+ public:
+  BenchWorker();
+  ~BenchWorker();
+  BenchWorker(const BenchWorker&) = delete;
+  BenchWorker& operator=(const BenchWorker&) = delete;
+
+  /// Opens a set and evaluates it with `config` (drops every cache).
+  void open(PairSet set, const Config& config);
+  /// Shows results read from a file; nothing runs (no pairs to re-evaluate).
+  void show_results(std::vector<PairOutcome> outcomes, const std::string& origin);
+  /// Re-evaluates the open set with a new configuration (nothing when no set is open).
+  void set_config(const Config& config);
+  /// Memory budget of the per-pair caches [bytes]; pipelines beyond it are dropped after use.
+  void set_budget(std::size_t bytes);
+  /// Queues a sweep over the open set, after the current pass; the cached pipelines are reused
+  /// (a parameter change cancels it).
+  void sweep(std::vector<SweepSetting> settings);
+  /// The last finished sweep (null before the first).
+  std::shared_ptr<const SweepResult> sweep_result() const;
+  /// Drops every pair (the view is closed).
+  void close();
+
+  std::vector<BenchRow> rows() const;
+  BenchStatus status() const;
+  /// The set open (empty when none or when showing results from a file).
+  PairSet set() const;
+  /// The pairs set or results file shown.
+  std::string origin() const;
+  /// The floor plan of an indoor set (the target of its first pair against a plan), read by the
+  /// worker thread; null for other sets or until read (a plan that cannot be read: null, and
+  /// the status's error says why).
+  std::shared_ptr<const FloorPlan> plan() const;
+  bool can_rerun() const;
+  /// Blocks until the current pass is complete or `timeout_s` passes; true when complete.
+  bool wait_idle(double timeout_s) const;
+
+  /// Estimated memory a pipeline holds: its clouds, verification clouds and kd-tree [bytes].
+  static std::size_t estimate_bytes(const Pipeline& pipeline);
+
+ private:
+  void loop();
+  void run_pending_sweep();
+  /// Reads the plan `pending_plan_` names, if any (worker thread).
+  void load_pending_plan();
+  /// Evaluates one pair; false when cancelled or the generation moved on.
+  bool evaluate(std::size_t pair, const Config& config, std::uint64_t generation);
+
+  mutable std::mutex mutex_;
+  mutable std::condition_variable changed_;
+  PairSet set_;                         // the thread's set
+  std::optional<PairSet> pending_set_;  // a new set, taken by the thread at its next pass
+  std::string origin_;
+  std::optional<std::string> pending_plan_;  // a plan to read (empty path: none)
+  std::shared_ptr<const FloorPlan> plan_;
+  std::uint64_t plan_generation_ = 0;  // counts opened sets and results files
+  bool rerunnable_ = false;
+  Config config_;
+  std::vector<BenchRow> rows_;
+  std::vector<PairCache> caches_;   // one per pair; the thread's, replaced under the mutex
+  std::vector<std::size_t> bytes_;  // estimate_bytes of each kept pipeline
+  std::optional<std::vector<SweepSetting>> pending_sweep_;
+  std::shared_ptr<const SweepResult> sweep_result_;
+  BenchStatus status_;
+  std::atomic<bool> cancel_{false};
+  bool stop_ = false;
+  std::thread thread_;
+};
+
+}  // namespace pagor::studio

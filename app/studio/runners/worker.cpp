@@ -1,0 +1,199 @@
+#include "runners/worker.hpp"
+
+#include <chrono>
+
+#include "pagor/errors.hpp"
+
+namespace pagor::studio {
+
+Worker::Worker() : thread_([this] { loop(); }) {}
+
+Worker::~Worker() {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    stop_ = true;
+    cancel_ = true;
+  }
+  changed_.notify_all();
+  thread_.join();
+}
+
+std::uint64_t Worker::submit(std::optional<PairSource> data, const Config& config) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  Request r;
+  r.id = ++status_.submitted;
+  // A queued data change must survive a newer configuration-only request.
+  r.data = data ? std::move(data) : (pending_ ? pending_->data : std::nullopt);
+  r.config = config;
+  pending_ = std::move(r);
+  cancel_ = true;  // the running request, if any, is now outdated
+  changed_.notify_all();
+  return status_.submitted;
+}
+
+std::shared_ptr<const Snapshot> Worker::snapshot() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return snapshot_;
+}
+
+WorkerStatus Worker::status() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return status_;
+}
+
+bool Worker::wait_idle(double timeout_s) const {
+  std::unique_lock<std::mutex> lock(mutex_);
+  return changed_.wait_for(lock, std::chrono::duration<double>(timeout_s), [this] {
+    return status_.finished == status_.submitted && !status_.busy;
+  });
+}
+
+void Worker::loop() {
+  for (;;) {
+    Request request;
+    {
+      std::unique_lock<std::mutex> lock(mutex_);
+      changed_.wait(lock, [this] { return stop_ || pending_.has_value(); });
+      if (stop_) return;
+      request = std::move(*pending_);
+      pending_.reset();
+      cancel_ = false;
+      status_.busy = true;
+      status_.error.clear();
+    }
+    handle(std::move(request));
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      status_.busy = pending_.has_value();
+      status_.finished = std::max(status_.finished, request.id);
+      status_.activity.clear();
+    }
+    changed_.notify_all();
+  }
+}
+
+void Worker::handle(Request request) {
+  const auto fail = [this](const std::string& message) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    status_.error = message;
+  };
+  if (request.data) {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      status_.activity = "loading " + describe(*request.data);
+    }
+    try {
+      // Unlabelled clouds are fine: the pipeline falls back to class-agnostic landmarks.
+      LoadedPair pair = load_pair(*request.data, request.config.indoor);
+      source_ = std::make_shared<const PointCloud>(std::move(pair.source.cloud));
+      target_ = std::make_shared<const PointCloud>(std::move(pair.target.cloud));
+      ground_truth_ = pair.T_target_source_gt;
+      const bool indoor = pair.plan.has_value();  // a scan against a floor plan
+      plan_ = indoor ? std::make_shared<const FloorPlan>(std::move(*pair.plan)) : nullptr;
+      scan_columns_ =
+          indoor ? std::make_shared<const std::vector<DetectedColumn>>(std::move(pair.scan_columns))
+                 : nullptr;
+      description_ = describe(*request.data);
+      ++data_generation_;
+      pipeline_.set_input(*source_, *target_);
+      pipeline_.set_ground_truth(ground_truth_);
+    } catch (const Error& e) {
+      fail(e.what());
+      return;
+    }
+  }
+  try {
+    pipeline_.set_config(request.config);
+  } catch (const ConfigError& e) {
+    fail(e.what());
+    return;
+  }
+  if (!pipeline_.has_input()) return;
+  std::array<int, kStageCount> runs_before{};
+  for (int s = 0; s < kStageCount; ++s)
+    runs_before[static_cast<std::size_t>(s)] = pipeline_.runs(static_cast<Stage>(s));
+  try {
+    pipeline_.run(
+        [this](Stage stage, double fraction) {
+          std::lock_guard<std::mutex> lock(mutex_);
+          status_.stage = stage;
+          status_.fraction = fraction;
+          status_.activity = std::string("computing ") + stage_name(stage);
+        },
+        &cancel_);
+  } catch (const Cancelled&) {
+    return;  // a newer request is queued
+  } catch (const Error& e) {
+    fail(e.what());
+    return;
+  }
+  auto snap = make_snapshot(request.id);
+  for (int s = 0; s < kStageCount; ++s)
+    snap->stage_ran[static_cast<std::size_t>(s)] =
+        pipeline_.runs(static_cast<Stage>(s)) != runs_before[static_cast<std::size_t>(s)];
+  std::lock_guard<std::mutex> lock(mutex_);
+  snapshot_ = std::move(snap);
+}
+
+namespace {
+
+// The diagnosis and each verification point's contribution to D, for the diagnosis panel and
+// the 3D view; computed here, on the worker thread, never in the UI.
+void add_diagnosis(const Pipeline& p, Snapshot& s) {
+  s.diagnosis = diagnose(p);
+  s.graph = std::make_shared<const PyramidGraph>(p.graph());
+  const Verifier* v = p.verifier();
+  if (!v) return;
+  s.verification_source = std::make_shared<const std::vector<Eigen::Vector3f>>(v->source_points());
+  const double mu = p.config().verification.mu;
+  for (const PoseEstimate& e : p.poses())
+    s.contributions.push_back(e.valid ? point_contributions(*v, e.T_target_source, mu)
+                                      : std::vector<float>());
+  if (p.ground_truth()) s.gt_contribution = point_contributions(*v, *p.ground_truth(), mu);
+}
+
+}  // namespace
+
+std::shared_ptr<Snapshot> Worker::make_snapshot(std::uint64_t request) const {
+  const Pipeline& p = pipeline_;
+  auto s = std::make_shared<Snapshot>();
+  s->request = request;
+  s->data_generation = data_generation_;
+  s->description = description_;
+  s->source = source_;
+  s->target = target_;
+  s->ground_truth = ground_truth_;
+  s->plan = plan_;
+  s->scan_columns = scan_columns_;
+  s->config = p.config();
+  s->source_landmarks = p.source_landmarks();
+  s->target_landmarks = p.target_landmarks();
+  s->correspondences = p.correspondences().items;
+  s->correspondences_capped = p.correspondences().capped;
+  const auto& g = p.graph();
+  for (std::size_t l = 0; l < p.cliques().size(); ++l) {
+    LevelView v;
+    v.epsilon = g.thresholds[l];
+    v.vertices = g.active_vertices(static_cast<int>(l));
+    v.edges = g.edges_at_level[l];
+    v.clique = p.cliques()[l].vertices;
+    v.pose = p.poses()[l];
+    v.score = p.verification().scores[l];
+    if (l < p.level_errors().size()) v.error = p.level_errors()[l];
+    s->levels.push_back(std::move(v));
+  }
+  s->selected = p.selected_level();
+  s->acceptance = p.acceptance();
+  s->refinement = p.refinement();
+  s->unrefined_error = p.unrefined_error();
+  s->upper_bound = p.upper_bound_success();
+  s->selected_error = p.selected_error();
+  for (int i = 0; i < kStageCount; ++i)
+    s->stage_ms[static_cast<std::size_t>(i)] = p.time_ms(static_cast<Stage>(i));
+  s->verification_points = p.verifier() ? p.verifier()->source_points().size() : 0;
+  s->warnings = p.warnings();
+  add_diagnosis(p, *s);
+  return s;
+}
+
+}  // namespace pagor::studio

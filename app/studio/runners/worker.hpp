@@ -1,0 +1,122 @@
+#pragma once
+/// \file worker.hpp
+/// Runs the core's pipeline on a background thread so that the UI stays responsive: the UI
+/// submits requests (new data and/or a new configuration); a newer request cancels the running
+/// one; each finished run is published as an immutable snapshot the UI draws from.
+
+#include <array>
+#include <atomic>
+#include <condition_variable>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "pagor/io/dataset.hpp"
+#include "pagor/verify/diagnosis.hpp"
+#include "pagor/pipeline.hpp"
+
+namespace pagor::studio {
+
+/// One pyramid level as the UI shows it.
+struct LevelView {
+  double epsilon = 0;
+  std::size_t vertices = 0, edges = 0;
+  std::vector<int> clique;  ///< correspondence indices
+  PoseEstimate pose;
+  double score = 0;  ///< D [m]; +inf when invalid
+  std::optional<PoseError> error;
+};
+
+/// Everything a finished run shows; immutable once published.
+struct Snapshot {
+  std::uint64_t request = 0;          ///< request it answers
+  std::uint64_t data_generation = 0;  ///< changes whenever the clouds change
+  std::string description;            ///< the data, in words
+  std::shared_ptr<const PointCloud> source, target;
+  std::optional<Transform> ground_truth;
+  /// Indoor pair (target a floor plan): the plan's walls and columns [m]; null otherwise.
+  std::shared_ptr<const FloorPlan> plan;
+  /// Indoor pair: the columns found in the scan, in the scan (source) frame [m].
+  std::shared_ptr<const std::vector<DetectedColumn>> scan_columns;
+  Config config;
+  LandmarkSet source_landmarks, target_landmarks;
+  std::vector<Correspondence> correspondences;
+  bool correspondences_capped = false;
+  std::vector<LevelView> levels;
+  int selected = -1;
+  Acceptance acceptance;                     ///< the verdict on the selected pose
+  RefinementResult refinement;               ///< what refinement did to the selected pose
+  std::optional<PoseError> unrefined_error;  ///< the selected candidate's errors before refinement
+  bool upper_bound = false;
+  std::optional<PoseError> selected_error;
+  std::array<double, kStageCount> stage_ms{};  ///< last wall time per stage [ms]
+  std::array<bool, kStageCount> stage_ran{};   ///< which stages this run recomputed
+  std::size_t verification_points = 0;
+  std::vector<std::string> warnings;
+  // Diagnosis (computed by the worker after the run; see diagnosis.hpp).
+  std::optional<Diagnosis> diagnosis;         ///< with ground truth
+  std::shared_ptr<const PyramidGraph> graph;  ///< edges around a hovered correspondence
+  std::shared_ptr<const std::vector<Eigen::Vector3f>> verification_source;  ///< D's points
+  /// Per level, each verification point's min(d, mu) under its candidate [m] (empty: invalid).
+  std::vector<std::vector<float>> contributions;
+  std::vector<float> gt_contribution;  ///< the same under the ground truth (empty without)
+};
+
+/// What the worker is doing.
+struct WorkerStatus {
+  bool busy = false;
+  Stage stage = Stage::landmarks;  ///< stage running (when busy)
+  double fraction = 0;             ///< overall progress of the run, 0..1
+  std::string activity;            ///< e.g. "loading data"
+  std::string error;               ///< last error (data or configuration); empty when fine
+  std::uint64_t submitted = 0, finished = 0;
+};
+
+class Worker {
+ public:
+  Worker();
+  ~Worker();
+  Worker(const Worker&) = delete;
+  Worker& operator=(const Worker&) = delete;
+
+  /// Queues new data (nullopt keeps the current data) and a configuration; returns the request id.
+  std::uint64_t submit(std::optional<PairSource> data, const Config& config);
+  /// The latest finished snapshot (null before the first).
+  std::shared_ptr<const Snapshot> snapshot() const;
+  WorkerStatus status() const;
+  /// Blocks until every submitted request is handled or `timeout_s` passes; true when idle.
+  bool wait_idle(double timeout_s) const;
+
+ private:
+  struct Request {
+    std::uint64_t id = 0;
+    std::optional<PairSource> data;
+    Config config;
+  };
+  void loop();
+  void handle(Request request);
+  std::shared_ptr<Snapshot> make_snapshot(std::uint64_t request) const;
+
+  mutable std::mutex mutex_;
+  mutable std::condition_variable changed_;
+  std::optional<Request> pending_;
+  std::shared_ptr<const Snapshot> snapshot_;
+  WorkerStatus status_;
+  std::atomic<bool> cancel_{false};
+  bool stop_ = false;
+
+  // Owned by the worker thread.
+  Pipeline pipeline_;
+  std::shared_ptr<const PointCloud> source_, target_;
+  std::optional<Transform> ground_truth_;
+  std::shared_ptr<const FloorPlan> plan_;
+  std::shared_ptr<const std::vector<DetectedColumn>> scan_columns_;
+  std::string description_;
+  std::uint64_t data_generation_ = 0;
+  std::thread thread_;
+};
+
+}  // namespace pagor::studio

@@ -1,0 +1,299 @@
+#include "scene/scene_view.hpp"
+
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <nlohmann/json.hpp>
+#include <unordered_map>
+
+#include "scene/diagnosis_overlay.hpp"
+#include "render/resources.hpp"
+#include "render/shader_program.hpp"
+
+namespace pagor::studio {
+namespace {
+
+constexpr Rgba kGrey{120, 120, 120, 255};
+constexpr int kFloatsPerVertex = 4;  // x, y, z, packed RGBA
+
+float pack(const Rgba& c) {
+  float f;
+  std::uint32_t u = static_cast<std::uint32_t>(c[0]) | (static_cast<std::uint32_t>(c[1]) << 8) |
+                    (static_cast<std::uint32_t>(c[2]) << 16) |
+                    (static_cast<std::uint32_t>(c[3]) << 24);
+  static_assert(sizeof(f) == sizeof(u));
+  std::memcpy(&f, &u, sizeof(f));
+  return f;
+}
+
+void push(std::vector<float>& v, const Eigen::Vector3f& p, const Rgba& c) {
+  v.insert(v.end(), {p.x(), p.y(), p.z(), pack(c)});
+}
+
+}  // namespace
+
+ClassColors::ClassColors() {
+  const auto j = nlohmann::json::parse(resource("class_colors.json").text());
+  for (const auto& item : j.items()) {
+    if (!item.value().is_array() || item.value().size() != 3) continue;
+    colors_[item.key()] = {item.value()[0].get<unsigned char>(),
+                           item.value()[1].get<unsigned char>(),
+                           item.value()[2].get<unsigned char>(), 255};
+  }
+}
+
+Rgba ClassColors::of(const std::string& name) const {
+  const auto it = colors_.find(name);
+  return it == colors_.end() ? kGrey : it->second;
+}
+
+std::vector<Rgba> ClassColors::per_point(const PointCloud& cloud, const LabelScheme& scheme) const {
+  std::unordered_map<std::uint32_t, Rgba> by_id;
+  for (const auto& c : scheme.classes)
+    for (std::uint32_t id : c.ids) by_id[id] = of(c.name);
+  std::vector<Rgba> out(cloud.size(), kGrey);
+  for (std::size_t i = 0; i < cloud.size() && i < cloud.labels.size(); ++i) {
+    const auto it = by_id.find(semantic_id(cloud.labels[i]));
+    if (it != by_id.end()) out[i] = it->second;
+  }
+  return out;
+}
+
+Eigen::Vector3f transform_point(const Transform& T, const Eigen::Vector3d& p) {
+  return (T.block<3, 3>(0, 0) * p + T.block<3, 1>(0, 3)).cast<float>();
+}
+
+double ground_truth_residual(const Correspondence& c, const Transform& T_gt) {
+  return (T_gt.block<3, 3>(0, 0) * c.p + T_gt.block<3, 1>(0, 3) - c.q).norm();
+}
+
+bool true_inlier(const Correspondence& c, const Transform& T_gt, double bound) {
+  return ground_truth_residual(c, T_gt) <= bound;
+}
+
+bool SceneView::init(const Gl& gl, std::string& error) {
+  gl_ = &gl;
+  program_ = build_program(gl, "points.vert", "points.frag", error);
+  if (!program_) return false;
+  u_mvp_ = gl.GetUniformLocation(program_, "u_mvp");
+  u_point_size_ = gl.GetUniformLocation(program_, "u_point_size");
+  u_use_uniform_ = gl.GetUniformLocation(program_, "u_use_uniform_color");
+  u_color_ = gl.GetUniformLocation(program_, "u_color");
+  u_round_ = gl.GetUniformLocation(program_, "u_round");
+  for (Buffer* b : {&source_, &target_, &landmarks_src_, &landmarks_tgt_, &keypoints_src_,
+                    &keypoints_tgt_, &contribution_}) {
+    gl.GenVertexArrays(1, &b->vao);
+    gl.GenBuffers(1, &b->vbo);
+    gl.BindVertexArray(b->vao);
+    gl.BindBuffer(GL_ARRAY_BUFFER, b->vbo);
+    gl.EnableVertexAttribArray(0);
+    gl.EnableVertexAttribArray(1);
+    gl.VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, kFloatsPerVertex * sizeof(float), nullptr);
+    gl.VertexAttribPointer(1, 4, GL_UNSIGNED_BYTE, GL_TRUE, kFloatsPerVertex * sizeof(float),
+                           reinterpret_cast<void*>(3 * sizeof(float)));
+  }
+  gl.BindVertexArray(0);
+  return true;
+}
+
+void SceneView::shutdown() {
+  if (!gl_) return;
+  for (Buffer* b : {&source_, &target_, &landmarks_src_, &landmarks_tgt_, &keypoints_src_,
+                    &keypoints_tgt_, &contribution_}) {
+    gl_->DeleteBuffers(1, &b->vbo);
+    gl_->DeleteVertexArrays(1, &b->vao);
+  }
+  gl_->DeleteFramebuffers(1, &fbo_);
+  gl_->DeleteTextures(1, &color_texture_);
+  gl_->DeleteRenderbuffers(1, &depth_rb_);
+  gl_->DeleteProgram(program_);
+  gl_ = nullptr;
+}
+
+void SceneView::upload(Buffer& b, const std::vector<float>& v) {
+  gl_->BindBuffer(GL_ARRAY_BUFFER, b.vbo);
+  gl_->BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(v.size() * sizeof(float)), v.data(),
+                  GL_STATIC_DRAW);
+  b.count = static_cast<GLsizei>(v.size() / kFloatsPerVertex);
+}
+
+void SceneView::update(const Snapshot& s, const ViewState& view, const Transform& pose) {
+  // Dense clouds: only when the data or the label scheme changes.
+  const std::string scheme = s.config.label_scheme.name + "/" + s.config.label_scheme.class_list();
+  if (s.data_generation != cloud_generation_ || scheme != cloud_scheme_) {
+    for (const auto& [cloud, buffer] :
+         {std::pair{s.source.get(), &source_}, std::pair{s.target.get(), &target_}}) {
+      std::vector<float> v;
+      if (cloud) {
+        const std::vector<Rgba> colors = class_colors_.per_point(*cloud, s.config.label_scheme);
+        v.reserve(cloud->size() * kFloatsPerVertex);
+        for (std::size_t i = 0; i < cloud->size(); ++i) push(v, cloud->points[i], colors[i]);
+      }
+      upload(*buffer, v);
+    }
+    cloud_generation_ = s.data_generation;
+    cloud_scheme_ = scheme;
+    ++cloud_uploads_;
+  }
+
+  update_contribution(s, view);
+  // Landmarks: small; again when the snapshot, the level, the pose or the colouring change.
+  const int level = shown_level(view, s.selected, static_cast<int>(s.levels.size()));
+  std::string key = std::to_string(level) + (view.layers.all_correspondences ? "a" : "c") +
+                    (view.color == ColorMode::by_class ? "k" : "s");
+  for (int i = 0; i < 16; ++i) key += std::to_string(pose(i / 4, i % 4)) + ",";
+  if (s.request == overlay_request_ && key == overlay_key_) return;
+  overlay_request_ = s.request;
+  overlay_key_ = key;
+
+  std::vector<char> used_src(s.source_landmarks.landmarks.size(), 0),
+      used_tgt(s.target_landmarks.landmarks.size(), 0);
+  for (const auto& c : s.correspondences) {
+    used_src[static_cast<std::size_t>(c.source)] = 1;
+    used_tgt[static_cast<std::size_t>(c.target)] = 1;
+  }
+  const auto landmark_vertices = [&](const LandmarkSet& set, const std::vector<char>& used,
+                                     bool source, LandmarkKind kind) {
+    std::vector<float> v;
+    for (std::size_t i = 0; i < set.landmarks.size(); ++i) {
+      const Landmark& lm = set.landmarks[i];
+      if (lm.kind != kind || (kind == LandmarkKind::keypoint && !used[i])) continue;
+      const Rgba color =
+          view.color == ColorMode::by_class
+              ? class_colors_.of(set.classes[static_cast<std::size_t>(lm.class_index)].name)
+              : (source ? Palette::source : Palette::target);
+      push(v, source ? transform_point(pose, lm.centroid) : lm.centroid.cast<float>(), color);
+    }
+    return v;
+  };
+  upload(landmarks_src_,
+         landmark_vertices(s.source_landmarks, used_src, true, LandmarkKind::cluster));
+  upload(landmarks_tgt_,
+         landmark_vertices(s.target_landmarks, used_tgt, false, LandmarkKind::cluster));
+  upload(keypoints_src_,
+         landmark_vertices(s.source_landmarks, used_src, true, LandmarkKind::keypoint));
+  upload(keypoints_tgt_,
+         landmark_vertices(s.target_landmarks, used_tgt, false, LandmarkKind::keypoint));
+}
+
+void SceneView::update_contribution(const Snapshot& s, const ViewState& view) {
+  const Contribution mode = view.diagnosis.contribution;
+  const int level = shown_level(view, s.selected, static_cast<int>(s.levels.size()));
+  const std::string key = std::to_string(s.request) + "/" + std::to_string(static_cast<int>(mode)) +
+                          "/" + std::to_string(level);
+  if (key == contribution_key_) return;
+  contribution_key_ = key;
+  const std::vector<float>* part = nullptr;
+  if (mode == Contribution::ground_truth && s.ground_truth) {
+    part = &s.gt_contribution;
+    contribution_pose_ = *s.ground_truth;
+  } else if (mode == Contribution::candidate && level >= 0 &&
+             static_cast<std::size_t>(level) < s.contributions.size()) {
+    part = &s.contributions[static_cast<std::size_t>(level)];
+    contribution_pose_ = s.levels[static_cast<std::size_t>(level)].pose.T_target_source;
+  }
+  std::vector<float> v;
+  if (part && s.verification_source && part->size() == s.verification_source->size()) {
+    const float mu = static_cast<float>(s.config.verification.mu);
+    v.reserve(part->size() * kFloatsPerVertex);
+    for (std::size_t i = 0; i < part->size(); ++i)
+      push(v, (*s.verification_source)[i], diagnosis_colormap((*part)[i] / mu));
+  }
+  upload(contribution_, v);
+}
+
+float SceneView::ground_z(const Snapshot& s) {
+  if (s.data_generation == ground_generation_ || !s.target || s.target->points.empty())
+    return ground_z_;
+  std::vector<float> z;
+  const std::size_t stride = std::max<std::size_t>(1, s.target->points.size() / 20000);
+  for (std::size_t i = 0; i < s.target->points.size(); i += stride)
+    z.push_back(s.target->points[i].z());
+  const auto k = static_cast<std::ptrdiff_t>(0.02 * static_cast<double>(z.size() - 1));
+  std::nth_element(z.begin(), z.begin() + k, z.end());
+  ground_z_ = z[static_cast<std::size_t>(k)];
+  ground_generation_ = s.data_generation;
+  return ground_z_;
+}
+
+void SceneView::resize(int width, int height) {
+  if (width == fb_width_ && height == fb_height_ && fbo_) return;
+  const Gl& gl = *gl_;
+  if (!fbo_) {
+    gl.GenFramebuffers(1, &fbo_);
+    gl.GenTextures(1, &color_texture_);
+    gl.GenRenderbuffers(1, &depth_rb_);
+  }
+  gl.BindTexture(GL_TEXTURE_2D, color_texture_);
+  gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+  gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  gl.BindRenderbuffer(GL_RENDERBUFFER, depth_rb_);
+  gl.RenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
+  gl.BindFramebuffer(GL_FRAMEBUFFER, fbo_);
+  gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color_texture_, 0);
+  gl.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_rb_);
+  gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
+  fb_width_ = width;
+  fb_height_ = height;
+}
+
+void SceneView::draw(const Buffer& b, GLenum mode, const Eigen::Matrix4f& mvp, float size,
+                     bool round, const Rgba* uniform_color) {
+  if (b.count == 0) return;
+  const Gl& gl = *gl_;
+  gl.UniformMatrix4fv(u_mvp_, 1, GL_FALSE, mvp.data());
+  gl.Uniform1f(u_point_size_, size);
+  gl.Uniform1i(u_round_, round ? 1 : 0);
+  gl.Uniform1i(u_use_uniform_, uniform_color ? 1 : 0);
+  if (uniform_color)
+    gl.Uniform4f(u_color_, (*uniform_color)[0] / 255.0f, (*uniform_color)[1] / 255.0f,
+                 (*uniform_color)[2] / 255.0f, (*uniform_color)[3] / 255.0f);
+  gl.BindVertexArray(b.vao);
+  gl.DrawArrays(mode, 0, b.count);
+}
+
+void SceneView::render(int width, int height, const Camera& camera, const ViewState& view,
+                       const Transform& pose) {
+  if (width <= 0 || height <= 0) return;
+  resize(width, height);
+  const Gl& gl = *gl_;
+  gl.BindFramebuffer(GL_FRAMEBUFFER, fbo_);
+  gl.Viewport(0, 0, width, height);
+  const auto& bg = Palette::background;
+  gl.ClearColor(bg[0] / 255.0f, bg[1] / 255.0f, bg[2] / 255.0f, 1.0f);
+  gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  gl.Enable(GL_DEPTH_TEST);
+  gl.DepthFunc(GL_LEQUAL);
+  gl.Enable(GL_PROGRAM_POINT_SIZE);
+  gl.Enable(GL_BLEND);
+  gl.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  gl.UseProgram(program_);
+
+  const Eigen::Matrix4f vp = camera.projection(static_cast<float>(width) / height) * camera.view();
+  const Eigen::Matrix4f source_mvp = vp * pose.cast<float>();
+  const bool by_cloud = view.color == ColorMode::by_cloud;
+  if (view.layers.target)
+    draw(target_, GL_POINTS, vp, view.point_size, false, by_cloud ? &Palette::target : nullptr);
+  if (view.layers.source && view.diagnosis.contribution != Contribution::off)
+    draw(contribution_, GL_POINTS, vp * contribution_pose_.cast<float>(), view.point_size + 1.0f,
+         false, nullptr);
+  else if (view.layers.source)
+    draw(source_, GL_POINTS, source_mvp, view.point_size, false,
+         by_cloud ? &Palette::source : nullptr);
+  // Landmarks on top of the clouds (lines are drawn over everything by the overlay).
+  gl.DepthMask(GL_FALSE);
+  gl.Disable(GL_DEPTH_TEST);
+  if (view.layers.landmarks) {
+    draw(keypoints_tgt_, GL_POINTS, vp, view.landmark_size * 0.5f, true, nullptr);
+    draw(keypoints_src_, GL_POINTS, vp, view.landmark_size * 0.5f, true, nullptr);
+    draw(landmarks_tgt_, GL_POINTS, vp, view.landmark_size, true, nullptr);
+    draw(landmarks_src_, GL_POINTS, vp, view.landmark_size, true, nullptr);
+  }
+  gl.DepthMask(GL_TRUE);
+  gl.BindVertexArray(0);
+  gl.UseProgram(0);
+  gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+}  // namespace pagor::studio

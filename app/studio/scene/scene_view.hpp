@@ -1,0 +1,102 @@
+#pragma once
+/// \file scene_view.hpp
+/// The 3D view: dense clouds and landmarks drawn into an offscreen
+/// framebuffer that the UI shows as an image. Cloud data stays on the GPU between frames and is
+/// uploaded again only when the data (or the colouring) changes. Lines, grid and legend are drawn
+/// over it by scene_overlay.hpp.
+
+#include <array>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "state/app_state.hpp"
+#include "render/gl.hpp"
+#include "runners/worker.hpp"
+
+namespace pagor::studio {
+
+using Rgba = std::array<unsigned char, 4>;
+
+/// Class colours from the embedded assets/class_colors.json.
+class ClassColors {
+ public:
+  ClassColors();
+  /// Colour of a class name (grey when unlisted).
+  Rgba of(const std::string& class_name) const;
+  /// Colour of each raw label under a scheme (grey for labels of no class).
+  std::vector<Rgba> per_point(const PointCloud& cloud, const LabelScheme& scheme) const;
+
+ private:
+  std::map<std::string, Rgba> colors_;
+};
+
+/// Colours of the overlay elements, shared by the renderer and the legend.
+struct Palette {
+  static constexpr Rgba source{60, 180, 255, 255};
+  static constexpr Rgba target{255, 150, 40, 255};
+  static constexpr Rgba clique{60, 230, 90, 255};
+  static constexpr Rgba clique_outlier{255, 60, 60, 255};
+  static constexpr Rgba other{200, 200, 200, 70};
+  static constexpr Rgba background{22, 24, 28, 255};
+};
+
+/// Whether a correspondence agrees with the ground truth: its residual under T_gt is within
+/// `bound` [m] (the studio uses the success criterion's translation tolerance, as KITTI's ground
+/// truth itself is only good to about a metre).
+bool true_inlier(const Correspondence& c, const Transform& T_gt, double bound);
+/// |T_gt p - q| of a correspondence [m].
+double ground_truth_residual(const Correspondence& c, const Transform& T_gt);
+/// A source point moved by T, as the GPU buffers store it.
+Eigen::Vector3f transform_point(const Transform& T, const Eigen::Vector3d& p);
+
+class SceneView {
+ public:
+  bool init(const Gl& gl, std::string& error);
+  void shutdown();
+
+  /// Brings GPU buffers up to date with a snapshot and the view state; cheap when nothing changed.
+  void update(const Snapshot& snapshot, const ViewState& view, const Transform& source_pose);
+  /// Draws into the offscreen framebuffer of width x height pixels.
+  void render(int width, int height, const Camera& camera, const ViewState& view,
+              const Transform& source_pose);
+  /// The colour texture of the last render (for ImGui::Image).
+  GLuint texture() const { return color_texture_; }
+  /// Cloud uploads so far (a test of "no re-upload per frame").
+  int cloud_uploads() const { return cloud_uploads_; }
+  const ClassColors& class_colors() const { return class_colors_; }
+  /// Height of the ground under the target: its 2 % height quantile [m] (cached per data).
+  float ground_z(const Snapshot& snapshot);
+
+ private:
+  struct Buffer {
+    GLuint vao = 0, vbo = 0;
+    GLsizei count = 0;
+  };
+  void upload(Buffer& b, const std::vector<float>& interleaved);
+  void draw(const Buffer& b, GLenum mode, const Eigen::Matrix4f& mvp, float size, bool round,
+            const Rgba* uniform_color);
+  void resize(int width, int height);
+  /// The verification points coloured by their contribution to D (ViewState::diagnosis).
+  void update_contribution(const Snapshot& s, const ViewState& view);
+
+  const Gl* gl_ = nullptr;
+  ClassColors class_colors_;
+  GLuint program_ = 0, fbo_ = 0, color_texture_ = 0, depth_rb_ = 0;
+  GLint u_mvp_ = -1, u_point_size_ = -1, u_use_uniform_ = -1, u_color_ = -1, u_round_ = -1;
+  int fb_width_ = 0, fb_height_ = 0;
+  Buffer source_, target_, landmarks_src_, landmarks_tgt_, keypoints_src_, keypoints_tgt_;
+  Buffer contribution_;  ///< drawn instead of the source when not empty
+  Transform contribution_pose_ = Transform::Identity();  ///< the pose the contribution is under
+  std::string contribution_key_;
+  std::uint64_t ground_generation_ = 0;
+  float ground_z_ = 0.0f;
+  std::uint64_t cloud_generation_ = 0;
+  std::string cloud_scheme_;
+  std::uint64_t overlay_request_ = 0;
+  std::string overlay_key_;
+  int cloud_uploads_ = 0;
+};
+
+}  // namespace pagor::studio

@@ -1,0 +1,146 @@
+#pragma once
+/// \file app_state.hpp
+/// The studio's state: what data is open, every parameter, the camera and what is shown. Panels
+/// draw from it and edit it; the session file is this state on disk.
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "scene/camera.hpp"
+#include "pagor/config.hpp"
+#include "pagor/io/dataset.hpp"
+
+namespace pagor::studio {
+
+enum class ColorMode { by_class, by_cloud };
+/// Where the source is drawn: under the shown level's candidate, the truth, its own frame, or
+/// the refined selection (the candidate where refinement did not apply).
+enum class PoseShown { selected, ground_truth, identity, refined };
+
+/// Which correspondences the diagnosis filter keeps (by their ground-truth residual).
+enum class TruthFilter { all, inliers, outliers };
+/// What the source cloud is coloured by: its class (or cloud), or each verification point's
+/// contribution min(d, mu) to D under the shown level's candidate or under the ground truth.
+enum class Contribution { off, candidate, ground_truth };
+
+/// The diagnosis items of the view (diagnosis_panel.cpp); they need a ground truth.
+struct DiagnosisView {
+  bool panel = false;              ///< the bottom panel shows the diagnosis instead of the pyramid
+  bool color_by_residual = false;  ///< correspondence lines coloured by ground-truth residual
+  std::string class_name;          ///< only this class's correspondences (empty: every class)
+  TruthFilter truth = TruthFilter::all;  ///< only true / only false correspondences
+  bool edges_on_hover = true;  ///< a hovered correspondence shows its graph edges at the level
+  Contribution contribution = Contribution::off;  ///< colour the source by its part of D
+};
+
+/// Which layers of the 3D view are drawn.
+struct Layers {
+  bool source = true;
+  bool target = true;
+  bool landmarks = true;
+  bool correspondences = true;       ///< the shown level's clique
+  bool all_correspondences = false;  ///< also those outside the clique, faint
+  bool plan = true;  ///< indoor pairs: the plan's walls and columns, and the scan's columns
+};
+
+struct ViewState {
+  Layers layers;
+  float point_size = 2.0f;      ///< dense clouds [px]
+  float landmark_size = 11.0f;  ///< landmarks [px]
+  float line_width = 2.5f;      ///< correspondence lines [px]
+  bool grid = true;             ///< ground grid, axes and scale bar
+  bool legend = true;           ///< colour legend
+  ColorMode color = ColorMode::by_class;
+  PoseShown pose = PoseShown::selected;  ///< how the source cloud is placed
+  int level = -1;                        ///< pyramid level shown; -1 follows the selected one
+  DiagnosisView diagnosis;               ///< diagnosis panel and 3D-view items
+};
+
+/// Where the splitters are; kept in the session.
+struct LayoutState {
+  float left_width = 330.0f;  ///< left panel [px] (clamped to the window)
+  float scene_share = 0.6f;   ///< share of the height right of the panel taken by the 3D view
+};
+
+/// Limits of the view settings (widgets and the session reader enforce them).
+struct ViewLimits {
+  static constexpr float min_point_size = 1.0f, max_point_size = 10.0f;        ///< [px]
+  static constexpr float min_landmark_size = 3.0f, max_landmark_size = 30.0f;  ///< [px]
+  static constexpr float min_line_width = 1.0f, max_line_width = 8.0f;         ///< [px]
+  static constexpr float min_left_width = 180.0f, max_left_width = 1200.0f;    ///< [px]
+  static constexpr float min_scene_share = 0.2f, max_scene_share = 0.9f;
+};
+
+/// What the main area shows: the pair view (3D view and pyramid) or the benchmark view.
+enum class MainView { pair, benchmark };
+
+/// The benchmark view (benchmark_view.hpp); kept in the session.
+struct BenchViewState {
+  enum Source { manifest = 0, kitti_pairs = 1, results = 2 };
+  int source = manifest;  ///< what `path` names
+  std::string path;       ///< the manifest, KITTI pairs file or `pagor bench --out` results
+  std::string kitti_root = "../shared/data/kitti";  ///< kitti_pairs: the KITTI root
+  std::string sequence = "00";                      ///< kitti_pairs: the sequence
+  std::string config_path;  ///< a configuration JSON the user loads for the set
+  bool open = false;        ///< a set is open (re-opened when a session is loaded)
+  std::string filter;       ///< rows whose pair name contains this
+  int show = 0;             ///< 0 all, 1 failures, 2 successes, 3 accepted, 4 rejected
+  int sort = 0;             ///< column index of benchmark_view's columns
+  bool descending = false;
+  int budget_mib = 1024;                 ///< memory budget of the per-pair caches [MiB]
+  std::string plot_path = "pagor-plot";  ///< exports go to PATH-<plot>.png / .csv
+  std::string sweep_mu = "0.5,1,2";      ///< sweep: mu values [m]
+  std::string sweep_thresholds;          ///< sweep: threshold sets ("a,b;c,d"), empty: current
+  int sweep_pair = 0;                    ///< sweep: the pair whose D is plotted
+};
+
+struct AppState {
+  PairSource data;       ///< as the user wrote it; relative paths are taken from `base_dir`
+  std::string base_dir;  ///< directory of the loaded session file (empty: working directory)
+  bool have_data = false;
+  std::string pairs_file;                  ///< optional: steps through its pairs
+  std::vector<std::pair<int, int>> pairs;  ///< read from pairs_file
+  int pair_index = -1;
+
+  Config config = default_config();
+  MainView main_view = MainView::pair;
+  BenchViewState bench;
+  ViewState view;
+  LayoutState layout;
+  Camera camera;
+  bool camera_fitted = false;  ///< false: fit to the data when it arrives
+
+  std::string session_path = "pagor-session.json";
+  std::string screenshot_path = "pagor-studio.png";
+  std::string message;  ///< last message for the user
+  bool message_is_error = false;
+  bool want_screenshot = false;
+  bool show_help = false;          ///< the shortcut overlay (F1 or H)
+  int width = 1280, height = 720;  ///< window or image size [px]
+};
+
+/// Writes the state as a session file (schema pagor.session/1). Throws pagor::InputError.
+void save_session(const AppState& state, const std::string& path);
+
+/// Reads a session file into `state`. Data paths are kept as written; relative ones are taken
+/// from the session file's directory (`base_dir`). Throws pagor::InputError or
+/// pagor::ConfigError naming the file and key.
+void load_session(const std::string& path, AppState& state);
+
+/// A path the user wrote, resolved against `base_dir` when relative.
+std::string resolve_path(const AppState& state, const std::string& path);
+
+/// `data` with its relative paths resolved against `base_dir`.
+PairSource resolved_data(const AppState& state);
+
+/// Whether `data` is an indoor pair: a scan against a floor plan (dataset.hpp).
+bool is_indoor(const PairSource& data);
+
+/// Index of `data`'s KITTI frame pair in `pairs`, or -1.
+int index_of_pair(const std::vector<std::pair<int, int>>& pairs, const PairSource& data);
+
+/// The level the view shows: `view.level` if valid, else the selected one (or -1).
+int shown_level(const ViewState& view, int selected, int levels);
+
+}  // namespace pagor::studio

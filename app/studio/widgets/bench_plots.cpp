@@ -1,0 +1,269 @@
+#include "widgets/bench_plots.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+namespace pagor::studio {
+namespace {
+
+double percent(int n, int of) {
+  return of ? 100.0 * n / of : 0.0;
+}
+
+// A rate of nothing (no pair with a ground truth, none accepted, none successful) is NaN, shown
+// as n/a, rather than the 0 % or 100 % the summary's conventions would give.
+double rate_or_none(int n, int of) {
+  return of ? percent(n, of) : std::numeric_limits<double>::quiet_NaN();
+}
+
+// A plot whose values are percentages, on an axis from 0 to 100 %.
+Plot percent_plot(PlotKind kind, const char* value_label) {
+  Plot p;
+  p.kind = kind;
+  p.value_label = value_label;
+  p.value_unit = "%";
+  p.value_min = 0.0;
+  p.value_max = 100.0;
+  return p;
+}
+
+}  // namespace
+
+Plot sweep_success_plot(const SweepResult& result) {
+  Plot p = percent_plot(PlotKind::bars, "pairs with ground truth");
+  p.title = "Sweep: success per setting";
+  p.series = {{"success", {}, {}}, {"upper bound", {}, {}}};
+  for (const SweepSettingResult& r : result.settings) {
+    p.categories.push_back(r.setting.label);
+    p.series[0].y.push_back(percent(r.summary.successes, r.summary.with_truth));
+    p.series[1].y.push_back(percent(r.summary.upper_bound, r.summary.with_truth));
+  }
+  return p;
+}
+
+namespace {
+
+// What a line plot puts on x: mu, or the single threshold, when the settings differ in that
+// alone (and take at least two values).
+enum class Axis { none, mu, epsilon };
+
+Axis line_axis(const SweepResult& result) {
+  if (result.settings.size() < 2) return Axis::none;
+  const auto without = [](Config c, Axis a) {
+    if (a == Axis::mu) c.verification.mu = 0;
+    if (a == Axis::epsilon) c.graph.thresholds = {1.0};
+    return config_to_json(c, -1);
+  };
+  for (Axis a : {Axis::mu, Axis::epsilon}) {
+    const std::string first = without(result.settings[0].setting.config, a);
+    bool same = true;
+    for (const SweepSettingResult& r : result.settings)
+      same = same && without(r.setting.config, a) == first &&
+             (a != Axis::epsilon || r.setting.config.graph.thresholds.size() == 1);
+    if (same) return a;
+  }
+  return Axis::none;
+}
+
+double axis_value(const Config& c, Axis a) {
+  return a == Axis::mu ? c.verification.mu : c.graph.thresholds.front();
+}
+
+void set_axis(Plot& p, Axis a, const Config& c) {
+  p.x_label = a == Axis::mu ? "mu" : "epsilon";
+  p.x_unit = a == Axis::mu ? "m" : (c.graph.trim == TrimKind::ratio ? "ratio" : "m");
+}
+
+}  // namespace
+
+Plot sweep_line_plot(const SweepResult& result) {
+  Plot p = percent_plot(PlotKind::lines, "success");
+  const Axis a = line_axis(result);
+  if (a == Axis::none) return p;
+  p.title = a == Axis::mu ? "Success against mu" : "Success against a single epsilon";
+  set_axis(p, a, result.settings[0].setting.config);
+  p.series = {{"success", {}, {}}, {"upper bound", {}, {}}};
+  for (const SweepSettingResult& r : result.settings) {
+    const double x = axis_value(r.setting.config, a);
+    p.series[0].x.push_back(x);
+    p.series[1].x.push_back(x);
+    p.series[0].y.push_back(percent(r.summary.successes, r.summary.with_truth));
+    p.series[1].y.push_back(percent(r.summary.upper_bound, r.summary.with_truth));
+  }
+  return p;
+}
+
+Plot sweep_pair_plot(const SweepResult& result, std::size_t pair) {
+  Plot p;
+  p.kind = PlotKind::lines;
+  p.value_label = "D of the selected pose";
+  p.value_unit = "m";
+  const Axis a = line_axis(result);
+  if (a == Axis::none || result.settings[0].outcomes.size() <= pair) return p;
+  p.title = "Pair " + result.settings[0].outcomes[pair].name + ": D and success";
+  set_axis(p, a, result.settings[0].setting.config);
+  p.series = {{"success", {}, {}, true}, {"failure", {}, {}, true}};
+  for (const SweepSettingResult& r : result.settings) {
+    const PairOutcome& o = r.outcomes[pair];
+    if (!o.loaded || !std::isfinite(o.score)) continue;
+    PlotSeries& s = p.series[o.success ? 0 : 1];
+    s.x.push_back(axis_value(r.setting.config, a));
+    s.y.push_back(o.score);
+  }
+  return p;
+}
+
+Plot picking_plot(const std::vector<PairOutcome>& outcomes) {
+  Plot p;
+  p.title = "Picking: per pyramid level";
+  p.kind = PlotKind::bars;
+  p.value_label = "pairs";
+  p.value_unit = "count";
+  p.value_min = 0.0;
+  p.integer_values = true;
+  std::size_t levels = 0;
+  for (const PairOutcome& o : outcomes) levels = std::max(levels, o.level_success.size());
+  p.series = {{"selected", std::vector<double>{}, std::vector<double>(levels, 0.0)},
+              {"alone would succeed", std::vector<double>{}, std::vector<double>(levels, 0.0)},
+              {"selected and succeeded", std::vector<double>{}, std::vector<double>(levels, 0.0)}};
+  for (std::size_t l = 0; l < levels; ++l) {
+    std::optional<double> eps;
+    std::optional<TrimKind> trim;
+    for (const PairOutcome& o : outcomes)  // the first outcome that knows this level's threshold
+      if (l < o.level_epsilons.size()) {
+        eps = o.level_epsilons[l];
+        trim = o.trim;
+        break;
+      }
+    p.categories.push_back(level_label(static_cast<int>(l), eps, trim));
+  }
+  for (const PairOutcome& o : outcomes) {
+    if (!o.loaded || o.negative || !o.has_ground_truth) continue;
+    if (o.selected_level >= 0 && static_cast<std::size_t>(o.selected_level) < levels) {
+      p.series[0].y[static_cast<std::size_t>(o.selected_level)] += 1;
+      if (o.success) p.series[2].y[static_cast<std::size_t>(o.selected_level)] += 1;
+    }
+    for (std::size_t l = 0; l < o.level_success.size(); ++l)
+      if (o.level_success[l]) p.series[1].y[l] += 1;
+  }
+  return p;
+}
+
+Plot rates_plot(const BenchmarkSummary& s) {
+  Plot p = percent_plot(PlotKind::bars, "rate");
+  p.title = "Rates";
+  p.categories = {"success", "upper bound", "verdict precision", "verdict recall"};
+  p.series = {{"this run",
+               {},
+               {rate_or_none(s.successes, s.with_truth), rate_or_none(s.upper_bound, s.with_truth),
+                rate_or_none(s.true_accepts, s.accepted),
+                rate_or_none(s.true_accepts, s.successes)}}};
+  return p;
+}
+
+}  // namespace pagor::studio
+
+namespace pagor::studio {
+
+std::string level_label(int level, std::optional<double> epsilon, std::optional<TrimKind> trim) {
+  std::string s = "level " + std::to_string(level);
+  if (!epsilon) return s;
+  char buf[48];
+  std::snprintf(buf, sizeof(buf), ": \xCE\xB5 = %.3g%s", *epsilon,
+                trim == TrimKind::difference ? " m" : "");
+  return s + buf;
+}
+
+namespace {
+
+constexpr ImU32 kTruthColor = IM_COL32(200, 200, 210, 255);
+constexpr ImU32 kFailureColor = IM_COL32(240, 60, 50, 255);
+constexpr ImU32 kRejectedColor = IM_COL32(125, 125, 130, 255);
+
+void add_plan(Plot& p, const FloorPlan& plan) {
+  for (const PlanWall& w : plan.walls) {
+    std::vector<std::array<double, 2>> line;
+    for (const Eigen::Vector2d& v : w.points) line.push_back({v.x(), v.y()});
+    if (w.closed && w.points.size() > 2) line.push_back(line.front());
+    p.backdrop.lines.push_back(std::move(line));
+  }
+  for (const PlanColumn& c : plan.columns)
+    p.backdrop.circles.push_back({c.center.x(), c.center.y(), c.radius});
+}
+
+std::string pair_tip(const PairOutcome& o, std::size_t index, const Eigen::Vector3d& t) {
+  char buf[160];
+  std::snprintf(buf, sizeof(buf), " (scan index %zu)\nposition (%.2f, %.2f) m", index, t.x(),
+                t.y());
+  std::string tip = "pair " + o.name + buf;
+  if (o.error) {
+    std::snprintf(buf, sizeof(buf), "\nerror %.2f m, %.2f\xC2\xB0 (%s)", o.error->translation,
+                  o.error->rotation_deg, o.success ? "success" : "failure");
+    tip += buf;
+  }
+  const auto l = static_cast<std::size_t>(o.selected_level);
+  const std::optional<double> eps =
+      l < o.level_epsilons.size() ? std::optional<double>(o.level_epsilons[l]) : std::nullopt;
+  return tip + "\n" + level_label(o.selected_level, eps, o.trim) +
+         " picked\nverdict: " + (o.accepted ? "accepted" : "rejected");
+}
+
+}  // namespace
+
+Plot trajectory_plot(const std::vector<PairOutcome>& outcomes, const FloorPlan* plan) {
+  Plot p;
+  p.title = "Trajectory: re-localized positions over the plan";
+  p.kind = PlotKind::map;
+  p.x_label = "x";
+  p.x_unit = "m";
+  p.value_label = "y";
+  p.value_unit = "m";
+  if (plan) add_plan(p, *plan);
+  p.series = {{"ground truth", {}, {}},
+              {"re-localized", {}, {}},
+              {"failure", {}, {}},
+              {"rejected", {}, {}}};
+  p.series[0].line_only = true;
+  p.series[0].color = kTruthColor;
+  p.series[2].marker = PlotMarker::cross;
+  p.series[2].color = kFailureColor;
+  p.series[3].color = kRejectedColor;
+  p.color_bar = PlotColorBar{"time", "scan index", 0.0, std::max(1.0, outcomes.size() - 1.0)};
+  for (std::size_t i = 0; i < outcomes.size(); ++i) {
+    const PairOutcome& o = outcomes[i];
+    if (o.T_target_source_gt) {
+      p.series[0].x.push_back((*o.T_target_source_gt)(0, 3));
+      p.series[0].y.push_back((*o.T_target_source_gt)(1, 3));
+    }
+    if (!o.T_target_source) continue;
+    const Eigen::Vector3d t = o.T_target_source->topRightCorner<3, 1>();
+    PlotSeries& s = p.series[o.error && !o.success ? 2 : !o.accepted ? 3 : 1];
+    s.x.push_back(t.x());
+    s.y.push_back(t.y());
+    s.tips.push_back(pair_tip(o, i, t));
+    if (&s == &p.series[1]) s.color_values.push_back(static_cast<double>(i));
+  }
+  return p;
+}
+
+std::string summary_text(const BenchmarkSummary& s) {
+  const auto pct = [](int n, int of) {
+    const double r = rate_or_none(n, of);
+    char buf[32];
+    std::snprintf(buf, sizeof(buf), "%.1f %%", r);
+    return std::isnan(r) ? std::string("n/a") : std::string(buf);
+  };
+  char line[320];
+  std::snprintf(line, sizeof(line),
+                "success %d/%d (%s), upper bound %d/%d (%s); verdict: %d accepted, precision %s, "
+                "recall %s; mean time %.0f ms per pair",
+                s.successes, s.with_truth, pct(s.successes, s.with_truth).c_str(), s.upper_bound,
+                s.with_truth, pct(s.upper_bound, s.with_truth).c_str(), s.accepted,
+                pct(s.true_accepts, s.accepted).c_str(), pct(s.true_accepts, s.successes).c_str(),
+                s.mean_total_ms);
+  return line;
+}
+
+}  // namespace pagor::studio

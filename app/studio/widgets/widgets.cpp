@@ -1,0 +1,287 @@
+#include "widgets/widgets.hpp"
+
+#include "widgets/number_format.hpp"
+
+#include <imgui_internal.h>
+#include <imgui_stdlib.h>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
+#include <unordered_map>
+
+namespace pagor::studio::ui {
+namespace {
+
+WidgetRecord& record_last(WidgetKind kind, const char* label, ImGuiID id, float frame_w = -1) {
+  WidgetRecord& r =
+      registry().add(kind, label, id, ImGui::GetItemRectMin(), ImGui::GetItemRectMax());
+  r.frame_w = frame_w >= 0 ? frame_w : r.max.x - r.min.x;
+  return r;
+}
+
+void maybe_tip(const char* tip) {
+  if (tip) tooltip(tip);
+}
+
+}  // namespace
+
+const char* to_string(WidgetKind kind) {
+  switch (kind) {
+    case WidgetKind::button:
+      return "button";
+    case WidgetKind::checkbox:
+      return "checkbox";
+    case WidgetKind::radio:
+      return "radio";
+    case WidgetKind::slider:
+      return "slider";
+    case WidgetKind::input_text:
+      return "input_text";
+    case WidgetKind::input_int:
+      return "input_int";
+    case WidgetKind::combo:
+      return "combo";
+    case WidgetKind::selectable:
+      return "selectable";
+    case WidgetKind::tree_node:
+      return "tree_node";
+    case WidgetKind::header:
+      return "header";
+    case WidgetKind::splitter:
+      return "splitter";
+  }
+  return "?";
+}
+
+std::string DuplicateId::describe() const {
+  return "duplicate ImGui ID in window '" + window + "': '" + first + "' and '" + second +
+         "' (give one a unique label, a ## suffix or a PushID scope)";
+}
+
+WidgetRegistry& registry() {
+  static WidgetRegistry r;
+  return r;
+}
+
+void WidgetRegistry::begin_frame() {
+  last_.swap(items_);
+  items_.clear();
+  duplicates_.clear();
+}
+
+WidgetRecord& WidgetRegistry::add(WidgetKind kind, const char* label, ImGuiID id, ImVec2 min,
+                                  ImVec2 max, ImGuiWindow* window) {
+  if (!window) window = ImGui::GetCurrentWindow();
+  for (const WidgetRecord& r : items_)
+    if (r.id == id) {
+      DuplicateId d{id, window->Name, r.label, label};
+      duplicates_.push_back(d);
+      const bool known = std::any_of(all_duplicates_.begin(), all_duplicates_.end(),
+                                     [&](const DuplicateId& o) { return o.id == id; });
+      if (!known) all_duplicates_.push_back(d);
+      break;
+    }
+  WidgetRecord r;
+  r.id = id;
+  r.label = label;
+  r.window = window->Name;
+  r.kind = kind;
+  r.min = min;
+  r.max = max;
+  r.clip_min = window->ClipRect.Min;
+  r.clip_max = window->ClipRect.Max;
+  // Visible when the centre is inside the window's clip rectangle and the item is not tiny.
+  const ImVec2 c((min.x + max.x) * 0.5f, (min.y + max.y) * 0.5f);
+  r.visible = c.x > r.clip_min.x && c.x < r.clip_max.x && c.y > r.clip_min.y &&
+              c.y < r.clip_max.y && max.x - min.x >= 2 && max.y - min.y >= 2;
+  r.enabled = (GImGui->CurrentItemFlags & ImGuiItemFlags_Disabled) == 0;
+  items_.push_back(std::move(r));
+  return items_.back();
+}
+
+void tooltip(const char* tip) {
+  registry().mark_last_explained();
+  if (ImGui::IsItemHovered()) {
+    ImGui::BeginTooltip();
+    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 28.0f);
+    ImGui::TextUnformatted(tip);
+    ImGui::PopTextWrapPos();
+    ImGui::EndTooltip();
+  }
+}
+
+bool button(const char* label, ImVec2 size, const char* tip) {
+  const ImGuiID id = ImGui::GetID(label);
+  const bool r = ImGui::Button(label, size);
+  record_last(WidgetKind::button, label, id);
+  maybe_tip(tip);
+  return r;
+}
+
+bool small_button(const char* label, const char* tip) {
+  const ImGuiID id = ImGui::GetID(label);
+  const bool r = ImGui::SmallButton(label);
+  record_last(WidgetKind::button, label, id);
+  maybe_tip(tip);
+  return r;
+}
+
+bool arrow_button(const char* label, ImGuiDir dir, const char* tip) {
+  const ImGuiID id = ImGui::GetID(label);
+  const bool r = ImGui::ArrowButton(label, dir);
+  record_last(WidgetKind::button, label, id);
+  maybe_tip(tip);
+  return r;
+}
+
+bool checkbox(const char* label, bool* v, const char* tip) {
+  const ImGuiID id = ImGui::GetID(label);
+  const bool r = ImGui::Checkbox(label, v);
+  record_last(WidgetKind::checkbox, label, id);
+  maybe_tip(tip);
+  return r;
+}
+
+bool radio(const char* label, int* v, int value, const char* tip) {
+  const ImGuiID id = ImGui::GetID(label);
+  const bool r = ImGui::RadioButton(label, v, value);
+  record_last(WidgetKind::radio, label, id);
+  maybe_tip(tip);
+  return r;
+}
+
+bool slider_float(const char* label, float* v, float lo, float hi, const char* fmt, bool log,
+                  const char* tip) {
+  const ImGuiID id = ImGui::GetID(label);
+  const ImGuiSliderFlags flags =
+      ImGuiSliderFlags_AlwaysClamp | (log ? ImGuiSliderFlags_Logarithmic : 0);
+  const float frame_w = ImGui::CalcItemWidth();
+  bool r = ImGui::SliderFloat(label, v, lo, hi, fmt, flags);
+  if (!(*v >= lo && *v <= hi)) {  // NaN typed, or a value past the range
+    *v = std::isnan(*v) ? lo : std::clamp(*v, lo, hi);
+    r = true;
+  }
+  WidgetRecord& rec = record_last(WidgetKind::slider, label, id, frame_w);
+  rec.lo = lo;
+  rec.hi = hi;
+  maybe_tip(tip);
+  return r;
+}
+
+bool slider_int(const char* label, int* v, int lo, int hi, bool log, const char* tip) {
+  const ImGuiID id = ImGui::GetID(label);
+  const ImGuiSliderFlags flags =
+      ImGuiSliderFlags_AlwaysClamp | (log ? ImGuiSliderFlags_Logarithmic : 0);
+  const float frame_w = ImGui::CalcItemWidth();
+  bool r = ImGui::SliderInt(label, v, lo, hi, "%d", flags);
+  if (*v < lo || *v > hi) {
+    *v = std::clamp(*v, lo, hi);
+    r = true;
+  }
+  WidgetRecord& rec = record_last(WidgetKind::slider, label, id, frame_w);
+  rec.lo = static_cast<float>(lo);
+  rec.hi = static_cast<float>(hi);
+  maybe_tip(tip);
+  return r;
+}
+
+bool slider_double(const char* label, double* v, double lo, double hi, const char* fmt, bool log,
+                   const char* tip) {
+  float f = static_cast<float>(std::clamp(*v, lo, hi));
+  const bool changed =
+      slider_float(label, &f, static_cast<float>(lo), static_cast<float>(hi), fmt, log, tip);
+  if (changed) *v = std::clamp(shortest(f), lo, hi);
+  return changed;
+}
+
+bool input_text(const char* label, std::string* text, const char* tip) {
+  const ImGuiID id = ImGui::GetID(label);
+  const float frame_w = ImGui::CalcItemWidth();
+  const bool r = ImGui::InputText(label, text);
+  record_last(WidgetKind::input_text, label, id, frame_w);
+  maybe_tip(tip);
+  return r;
+}
+
+bool input_int(const char* label, int* v, int lo, int hi, int step, bool on_enter,
+               const char* tip) {
+  const ImGuiID id = ImGui::GetID(label);
+  const float frame_w = ImGui::CalcItemWidth();
+  int value = *v;
+  const bool r = ImGui::InputInt(label, &value, step, step * 10,
+                                 on_enter ? ImGuiInputTextFlags_EnterReturnsTrue : 0);
+  // Written back only when the user edited it: a value loaded from a file is not changed silently.
+  bool changed = false;
+  if (r || value != *v) {
+    const int clamped = std::clamp(value, lo, hi);
+    changed = clamped != *v;
+    *v = clamped;
+  }
+  WidgetRecord& rec = record_last(WidgetKind::input_int, label, id, frame_w);
+  rec.lo = static_cast<float>(lo);
+  rec.hi = static_cast<float>(hi);
+  maybe_tip(tip);
+  return changed;
+}
+
+bool begin_combo(const char* label, const char* preview, const char* tip) {
+  const ImGuiID id = ImGui::GetID(label);
+  const ImVec2 at = ImGui::GetCursorScreenPos();
+  const ImVec2 to(at.x + ImGui::CalcItemWidth(), at.y + ImGui::GetFrameHeight());
+  ImGuiWindow* window = ImGui::GetCurrentWindow();
+  const bool open = ImGui::BeginCombo(label, preview);
+  // While open, the popup is the current window: record against the combo's own window.
+  registry().add(WidgetKind::combo, label, id, at, to, window).frame_w = to.x - at.x;
+  if (!open)
+    maybe_tip(tip);
+  else if (tip)
+    registry().mark_last_explained();
+  return open;
+}
+
+void end_combo() {
+  ImGui::EndCombo();
+}
+
+bool selectable(const char* label, bool selected, ImGuiSelectableFlags flags, ImVec2 size) {
+  const ImGuiID id = ImGui::GetID(label);
+  const bool r = ImGui::Selectable(label, selected, flags, size);
+  record_last(WidgetKind::selectable, label, id);
+  return r;
+}
+
+bool tree_node(const char* label, const char* text) {
+  const ImGuiID id = ImGui::GetID(label);
+  const bool open = ImGui::TreeNode(label, "%s", text);
+  record_last(WidgetKind::tree_node, label, id);
+  return open;
+}
+
+void tree_pop() {
+  ImGui::TreePop();
+}
+
+bool header(const char* label, bool default_open) {
+  const ImGuiID id = ImGui::GetID(label);
+  const bool open =
+      ImGui::CollapsingHeader(label, default_open ? ImGuiTreeNodeFlags_DefaultOpen : 0);
+  record_last(WidgetKind::header, label, id);
+  return open;
+}
+
+ImVec2 splitter(const char* label, ImVec2 size, bool vertical) {
+  const ImGuiID id = ImGui::GetID(label);
+  ImGui::InvisibleButton(label, size);
+  record_last(WidgetKind::splitter, label, id);
+  const bool active = ImGui::IsItemActive();
+  if (active || ImGui::IsItemHovered())
+    ImGui::SetMouseCursor(vertical ? ImGuiMouseCursor_ResizeEW : ImGuiMouseCursor_ResizeNS);
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  dl->AddRectFilled(ImGui::GetItemRectMin(), ImGui::GetItemRectMax(),
+                    active ? IM_COL32(110, 140, 200, 255) : IM_COL32(55, 60, 70, 255));
+  return active ? ImGui::GetIO().MouseDelta : ImVec2(0, 0);
+}
+
+}  // namespace pagor::studio::ui

@@ -1,0 +1,88 @@
+#pragma once
+/// \file benchmark.hpp
+/// Runs a set of pairs through one pipeline and summarises the outcomes. The `pagor bench`
+/// command presents it; any other tool that runs many pairs (sweeps, the studio) shares it.
+
+#include <array>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "pagor/sets/pair_set.hpp"
+#include "pagor/pipeline.hpp"
+
+namespace pagor {
+
+/// What one pair gave.
+struct PairOutcome {
+  std::string name;        ///< the pair's name in its set
+  bool negative = false;   ///< a known non-overlapping pair
+  bool loaded = false;     ///< false: its files could not be read (see `load_error`)
+  std::string load_error;  ///< why it was skipped
+  bool has_ground_truth = false;
+  int selected_level = -1;         ///< -1: no valid candidate
+  std::optional<PoseError> error;  ///< errors of the selected pose (ground truth known)
+  bool success = false;            ///< selected pose within the criterion
+  bool upper_bound = false;        ///< any level's candidate within the criterion
+  bool accepted = false;           ///< the acceptance verdict on the selected pose
+  std::string diagnosis;  ///< verdict_name() of the diagnosis (diagnosis.hpp); empty without truth
+  bool timed = true;      ///< false: taken from an earlier run; its times are not counted
+  std::array<double, kStageCount> stage_ms{};  ///< wall time per stage [ms]
+  double total_ms = 0.0;                       ///< sum of the stage times [ms]
+  std::string report_json;  ///< the pagor.register/1 result without its config, one line
+  std::string source_name, target_name;  ///< the clouds' files or descriptions
+  std::vector<bool> level_success;       ///< per level: its candidate alone within the criterion
+  double margin = 0.0;  ///< D margin of the selection, fraction of mu * points (acceptance.hpp)
+  double score = 0.0;   ///< D of the selected candidate [m]; NaN when none was selected
+  std::optional<Transform> T_target_source;     ///< the selected pose (refined when applied)
+  std::optional<Transform> T_target_source_gt;  ///< the ground truth, when known
+  std::vector<double> level_epsilons;  ///< each level's TRIM threshold ([m] or a ratio, `trim`)
+  std::optional<TrimKind> trim;        ///< the TRIM the thresholds are of (unknown: read from a
+                                       ///< results file written before the line named it)
+};
+
+/// Loads a pair and runs it through `pipeline` with the pipeline's configuration, and diagnoses it
+/// when it has ground truth (the report's `diagnosis`, null without). A pair whose files cannot
+/// be read comes back with `loaded == false` and the reason; other errors throw.
+PairOutcome run_pair(Pipeline& pipeline, const PairEntry& entry);
+
+/// The outcome of a pipeline that has run on `entry`'s clouds (`source_name`, `target_name` as
+/// run_pair reported them). After run_pair, a new configuration, `Pipeline::run` (which re-runs
+/// only the invalidated stages) and this give what a fresh run_pair would. Stage times are each
+/// stage's last run, so `total_ms` is the cost of a whole run with this configuration.
+PairOutcome pair_outcome(const Pipeline& pipeline, const PairEntry& entry,
+                         const std::string& source_name, const std::string& target_name);
+
+/// Rates and times over a set of outcomes.
+struct BenchmarkSummary {
+  int pairs_run = 0;      ///< pairs that loaded
+  int skipped = 0;        ///< pairs that did not load
+  int with_truth = 0;     ///< loaded positives with ground truth
+  int successes = 0;      ///< of `with_truth`: selected pose within the criterion
+  int upper_bound = 0;    ///< of `with_truth`: any level within the criterion
+  int negatives = 0;      ///< loaded known negatives
+  int true_accepts = 0;   ///< positives accepted and successful
+  int false_accepts = 0;  ///< negatives accepted, or positives accepted with a wrong pose
+  int accepted = 0;       ///< accepted pairs that can be judged (negatives, or with truth)
+  /// Verdict precision: true accepts / accepted (1 when nothing was accepted).
+  double precision() const { return accepted ? double(true_accepts) / accepted : 1.0; }
+  /// Verdict recall: true accepts / positives whose selected pose succeeded (1 when none did).
+  double recall() const { return successes ? double(true_accepts) / successes : 1.0; }
+  std::array<double, kStageCount> mean_ms{}, median_ms{};  ///< per stage, timed pairs [ms]
+  double mean_total_ms = 0.0, median_total_ms = 0.0;       ///< per pair [ms]
+};
+
+/// Summarises outcomes.
+BenchmarkSummary summarize(const std::vector<PairOutcome>& outcomes);
+
+}  // namespace pagor
+
+namespace pagor {
+
+/// Reads the results a `pagor bench --out FILE` run wrote (one pagor.register/1 line per pair):
+/// names, verdicts, errors, levels and stage times, marked untimed when no timings are present.
+/// Throws InputError naming the file and line of a line that is not such a result.
+std::vector<PairOutcome> read_bench_results(const std::string& path);
+
+}  // namespace pagor

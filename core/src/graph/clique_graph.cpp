@@ -1,0 +1,92 @@
+#include "graph/clique_graph.hpp"
+
+#include <algorithm>
+#include <numeric>
+
+namespace pagor::detail {
+
+LevelCsr level_csr(const PyramidGraph& g, int level) {
+  LevelCsr s;
+  const auto n = static_cast<std::size_t>(g.vertices);
+  s.offsets.assign(n + 1, 0);
+  std::size_t count = 0;
+  for (std::size_t e = 0; e < g.level.size(); ++e) count += g.level[e] <= level;
+  s.neighbors.resize(count);
+  std::size_t k = 0;
+  for (std::size_t v = 0; v < n; ++v) {
+    const auto first = static_cast<std::size_t>(g.offsets[v]);
+    const auto last = static_cast<std::size_t>(g.offsets[v + 1]);
+    for (std::size_t e = first; e < last; ++e)
+      if (g.level[e] <= level) s.neighbors[k++] = g.neighbors[e];
+    s.offsets[v + 1] = static_cast<std::int64_t>(k);
+  }
+  return s;
+}
+
+CoreDecomposition core_decomposition(const LevelCsr& g) {
+  const int n = g.size();
+  CoreDecomposition d;
+  d.core.resize(static_cast<std::size_t>(n));
+  int max_deg = 0;
+  for (int v = 0; v < n; ++v) {
+    d.core[static_cast<std::size_t>(v)] = g.degree(v);
+    max_deg = std::max(max_deg, g.degree(v));
+  }
+  // Vertices sorted by degree in `vert`, with bucket starts in `bin` (counting sort).
+  std::vector<int> bin(static_cast<std::size_t>(max_deg) + 1, 0);
+  for (int v = 0; v < n; ++v) ++bin[static_cast<std::size_t>(d.core[static_cast<std::size_t>(v)])];
+  int start = 0;
+  for (int& b : bin) {
+    const int c = b;
+    b = start;
+    start += c;
+  }
+  d.order.resize(static_cast<std::size_t>(n));
+  d.position.resize(static_cast<std::size_t>(n));
+  for (int v = 0; v < n; ++v) {
+    auto& b = bin[static_cast<std::size_t>(d.core[static_cast<std::size_t>(v)])];
+    d.position[static_cast<std::size_t>(v)] = b;
+    d.order[static_cast<std::size_t>(b)] = v;
+    ++b;
+  }
+  for (int k = max_deg; k > 0; --k)
+    bin[static_cast<std::size_t>(k)] = bin[static_cast<std::size_t>(k) - 1];
+  if (!bin.empty()) bin[0] = 0;
+  // Take vertices in order; each neighbour of higher current degree moves down one bucket.
+  for (int i = 0; i < n; ++i) {
+    const int v = d.order[static_cast<std::size_t>(i)];
+    const int cv = d.core[static_cast<std::size_t>(v)];
+    for (const int* p = g.begin(v); p != g.end(v); ++p) {
+      const int u = *p;
+      auto& cu = d.core[static_cast<std::size_t>(u)];
+      if (cu > cv) {
+        const int pu = d.position[static_cast<std::size_t>(u)];
+        const int pw = bin[static_cast<std::size_t>(cu)];
+        const int w = d.order[static_cast<std::size_t>(pw)];
+        if (u != w) {
+          d.position[static_cast<std::size_t>(u)] = pw;
+          d.order[static_cast<std::size_t>(pu)] = w;
+          d.position[static_cast<std::size_t>(w)] = pu;
+          d.order[static_cast<std::size_t>(pw)] = u;
+        }
+        ++bin[static_cast<std::size_t>(cu)];
+        --cu;
+      }
+    }
+  }
+  for (int c : d.core) d.degeneracy = std::max(d.degeneracy, c);
+  return d;
+}
+
+std::vector<int> level_degrees(const PyramidGraph& g, int level) {
+  std::vector<int> deg(static_cast<std::size_t>(g.vertices), 0);
+  for (std::size_t v = 0; v < deg.size(); ++v) {
+    int d = 0;
+    const auto last = static_cast<std::size_t>(g.offsets[v + 1]);
+    for (auto e = static_cast<std::size_t>(g.offsets[v]); e < last; ++e) d += g.level[e] <= level;
+    deg[v] = d;
+  }
+  return deg;
+}
+
+}  // namespace pagor::detail

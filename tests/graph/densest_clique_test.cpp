@@ -1,0 +1,245 @@
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <catch2/catch.hpp>
+#include <filesystem>
+#include <random>
+#include <set>
+
+#include "support/clique_reference.hpp"
+#include "pagor/graph/densest_clique.hpp"
+#include "pagor/io/kitti.hpp"
+#include "pagor/pipeline.hpp"
+#include "pagor/graph/pyramid_graph.hpp"
+#include "util/random_draw.hpp"
+
+using namespace pagor;
+using pagor::test::random_graph;
+
+namespace {
+
+// Correspondences: `inliers` consistent with one rigid motion (noise `sigma`), the rest random.
+std::vector<Correspondence> planted(int inliers, int outliers, double sigma, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> coord(-40.0, 40.0);
+  std::normal_distribution<double> noise(0.0, sigma);
+  const Eigen::Matrix3d R =
+      Eigen::AngleAxisd(0.7, Eigen::Vector3d(0.1, 0.2, 1).normalized()).toRotationMatrix();
+  const Eigen::Vector3d t(10, -4, 1);
+  std::vector<Correspondence> c;
+  int id = 0;
+  for (int k = 0; k < inliers + outliers; ++k) {
+    Correspondence x;
+    x.source = x.target = id++;
+    x.p = draw3(coord, rng);
+    x.p.z() /= 8;
+    x.q = k < inliers
+              ? Eigen::Vector3d(R * x.p + t + draw3(noise, rng))
+              : Eigen::Vector3d(draw3(coord, rng).cwiseQuotient(Eigen::Vector3d(1, 1, 8)));
+    c.push_back(x);
+  }
+  std::shuffle(c.begin(), c.end(), rng);  // inliers anywhere in the list
+  return c;
+}
+
+std::set<int> inlier_ids(const std::vector<Correspondence>& c, int inliers) {
+  std::set<int> s;
+  for (std::size_t i = 0; i < c.size(); ++i)
+    if (c[i].source < inliers) s.insert(static_cast<int>(i));
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("the cascaded solver finds the planted clique with 50 to 95 % outliers") {
+  GraphParams gp;
+  gp.trim = TrimKind::difference;
+  gp.thresholds = {0.1, 0.2, 0.4, 0.8};
+  CliqueParams cp;
+  for (const auto& [inliers, outliers] :
+       {std::pair{30, 30}, std::pair{30, 120}, std::pair{20, 380}}) {
+    for (std::uint64_t seed : {1u, 2u, 3u}) {
+      INFO(inliers << " inliers, " << outliers << " outliers, seed " << seed);
+      const auto c = planted(inliers, outliers, 0.01, seed);
+      const PyramidGraph g = build_pyramid_graph(c, gp);
+      const auto result = solve_pyramid(g, cp);
+      REQUIRE(result.size() == 4);
+      const std::set<int> truth = inlier_ids(c, inliers);
+      for (const auto& level : result) {
+        CHECK(is_clique(g, level.level, level.vertices));
+        const std::set<int> found(level.vertices.begin(), level.vertices.end());
+        std::size_t hit = 0;
+        for (int v : found) hit += truth.count(v);
+        // Noise 0.01 m per axis: every inlier pair is within even the tightest level (0.1 m)...
+        CHECK(hit == truth.size());
+        // ...and random outliers rarely join all of them.
+        CHECK(found.size() <= truth.size() + 1);
+      }
+    }
+  }
+}
+
+TEST_CASE("the relaxation agrees with the exact solver on small random graphs") {
+  CliqueParams cp;
+  for (std::uint64_t seed = 0; seed < 20; ++seed) {
+    for (bool prune : {true, false}) {
+      INFO("seed " << seed << (prune ? " with" : " without") << " pruning");
+      cp.prune = prune;
+      const PyramidGraph g = random_graph(60, 0.15, 9 + static_cast<int>(seed % 5), seed);
+      const CliqueResult exact = exact_max_clique(g, 0, cp);
+      REQUIRE(exact.optimal);
+      const CliqueResult relaxed = solve_clipper(g, 0, {}, cp);
+      CHECK(is_clique(g, 0, relaxed.vertices));
+      CHECK(relaxed.vertices == exact.vertices);
+    }
+  }
+}
+
+TEST_CASE("warm start gives the same cliques as cold start with fewer iterations") {
+  GraphParams gp;
+  gp.trim = TrimKind::difference;
+  gp.thresholds = {0.1, 0.2, 0.4, 0.8};
+  const bool prune = GENERATE(false, true);
+  int cascaded_steps = 0, independent_steps = 0;
+  for (std::uint64_t seed : {4u, 5u, 6u}) {
+    const auto c = planted(25, 225, 0.03, seed);
+    const PyramidGraph g = build_pyramid_graph(c, gp);
+    CliqueParams cp;
+    cp.prune = prune;
+    cp.solver = CliqueSolver::cascaded;
+    const auto warm = solve_pyramid(g, cp);
+    cp.solver = CliqueSolver::independent;
+    const auto cold = solve_pyramid(g, cp);
+    for (std::size_t l = 0; l < warm.size(); ++l) {
+      CHECK(warm[l].vertices == cold[l].vertices);
+      cascaded_steps += warm[l].gradient_steps;
+      independent_steps += cold[l].gradient_steps;
+    }
+  }
+  INFO((prune ? "pruned" : "unpruned")
+       << " gradient steps: cascaded " << cascaded_steps << ", independent " << independent_steps);
+  // With pruning, a level whose core is itself a clique needs no gradient step at all, cascaded
+  // or not.
+  if (prune)
+    CHECK(cascaded_steps <= independent_steps);
+  else
+    CHECK(cascaded_steps < independent_steps);
+}
+
+TEST_CASE("the solver is deterministic for a seed") {
+  const auto c = planted(20, 200, 0.03, 9);
+  const PyramidGraph g = build_pyramid_graph(c, GraphParams{});
+  const auto a = solve_pyramid(g, CliqueParams{});
+  const auto b = solve_pyramid(g, CliqueParams{});
+  for (std::size_t l = 0; l < a.size(); ++l) {
+    CHECK(a[l].vertices == b[l].vertices);
+    CHECK(a[l].u == b[l].u);
+  }
+}
+
+TEST_CASE("graphs without vertices or edges") {
+  const PyramidGraph empty = build_pyramid_graph({}, GraphParams{});
+  for (const auto solver :
+       {CliqueSolver::cascaded, CliqueSolver::independent, CliqueSolver::exact}) {
+    CliqueParams cp;
+    cp.solver = solver;
+    const auto r = solve_pyramid(empty, cp);
+    REQUIRE(r.size() == GraphParams{}.thresholds.size());
+    CHECK(r[0].vertices.empty());
+  }
+  const PyramidGraph lonely = random_graph(5, 0.0, 0, 1);
+  const CliqueResult r = solve_clipper(lonely, 0, {}, CliqueParams{});
+  CHECK(r.vertices.size() == 1);
+}
+
+TEST_CASE("never smaller than CLIPPER rounded to the full support, on association problems") {
+  // Issue 11's problems, small enough for the dense reference: 10 to 30 % inliers.
+  const GraphParams gp = test::association_params();
+  for (const auto& [m, inliers] :
+       {std::pair{80, 8}, std::pair{150, 15}, std::pair{200, 20}, std::pair{120, 36}}) {
+    for (std::uint64_t seed : {1u, 2u, 3u}) {
+      const auto c = test::association(m, inliers, seed);
+      const PyramidGraph g = build_pyramid_graph(c, gp);
+      for (const auto solver : {CliqueSolver::cascaded, CliqueSolver::independent}) {
+        CliqueParams cp;
+        cp.solver = solver;
+        const auto ours = solve_pyramid(g, cp);
+        for (int l = 0; l < g.levels(); ++l) {
+          INFO("m " << m << ", seed " << seed << ", level " << l
+                    << (solver == CliqueSolver::cascaded ? ", cascaded" : ", independent"));
+          const auto reference = test::clipper_full_support(g, l, cp.seed);
+          REQUIRE(is_clique(g, l, reference));
+          const auto& found = ours[static_cast<std::size_t>(l)].vertices;
+          CHECK(is_clique(g, l, found));
+          CHECK(found.size() >= reference.size());
+          CHECK(found.size() <= exact_max_clique(g, l, cp).vertices.size());
+        }
+      }
+    }
+  }
+}
+
+TEST_CASE("never smaller than CLIPPER rounded to the full support, on random graphs") {
+  for (std::uint64_t seed = 0; seed < 12; ++seed) {
+    const double p = 0.05 + 0.05 * static_cast<double>(seed % 4);
+    const PyramidGraph g = random_graph(90, p, 6 + static_cast<int>(seed % 6), seed);
+    INFO("seed " << seed << ", p " << p);
+    const auto reference = test::clipper_full_support(g, 0, 42);
+    REQUIRE(is_clique(g, 0, reference));
+    for (bool prune : {true, false}) {
+      CliqueParams cp;
+      cp.prune = prune;
+      const CliqueResult r = solve_clipper(g, 0, {}, cp);
+      CHECK(is_clique(g, 0, r.vertices));
+      CHECK(r.vertices.size() >= reference.size());
+    }
+  }
+}
+
+TEST_CASE("the cascade never returns a smaller clique than the independent solves") {
+  const GraphParams gp = test::association_params();
+  for (std::uint64_t seed : {11u, 12u, 13u, 14u}) {
+    const auto c = test::association(400, 40, seed);
+    const PyramidGraph g = build_pyramid_graph(c, gp);
+    CliqueParams cp;
+    const auto warm = solve_pyramid(g, cp);
+    cp.solver = CliqueSolver::independent;
+    const auto cold = solve_pyramid(g, cp);
+    for (std::size_t l = 0; l < warm.size(); ++l) {
+      INFO("seed " << seed << ", level " << l);
+      CHECK(is_clique(g, static_cast<int>(l), warm[l].vertices));
+      CHECK(warm[l].vertices.size() >= cold[l].vertices.size());
+      // Each level's clique is a clique of every later level (the edges only grow).
+      if (l > 0) CHECK(warm[l].vertices.size() >= warm[l - 1].vertices.size());
+    }
+  }
+}
+
+// A warm start can settle in a worse local optimum than a cold one; the cascade then still finds
+// at least what the independent solves find, level by level (scenes where the upper levels need
+// the relaxation, unlike the association problems above).
+TEST_CASE("the cascade is never smaller than the independent solves, level by level") {
+  const auto check = [](const PyramidGraph& g, const std::string& what) {
+    CliqueParams cp;
+    const auto warm = solve_pyramid(g, cp);
+    cp.solver = CliqueSolver::independent;
+    const auto cold = solve_pyramid(g, cp);
+    for (std::size_t l = 0; l < warm.size(); ++l) {
+      INFO(what << ", level " << l << ": " << warm[l].vertices.size() << " cascaded, "
+                << cold[l].vertices.size() << " independent");
+      CHECK(is_clique(g, static_cast<int>(l), warm[l].vertices));
+      CHECK(warm[l].vertices.size() >= cold[l].vertices.size());
+    }
+  };
+  for (std::uint64_t seed = 1; seed <= 6; ++seed)
+    check(build_pyramid_graph(planted(25, 400, 0.05, seed), GraphParams{}),
+          "planted, seed " + std::to_string(seed));
+  if (!std::filesystem::exists(std::string(PAGOR_KITTI_DIR) + "/sequences/00/velodyne/000000.bin"))
+    return;
+  const KittiSequence seq(PAGOR_KITTI_DIR, "00");
+  for (const auto& [s, t] : {std::pair{0, 20}, std::pair{20, 30}, std::pair{0, 30}}) {
+    Pipeline p(default_config(), 1);
+    p.set_input(seq.load_frame(s).cloud, seq.load_frame(t).cloud);
+    p.run();
+    check(p.graph(), "KITTI " + std::to_string(s) + " -> " + std::to_string(t));
+  }
+}

@@ -1,0 +1,263 @@
+#include <algorithm>
+#include <catch2/catch.hpp>
+#include <numeric>
+#include <random>
+
+#include "graph/clique_graph.hpp"
+#include "support/clique_reference.hpp"
+#include "pagor/graph/densest_clique.hpp"
+#include "support/test_util.hpp"
+
+using namespace pagor;
+using test::random_graph;
+
+namespace {
+
+// Core numbers from the definition: the largest k such that v is in the k-core, each k-core
+// found by peeling vertices of degree < k until none is left.
+std::vector<int> core_numbers_by_definition(const detail::LevelCsr& g) {
+  const int n = g.size();
+  std::vector<int> core(static_cast<std::size_t>(n), 0);
+  for (int k = 1; k <= n; ++k) {
+    std::vector<char> in(static_cast<std::size_t>(n), 1);
+    for (bool changed = true; changed;) {
+      changed = false;
+      for (int v = 0; v < n; ++v) {
+        if (!in[static_cast<std::size_t>(v)]) continue;
+        int d = 0;
+        for (const int* w = g.begin(v); w != g.end(v); ++w) d += in[static_cast<std::size_t>(*w)];
+        if (d < k) {
+          in[static_cast<std::size_t>(v)] = 0;
+          changed = true;
+        }
+      }
+    }
+    bool any = false;
+    for (int v = 0; v < n; ++v)
+      if (in[static_cast<std::size_t>(v)]) {
+        core[static_cast<std::size_t>(v)] = k;
+        any = true;
+      }
+    if (!any) break;
+  }
+  return core;
+}
+
+}  // namespace
+
+TEST_CASE("core numbers, degeneracy order and k-cores agree with their definitions") {
+  for (std::uint64_t seed = 0; seed < 10; ++seed) {
+    const PyramidGraph g =
+        random_graph(70, 0.04 * static_cast<double>(seed % 5 + 1), static_cast<int>(seed), seed);
+    const detail::LevelCsr csr = detail::level_csr(g, 0);
+    const detail::CoreDecomposition cd = detail::core_decomposition(csr);
+    const std::vector<int> expected = core_numbers_by_definition(csr);
+    CHECK(cd.core == expected);
+    CHECK(cd.degeneracy == *std::max_element(expected.begin(), expected.end()));
+    // In the degeneracy order each vertex has at most `degeneracy` later neighbours, and the
+    // position map is the order's inverse.
+    for (int i = 0; i < csr.size(); ++i) {
+      const int v = cd.order[static_cast<std::size_t>(i)];
+      CHECK(cd.position[static_cast<std::size_t>(v)] == i);
+      int later = 0;
+      for (const int* w = csr.begin(v); w != csr.end(v); ++w)
+        later += cd.position[static_cast<std::size_t>(*w)] > i;
+      CHECK(later <= cd.core[static_cast<std::size_t>(v)]);
+    }
+    // k-cores peeled on the CSR and on the pyramid graph read in place.
+    std::vector<int> deg;
+    for (int v = 0; v < csr.size(); ++v) deg.push_back(csr.degree(v));
+    CHECK(detail::level_degrees(g, 0) == deg);
+    for (int k : {1, 2, 3, 5}) {
+      std::vector<int> by_core;
+      for (int v = 0; v < csr.size(); ++v)
+        if (expected[static_cast<std::size_t>(v)] >= k) by_core.push_back(v);
+      CHECK(detail::k_core(csr, deg, k) == by_core);
+      CHECK(detail::k_core(detail::PyramidLevel{g, 0}, deg, k) == by_core);
+      // Recounting the survivors first (when their rows are the shorter walk) gives the same.
+      CHECK(detail::k_core(csr, deg, k, [](int) { return std::size_t{1}; }) == by_core);
+      CHECK(detail::k_core(csr, deg, k, [&](int v) {
+              return std::size_t(deg[std::size_t(v)] < k ? 100 : 1);
+            }) == by_core);
+    }
+  }
+}
+
+TEST_CASE("a level's CSR holds exactly the edges of that level") {
+  const auto c = test::association(150, 15, 3);
+  const PyramidGraph g = build_pyramid_graph(c, test::association_params());
+  for (int l = 0; l < g.levels(); ++l) {
+    const detail::LevelCsr csr = detail::level_csr(g, l);
+    CHECK(csr.neighbors.size() == 2 * g.edges_at_level[static_cast<std::size_t>(l)]);
+    for (int v = 0; v < g.vertices; ++v)
+      for (const int* w = csr.begin(v); w != csr.end(v); ++w) CHECK(g.adjacent(v, *w, l));
+  }
+}
+
+TEST_CASE("greedy and extended cliques are maximal cliques") {
+  for (std::uint64_t seed = 0; seed < 8; ++seed) {
+    const PyramidGraph g = random_graph(120, 0.2, 10, seed);
+    const detail::LevelCsr csr = detail::level_csr(g, 0);
+    const detail::CoreDecomposition cd = detail::core_decomposition(csr);
+    detail::Marks marks(g.vertices);
+    const detail::PyramidLevel view{g, 0};
+    const std::vector<int> one{static_cast<int>(seed)};
+    const std::vector<std::vector<int>> cliques = {
+        detail::greedy_clique(csr, cd.core, 8, marks),
+        detail::greedy_clique(view, detail::level_degrees(g, 0), 8, marks),
+        detail::extend_clique(csr, one, cd.core, 0, marks),
+        detail::extend_clique(view, one, cd.core, 0, marks)};
+    for (const auto& c : cliques) {
+      REQUIRE(is_clique(g, 0, c));
+      CHECK(detail::is_clique(csr, c, marks));
+      CHECK(detail::is_clique(view, c, marks));
+      CHECK(std::is_sorted(c.begin(), c.end()));
+      for (int v = 0; v < g.vertices; ++v) {  // nothing can join
+        if (std::binary_search(c.begin(), c.end(), v)) continue;
+        std::vector<int> bigger = c;
+        bigger.push_back(v);
+        std::sort(bigger.begin(), bigger.end());
+        CHECK_FALSE(is_clique(g, 0, bigger));
+      }
+    }
+  }
+}
+
+TEST_CASE("the exact solver agrees with brute force on small graphs") {
+  CliqueParams cp;
+  for (std::uint64_t seed = 0; seed < 40; ++seed) {
+    const int n = 8 + static_cast<int>(seed % 10);
+    const double p = 0.2 + 0.15 * static_cast<double>(seed % 5);
+    const PyramidGraph g = random_graph(n, p, static_cast<int>(seed % 4), seed);
+    INFO("seed " << seed << ", n " << n << ", p " << p);
+    const CliqueResult r = exact_max_clique(g, 0, cp);
+    CHECK(r.optimal);
+    CHECK(is_clique(g, 0, r.vertices));
+    CHECK(r.vertices.size() == test::brute_force_clique(g));
+  }
+}
+
+TEST_CASE("the exact solver agrees with plain branch and bound on larger graphs") {
+  // Subproblems of more than 64 vertices use several words per bit row.
+  CliqueParams cp;
+  for (std::uint64_t seed = 0; seed < 12; ++seed) {
+    const int n = 60 + 20 * static_cast<int>(seed % 5);
+    const double p = 0.1 + 0.1 * static_cast<double>(seed % 4);
+    const PyramidGraph g = random_graph(n, p, 5 + static_cast<int>(seed % 7) * 3, seed);
+    INFO("seed " << seed << ", n " << n << ", p " << p);
+    const CliqueResult r = exact_max_clique(g, 0, cp);
+    CHECK(r.optimal);
+    CHECK(is_clique(g, 0, r.vertices));
+    CHECK(r.vertices.size() == test::plain_max_clique(g, 0));
+  }
+  // A complete graph of 130 vertices: one subproblem of 129 vertices, three words per row.
+  const PyramidGraph complete = random_graph(130, 0.0, 130, 1);
+  CHECK(exact_max_clique(complete, 0, cp).vertices.size() == 130);
+}
+
+TEST_CASE("the exact solver agrees with plain branch and bound on association problems") {
+  CliqueParams cp;
+  const GraphParams gp = test::association_params();
+  for (std::uint64_t seed : {1u, 2u, 3u}) {
+    const auto c = test::association(250, 25, seed);
+    const PyramidGraph g = build_pyramid_graph(c, gp);
+    for (int l = 0; l < g.levels(); ++l) {
+      INFO("seed " << seed << ", level " << l);
+      const CliqueResult r = exact_max_clique(g, l, cp);
+      CHECK(r.optimal);
+      CHECK(is_clique(g, l, r.vertices));
+      CHECK(r.vertices.size() == test::plain_max_clique(g, l));
+    }
+  }
+}
+
+TEST_CASE("the exact solver stops at its node budget and says so") {
+  CliqueParams cp;
+  cp.exact_max_nodes = 5;
+  const PyramidGraph g = random_graph(200, 0.5, 0, 1);
+  const CliqueResult r = exact_max_clique(g, 0, cp);
+  CHECK_FALSE(r.optimal);
+  CHECK(is_clique(g, 0, r.vertices));
+  CHECK_FALSE(r.vertices.empty());
+}
+
+TEST_CASE("the exact solver on graphs without vertices or edges") {
+  CliqueParams cp;
+  const PyramidGraph empty = test::graph_from_lists({});
+  CHECK(exact_max_clique(empty, 0, cp).vertices.empty());
+  CHECK(exact_max_clique(empty, 0, cp).optimal);
+  const PyramidGraph lonely = random_graph(4, 0.0, 0, 1);
+  const CliqueResult r = exact_max_clique(lonely, 0, cp);
+  CHECK(r.vertices.size() == 1);
+  CHECK(r.optimal);
+}
+
+TEST_CASE(
+    "near-complete subproblems (solved on the complement) agree with plain branch and bound") {
+  CliqueParams cp;
+  const std::uint64_t seeds = test::kSanitized ? 4 : 16;  // the reference is exponential
+  for (std::uint64_t seed = 0; seed < seeds; ++seed) {
+    const int n = 34 + 2 * static_cast<int>(seed % 8);
+    const double p = 0.9 + 0.02 * static_cast<double>(seed % 4);
+    const PyramidGraph g = random_graph(n, p, static_cast<int>(seed % 3) * 5, seed);
+    INFO("seed " << seed << ", n " << n << ", p " << p);
+    const CliqueResult r = exact_max_clique(g, 0, cp);
+    CHECK(r.optimal);
+    CHECK(is_clique(g, 0, r.vertices));
+    CHECK(r.vertices.size() == test::plain_max_clique(g, 0));
+  }
+  // Issue 11's problems with more inliers: level 0's inliers are near-complete.
+  const GraphParams gp = test::association_params();
+  for (std::uint64_t seed : {5u, 6u}) {
+    if (test::kSanitized && seed != 5u) continue;
+    const auto c = test::association(160, 80, seed);
+    const PyramidGraph g = build_pyramid_graph(c, gp);
+    INFO("association, seed " << seed);
+    const CliqueResult r = exact_max_clique(g, 0, cp);
+    CHECK(r.optimal);
+    CHECK(is_clique(g, 0, r.vertices));
+    CHECK(r.vertices.size() == test::plain_max_clique(g, 0));
+  }
+}
+
+TEST_CASE("the search for a larger clique finds one whenever it exists, from any start") {
+  // The search first colours the vertices that could be in a larger clique and stops when that
+  // needs no more colours than the start has: it must never stop while a larger clique exists.
+  for (std::uint64_t seed = 0; seed < 60; ++seed) {
+    const int n = 10 + static_cast<int>(seed % 9);
+    const double p = 0.25 + 0.1 * static_cast<double>(seed % 6);
+    const PyramidGraph g = random_graph(n, p, 0, seed);
+    const std::size_t maximum = test::brute_force_clique(g);
+    // Start from a maximal clique grown from each vertex: often smaller than the maximum.
+    const detail::PyramidLevel view{g, 0};
+    detail::Marks marks(g.vertices);
+    const std::vector<int> degree = detail::level_degrees(g, 0);
+    for (int v = 0; v < n; ++v) {
+      const std::vector<int> start = detail::extend_clique(view, {v}, degree, 1, marks);
+      bool optimal = false;
+      const std::vector<int> got = detail::larger_clique(g, 0, start, 1000000, optimal);
+      INFO("seed " << seed << ", start vertex " << v << ", start size " << start.size());
+      CHECK(optimal);
+      CHECK(is_clique(g, 0, got));
+      CHECK(got.size() == maximum);
+    }
+  }
+  // A 5-cycle: its maximum clique (an edge) is proved only by the search (a greedy colouring
+  // needs 3 colours); a 5-cycle with one chord and a triangle: the colouring proves it.
+  const PyramidGraph cycle = test::graph_from_lists({{1, 4}, {0, 2}, {1, 3}, {2, 4}, {0, 3}});
+  bool optimal = false;
+  CHECK(detail::larger_clique(cycle, 0, {0, 1}, 1000, optimal).size() == 2);
+  CHECK(optimal);
+  const PyramidGraph chord = test::graph_from_lists({{1, 2, 4}, {0, 2}, {0, 1, 3}, {2, 4}, {0, 3}});
+  CHECK(detail::larger_clique(chord, 0, {3, 4}, 1000, optimal).size() == 3);
+  CHECK(optimal);
+  CHECK(detail::larger_clique(chord, 0, {0, 1, 2}, 1000, optimal) == std::vector<int>{0, 1, 2});
+  CHECK(optimal);
+  // The octahedron (every vertex but its opposite one adjacent): 4-regular, so each vertex's
+  // subproblem (a 4-cycle) survives pruning and needs search nodes, but three colours suffice and
+  // prove its triangles maximum. With no node budget only the colouring can prove it.
+  const PyramidGraph octahedron = test::graph_from_lists(
+      {{2, 3, 4, 5}, {2, 3, 4, 5}, {0, 1, 4, 5}, {0, 1, 4, 5}, {0, 1, 2, 3}, {0, 1, 2, 3}});
+  CHECK(detail::larger_clique(octahedron, 0, {0, 2, 4}, 0, optimal) == std::vector<int>{0, 2, 4});
+  CHECK(optimal);
+}

@@ -1,0 +1,126 @@
+#include <catch2/catch.hpp>
+#include <random>
+
+#include "pagor/graph/pyramid_graph.hpp"
+#include "pagor/graph/trim.hpp"
+#include "util/random_draw.hpp"
+
+using namespace pagor;
+
+namespace {
+
+std::vector<Correspondence> random_correspondences(int m, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> coord(-30.0, 30.0);
+  std::uniform_int_distribution<int> landmark(0, m / 3);
+  std::vector<Correspondence> c(static_cast<std::size_t>(m));
+  for (auto& x : c) {
+    x.class_index = 0;
+    x.source = landmark(rng);  // repeated landmarks on purpose
+    x.target = landmark(rng);
+    x.p = draw3(coord, rng);
+    x.p.z() *= 0.1;
+    // Half of them consistent with a pure translation, so every level has edges.
+    x.q = (x.source % 2 == 0) ? x.p + Eigen::Vector3d(5, 1, 0)
+                              : draw_on_plane(coord, rng, 0.0);
+  }
+  return c;
+}
+
+// Lowest level of pair (i, j) by the definition, or -1.
+int reference_level(const std::vector<Correspondence>& c, std::size_t i, std::size_t j,
+                    const GraphParams& p) {
+  if (c[i].source == c[j].source || c[i].target == c[j].target) return -1;
+  const double a = (c[i].p - c[j].p).norm(), b = (c[i].q - c[j].q).norm();
+  if (a < p.min_length || b < p.min_length) return -1;
+  const double t = trim_value(p.trim, a, b);
+  for (std::size_t l = 0; l < p.thresholds.size(); ++l)
+    if (t <= p.thresholds[l]) return static_cast<int>(l);
+  return -1;
+}
+
+}  // namespace
+
+TEST_CASE("TRIM values") {
+  CHECK(trim_value(TrimKind::difference, 10.0, 10.5) == Approx(0.5));
+  CHECK(trim_value(TrimKind::ratio, 10.0, 12.0) == Approx(0.2));
+  CHECK(trim_value(TrimKind::ratio, 12.0, 10.0) == Approx(0.2));
+  CHECK(trim_value(TrimKind::ratio, 0.0, 1.0) == HUGE_VAL);
+}
+
+TEST_CASE("the one-pass pyramid equals the per-level definition, for both TRIM kinds") {
+  const auto c = random_correspondences(300, 11);
+  for (TrimKind kind : {TrimKind::difference, TrimKind::ratio}) {
+    GraphParams p;
+    p.trim = kind;
+    p.thresholds = kind == TrimKind::ratio ? std::vector<double>{0.01, 0.03, 0.1}
+                                           : std::vector<double>{0.1, 0.3, 1.0};
+    const PyramidGraph g = build_pyramid_graph(c, p);
+    REQUIRE(g.levels() == 3);
+    std::vector<std::size_t> count(3, 0);
+    for (std::size_t i = 0; i < c.size(); ++i)
+      for (std::size_t j = 0; j < c.size(); ++j) {
+        if (i == j) continue;
+        const int ref = reference_level(c, std::min(i, j), std::max(i, j), p);
+        for (int l = 0; l < 3; ++l) {
+          const bool expected = ref >= 0 && ref <= l;
+          if (g.adjacent(static_cast<int>(i), static_cast<int>(j), l) != expected) {
+            FAIL("pair " << i << ", " << j << " at level " << l << ": expected " << expected);
+          }
+          if (i < j && expected) ++count[static_cast<std::size_t>(l)];
+        }
+      }
+    for (int l = 0; l < 3; ++l)
+      CHECK(g.edges_at_level[static_cast<std::size_t>(l)] == count[static_cast<std::size_t>(l)]);
+    CHECK(g.edges_at_level[0] > 0);
+    CHECK(g.edges_at_level[0] <= g.edges_at_level[1]);
+    CHECK(g.edges_at_level[1] <= g.edges_at_level[2]);
+  }
+}
+
+TEST_CASE("threads give the same graph") {
+  const auto c = random_correspondences(500, 3);
+  GraphParams p;
+  const PyramidGraph one = build_pyramid_graph(c, p, 1);
+  const PyramidGraph two = build_pyramid_graph(c, p, 2);
+  const PyramidGraph three = build_pyramid_graph(c, p, 3);
+  CHECK(one.offsets == two.offsets);
+  CHECK(one.neighbors == two.neighbors);
+  CHECK(one.level == two.level);
+  CHECK(one.neighbors == three.neighbors);
+}
+
+TEST_CASE("gaussian affinities fall with the TRIM and vanish above the level") {
+  std::vector<Correspondence> c(3);
+  c[0] = {0, 0, 0, {0, 0, 0}, {0, 0, 0}, 1};
+  c[1] = {0, 1, 1, {10, 0, 0}, {10.05, 0, 0}, 1};  // difference 0.05 with c[0]
+  c[2] = {0, 2, 2, {0, 10, 0}, {0, 10.4, 0}, 1};   // difference 0.4 with c[0]
+  GraphParams p;
+  p.trim = TrimKind::difference;
+  p.thresholds = {0.1, 0.5};
+  p.affinity = AffinityKind::gaussian;
+  p.sigma_ratio = 0.5;
+  const PyramidGraph g = build_pyramid_graph(c, p);
+  auto edge = [&](int u, int v) {
+    for (auto e = g.offsets[static_cast<std::size_t>(u)];
+         e < g.offsets[static_cast<std::size_t>(u) + 1]; ++e)
+      if (g.neighbors[static_cast<std::size_t>(e)] == v) return static_cast<std::size_t>(e);
+    FAIL("no edge " << u << "-" << v);
+    return std::size_t{0};
+  };
+  CHECK(g.weight(edge(0, 1), 0) ==
+        Approx(std::exp(-0.05 * 0.05 / (2 * 0.05 * 0.05))).epsilon(1e-4));
+  CHECK(g.weight(edge(0, 2), 0) == 0.0);
+  CHECK(g.weight(edge(0, 2), 1) == Approx(std::exp(-0.4 * 0.4 / (2 * 0.25 * 0.25))).epsilon(1e-4));
+}
+
+TEST_CASE("empty and tiny inputs") {
+  GraphParams p;
+  const PyramidGraph empty = build_pyramid_graph({}, p);
+  CHECK(empty.vertices == 0);
+  CHECK(empty.edges_at_level.size() == p.thresholds.size());
+  std::vector<Correspondence> one(1);
+  const PyramidGraph single = build_pyramid_graph(one, p, 4);
+  CHECK(single.vertices == 1);
+  CHECK(single.neighbors.empty());
+}
