@@ -10,10 +10,11 @@
 
 #include "bench_sections.hpp"
 #include "bench_util.hpp"
+#include "pagor/config.hpp"
 #include "pagor/front/correspondences.hpp"
+#include "pagor/front/landmarks.hpp"
 #include "pagor/io/clouds.hpp"
 #include "pagor/io/kitti.hpp"
-#include "pagor/front/landmarks.hpp"
 
 namespace pagor::bench {
 namespace {

@@ -9,10 +9,10 @@
 
 #include "bench_sections.hpp"
 #include "bench_util.hpp"
-#include "pagor/pose/gnc.hpp"
+#include "pagor/graph/pyramid_graph.hpp"
 #include "pagor/io/kitti.hpp"
 #include "pagor/pipeline.hpp"
-#include "pagor/graph/pyramid_graph.hpp"
+#include "pagor/pose/gnc.hpp"
 #include "pagor/verify/verification.hpp"
 #include "util/random_draw.hpp"
 
@@ -71,10 +71,9 @@ void bench_gnc(const Options& o) {
     std::vector<Eigen::Vector3d> p, q;
     for (int i = 0; i < n; ++i) {
       p.push_back(draw3(coord, rng).cwiseQuotient(Eigen::Vector3d(1, 1, 10)));
-      q.push_back(i < n * 4 / 5
-                      ? Eigen::Vector3d(T.block<3, 3>(0, 0) * p.back() + T.block<3, 1>(0, 3) +
-                                        draw3(noise, rng))
-                      : draw_on_plane(coord, rng, 0.0));
+      q.push_back(i < n * 4 / 5 ? Eigen::Vector3d(T.block<3, 3>(0, 0) * p.back() +
+                                                  T.block<3, 1>(0, 3) + draw3(noise, rng))
+                                : draw_on_plane(coord, rng, 0.0));
     }
     GncParams se3, se2;
     se2.model = PoseModel::se2;
@@ -117,8 +116,8 @@ void bench_end_to_end(const Options& o) {
   std::printf(
       "\n## 5. End to end per KITTI pair (clouds in memory -> selected pose), by stage [ms]\n");
   const Stage stages[] = {
-      Stage::landmarks, Stage::correspondences,   Stage::graph,       Stage::clique,
-      Stage::pose,      Stage::verification_prep, Stage::verification, Stage::refinement,
+      Stage::landmarks, Stage::correspondences,   Stage::graph,        Stage::clique,
+      Stage::gnc,       Stage::verification_prep, Stage::verification, Stage::refinement,
       Stage::acceptance};
   std::vector<int> w = {10, 8};
   std::vector<std::string> head = {"pair", "threads"};

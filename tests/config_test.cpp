@@ -1,4 +1,6 @@
 #include <catch2/catch.hpp>
+#include <cmath>
+#include <nlohmann/json.hpp>
 
 #include "pagor/config.hpp"
 #include "pagor/errors.hpp"
@@ -111,4 +113,80 @@ TEST_CASE("the paper preset is the published configuration, and a document can s
   for (const auto& name : preset_names())
     CHECK(config_to_json(parse_config(config_to_json(preset_config(name)))) ==
           config_to_json(preset_config(name)));
+}
+
+// ---- the parameter tables ----------------------------------------------------------------------
+
+TEST_CASE("every parameter is documented, and every number has an upper limit") {
+  for (const std::string& preset : preset_names()) {
+    const Config c = preset_config(preset);
+    const std::vector<ConfigField> fields = config_fields(c);
+    CHECK(fields.size() > 80);
+    for (const ConfigField& f : fields) {
+      INFO(preset << ": " << f.path);
+      CHECK(std::string(f.info.key).size() > 0);
+      CHECK(std::string(f.info.doc).size() > 10);
+      const bool numeric = f.kind == FieldKind::number || f.kind == FieldKind::integer ||
+                           f.kind == FieldKind::numbers;
+      // A seed is any integer; every other number, iteration counts and budgets above all, is
+      // bounded above so that no configuration makes a loop unbounded.
+      if (numeric && f.path != "clique.seed") CHECK(std::isfinite(f.info.range.max));
+      if (f.kind == FieldKind::choice) CHECK(f.choices.size() >= 2);
+    }
+  }
+}
+
+TEST_CASE("a number beyond its field's range is an error naming the field and the range") {
+  const Config base = default_config();
+  int tried = 0;
+  for (const ConfigField& f : config_fields(base)) {
+    if (f.kind != FieldKind::number && f.kind != FieldKind::integer) continue;
+    if (!std::isfinite(f.info.range.max)) continue;
+    INFO(f.path);
+    Config c = base;
+    const double beyond = f.info.range.max + std::max(1.0, std::abs(f.info.range.max));
+    CHECK_THROWS_WITH(set_field_number(c, f.path, beyond),
+                      Catch::Contains(f.path) && Catch::Contains("is outside") &&
+                          Catch::Contains(f.info.range.text()));
+    CHECK(config_to_json(c) == config_to_json(base));  // unchanged on error
+    ++tried;
+  }
+  CHECK(tried > 60);
+}
+
+TEST_CASE("every parameter reads back what was written, by path") {
+  Config c = default_config();
+  for (const ConfigField& f : config_fields(c)) {
+    INFO(f.path);
+    const std::string before = config_to_json(c);
+    set_field_json(c, f.path, field_json(c, f.path));
+    CHECK(config_to_json(c) == before);
+    if (const auto v = field_number(c, f.path)) {
+      set_field_number(c, f.path, *v);
+      CHECK(config_to_json(c) == before);
+    }
+  }
+  set_field_number(c, "verification.mu", 0.7);
+  CHECK(c.verification.mu == 0.7);
+  set_field_number(c, "landmarks.classes[2].min_points", 12.4);
+  CHECK(c.landmarks.classes[2].min_points == 12);
+  set_field_json(c, "gnc.model", "\"se3\"");
+  CHECK(c.gnc.model == PoseModel::se3);
+  CHECK_THROWS_WITH(set_field_number(c, "graph.nope", 1), Catch::Contains("graph.nope"));
+  CHECK_THROWS_WITH(set_field_json(c, "gnc.model", "\"sideways\""),
+                    Catch::Contains("gnc.model") && Catch::Contains("\"four_dof\""));
+  CHECK_FALSE(field_number(c, "gnc.model"));
+}
+
+TEST_CASE("the document's sections are the table's") {
+  const nlohmann::json j = nlohmann::json::parse(config_to_json(default_config()));
+  std::vector<std::string> keys;
+  Config::sections([&](auto, const FieldInfo& f) { keys.push_back(f.key); });
+  CHECK(keys.size() == j.size());
+  for (const std::string& k : keys) {
+    INFO(k);
+    CHECK(j.contains(k));
+    CHECK_NOTHROW(section_json(default_config(), k));
+  }
+  CHECK_THROWS_AS(section_json(default_config(), "nope"), ConfigError);
 }

@@ -70,7 +70,7 @@ TEST_CASE("a change re-runs only the stages it invalidates") {
     c.graph.thresholds[1] = 0.05;
     p.set_config(c);
     p.run();
-    CHECK(ran(before, runs(p)) == std::vector<Stage>{Stage::graph, Stage::clique, Stage::pose,
+    CHECK(ran(before, runs(p)) == std::vector<Stage>{Stage::graph, Stage::clique, Stage::gnc,
                                                      Stage::verification, Stage::refinement,
                                                      Stage::acceptance, Stage::evaluation});
   }
@@ -80,7 +80,7 @@ TEST_CASE("a change re-runs only the stages it invalidates") {
     p.set_config(c);
     p.run();
     CHECK(ran(before, runs(p)) == std::vector<Stage>{Stage::landmarks, Stage::correspondences,
-                                                     Stage::graph, Stage::clique, Stage::pose,
+                                                     Stage::graph, Stage::clique, Stage::gnc,
                                                      Stage::verification, Stage::refinement,
                                                      Stage::acceptance, Stage::evaluation});
   }
@@ -98,7 +98,7 @@ TEST_CASE("a change re-runs only the stages it invalidates") {
     c.gnc.noise_bound = 0.8;
     p.set_config(c);
     p.run();
-    CHECK(ran(before, runs(p)) == std::vector<Stage>{Stage::pose, Stage::verification,
+    CHECK(ran(before, runs(p)) == std::vector<Stage>{Stage::gnc, Stage::verification,
                                                      Stage::refinement, Stage::acceptance,
                                                      Stage::evaluation});
   }

@@ -3,10 +3,10 @@
 #include <cmath>
 #include <tuple>
 
-#include "pagor/verify/evaluation.hpp"
 #include "pagor/io/kitti.hpp"
 #include "pagor/pipeline.hpp"
-#include "pagor/pose/refinement.hpp"
+#include "pagor/verify/evaluation.hpp"
+#include "pagor/verify/refinement.hpp"
 #include "support/test_util.hpp"
 
 using namespace pagor;

@@ -93,21 +93,4 @@ int run_landmarks(const Args& args) {
   return 0;
 }
 
-std::vector<Option> config_options() {
-  return {
-      {"print-default", 0, "", "print the full default configuration as JSON"},
-      {"preset", 1, "NAME", "print a preset (default, paper, indoor) as JSON"},
-      {"check", 1, "FILE", "validate a configuration file and print it with defaults filled in"}};
-}
-
-int run_config(const Args& args) {
-  if (args.has("print-default") + args.has("check") + args.has("preset") != 1)
-    throw UsageError("give one of --print-default, --preset NAME or --check FILE");
-  const Config config = args.has("check")    ? load_config(args.get("check"))
-                        : args.has("preset") ? preset_config(args.get("preset"))
-                                             : default_config();
-  std::printf("%s\n", config_to_json(config).c_str());
-  return 0;
-}
-
 }  // namespace pagor::cli

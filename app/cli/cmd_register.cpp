@@ -7,11 +7,11 @@
 #include <nlohmann/json.hpp>
 
 #include "command.hpp"
-#include "pagor/verify/diagnosis.hpp"
 #include "pagor/errors.hpp"
-#include "pagor/verify/evaluation.hpp"
 #include "pagor/pipeline.hpp"
 #include "pagor/report.hpp"
+#include "pagor/verify/diagnosis.hpp"
+#include "pagor/verify/evaluation.hpp"
 
 namespace pagor::cli {
 namespace {
@@ -103,7 +103,7 @@ void print_registration(const Pipeline& p) {
   std::printf("times [ms]:");
   const Stage shown[] = {
       Stage::landmarks, Stage::correspondences,   Stage::graph,        Stage::clique,
-      Stage::pose,      Stage::verification_prep, Stage::verification, Stage::refinement};
+      Stage::gnc,       Stage::verification_prep, Stage::verification, Stage::refinement};
   for (Stage s : shown) {
     std::printf(" %s %.1f", stage_name(s), p.time_ms(s));
     total += p.time_ms(s);
@@ -114,7 +114,8 @@ void print_registration(const Pipeline& p) {
 std::vector<Option> register_options() {
   std::vector<Option> o = pair_options();
   o.push_back({"config", 1, "FILE", "configuration JSON (absent keys: the preset's values)"});
-  o.push_back({"preset", 1, "NAME", "base configuration: default, paper (the published one) or indoor"});
+  o.push_back(
+      {"preset", 1, "NAME", "base configuration: default, paper (the published one) or indoor"});
   o.push_back({"json", 1, "OUT", "write the result as JSON (schema pagor.register/1)"});
   o.push_back({"threads", 1, "N", "threads for graph construction and verification (default 1)"});
   o.push_back({"correspondences", 1, "FILE",

@@ -9,7 +9,7 @@
 #include "common/args.hpp"
 #include "common/pair_args.hpp"
 #include "pagor/config.hpp"
-#include "pagor/io/dataset.hpp"
+#include "pagor/sets/dataset.hpp"
 #include "pagor/sets/pair_set.hpp"
 
 namespace pagor::cli {

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "common/args.hpp"
-#include "pagor/io/dataset.hpp"
+#include "pagor/sets/dataset.hpp"
 
 namespace pagor::cli {
 

@@ -16,7 +16,7 @@ const std::vector<Stage>& dependents(Stage s) {
       {Stage::correspondences},  // landmarks
       {Stage::graph},            // correspondences
       {Stage::clique},           // graph
-      {Stage::pose},             // clique
+      {Stage::gnc},              // clique
       {Stage::verification},     // pose
       {Stage::verification},     // verification_prep
       {Stage::refinement},       // verification
@@ -66,23 +66,58 @@ void Pipeline::set_ground_truth(std::optional<Transform> T) {
   mark_stale(Stage::evaluation);
 }
 
+namespace {
+
+// The first stage each section's parameters feed (the later ones follow by `dependents`); a new
+// section without an entry here does not compile.
+std::optional<Stage> first_stage(const LabelScheme&) {
+  return Stage::landmarks;
+}
+std::optional<Stage> first_stage(const LandmarkParams&) {
+  return Stage::landmarks;
+}
+std::optional<Stage> first_stage(const CorrespondenceParams&) {
+  return Stage::correspondences;
+}
+std::optional<Stage> first_stage(const GraphParams&) {
+  return Stage::graph;
+}
+std::optional<Stage> first_stage(const CliqueParams&) {
+  return Stage::clique;
+}
+std::optional<Stage> first_stage(const GncParams&) {
+  return Stage::gnc;
+}
+std::optional<Stage> first_stage(const VerificationParams&) {
+  return Stage::verification;
+}
+std::optional<Stage> first_stage(const RefinementParams&) {
+  return Stage::refinement;
+}
+std::optional<Stage> first_stage(const AcceptanceParams&) {
+  return Stage::acceptance;
+}
+// The criterion also decides which candidates count as distinct for the D margin.
+std::optional<Stage> first_stage(const EvaluationParams&) {
+  return Stage::acceptance;
+}
+// Indoor parameters act when a pair is loaded (load_pair: the plan's sampling, the scan's
+// projection), before the pipeline.
+std::optional<Stage> first_stage(const IndoorParams&) {
+  return std::nullopt;
+}
+
+}  // namespace
+
 void Pipeline::set_config(const Config& config) {
   validate(config);
-  const auto changed = [&](const char* section) {
-    return section_json(config, section) != section_json(config_, section);
-  };
-  if (changed("label_scheme") || changed("landmarks")) mark_stale(Stage::landmarks);
-  if (changed("correspondences")) mark_stale(Stage::correspondences);
-  if (changed("graph")) mark_stale(Stage::graph);
-  if (changed("clique")) mark_stale(Stage::clique);
-  if (changed("gnc")) mark_stale(Stage::pose);
+  Config::sections([&](auto member, const FieldInfo& f) {
+    const std::optional<Stage> stage = first_stage(config.*member);
+    if (stage && section_json(config, f.key) != section_json(config_, f.key)) mark_stale(*stage);
+  });
+  // The one field that feeds a stage outside its section's chain.
   if (config.verification.voxel_size != config_.verification.voxel_size)
     mark_stale(Stage::verification_prep);
-  if (changed("verification")) mark_stale(Stage::verification);
-  if (changed("refinement") || config.gnc.model != config_.gnc.model) mark_stale(Stage::refinement);
-  if (changed("acceptance") || config.gnc.model != config_.gnc.model) mark_stale(Stage::acceptance);
-  // The criterion also decides which candidates count as distinct for the D margin.
-  if (changed("evaluation")) mark_stale(Stage::acceptance);
   config_ = config;
 }
 
@@ -155,7 +190,7 @@ void Pipeline::run_stage(Stage stage) {
     case Stage::clique:
       cliques_ = solve_pyramid(graph_, config_.clique);
       break;
-    case Stage::pose: {
+    case Stage::gnc: {
       poses_.clear();
       for (const CliqueResult& c : cliques_) {
         std::vector<Eigen::Vector3d> p, q;

@@ -96,7 +96,7 @@ std::string registration_report_json(const Pipeline& p, const std::string& sourc
   timings["correspondences"] = p.time_ms(Stage::correspondences);
   timings["graph"] = p.time_ms(Stage::graph);
   timings["clique"] = p.time_ms(Stage::clique);
-  timings["gnc"] = p.time_ms(Stage::pose);
+  timings["gnc"] = p.time_ms(Stage::gnc);
   timings["verification"] = p.time_ms(Stage::verification_prep) + p.time_ms(Stage::verification);
   timings["refinement"] = p.time_ms(Stage::refinement);
   timings["acceptance"] = p.time_ms(Stage::acceptance);

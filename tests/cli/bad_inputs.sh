@@ -58,10 +58,11 @@ for name in "${!key[@]}"; do
   expect_error "$name|${key[$name]}" "$PAGOR" bench --kitti-root "$KITTI" --pairs "$KITTI/pairs_00_dev.txt" --config "$f"
 done
 
-# Legal but absurd configs: bounded by a work budget derived from the input, with the key named.
-expect_error "cfg_huge_tolerance_hang.json: landmarks.classes[1].cluster_tolerance|budget" \
+# Absurd configs: out of the field's range, or bounded by a work budget derived from the input,
+# with the key named.
+expect_error "cfg_huge_tolerance_hang.json: landmarks.classes[0].cluster_tolerance|is outside (0, 50]" \
   "$PAGOR" register --kitti-root "$KITTI" --pair 0 20 --config "$BAD/cfg_huge_tolerance_hang.json"
-expect_error "cfg_huge_tolerance_hang.json: landmarks.classes[1].cluster_tolerance|budget" \
+expect_error "cfg_huge_tolerance_hang.json: landmarks.classes[0].cluster_tolerance|is outside (0, 50]" \
   "$PAGOR" landmarks --kitti-root "$KITTI" --frame 0 --config "$BAD/cfg_huge_tolerance_hang.json"
 expect_error "cfg_nocap_many_landmarks_mem.json: |budget" \
   "$PAGOR" register --kitti-root "$KITTI" --pair 0 20 --config "$BAD/cfg_nocap_many_landmarks_mem.json"

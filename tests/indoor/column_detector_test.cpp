@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 #include <random>
 
+#include "pagor/config.hpp"
 #include "pagor/indoor/column_detector.hpp"
 #include "pagor/indoor/floor_projection.hpp"
 #include "pagor/indoor/indoor_synthetic.hpp"

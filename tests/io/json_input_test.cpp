@@ -5,9 +5,9 @@
 #include <limits>
 #include <string>
 
+#include "io/json_input.hpp"
 #include "pagor/config.hpp"
 #include "pagor/errors.hpp"
-#include "io/json_input.hpp"
 
 using namespace pagor;
 using nlohmann::json;
@@ -78,7 +78,7 @@ TEST_CASE("config: integers that used to wrap or truncate are errors naming file
   fails(R"({"clique":{"seed":-1.0}})", "clique.seed: expected a non-negative integer");
   fails(R"({"graph":{"thresholds":[1e400]}})", "not valid JSON");
   fails(R"({"verification":{"voxel_size":1e-300}})",
-        "verification.voxel_size: must be 0 (none) or at least 0.001");
+        "verification.voxel_size: 1e-300 is outside [0.001, 100] or 0 (off) [m]");
   CHECK(parse_config(R"({"clique":{"seed":18446744073709551615}})", "c.json").clique.seed ==
         std::numeric_limits<std::uint64_t>::max());
   CHECK(parse_config(R"({"correspondences":{"max_correspondences":2000.0}})", "c.json")

@@ -1,10 +1,10 @@
 #include <Eigen/Geometry>
 #include <catch2/catch.hpp>
 
-#include "pagor/verify/evaluation.hpp"
 #include "pagor/pipeline.hpp"
-#include "pagor/pose/refinement.hpp"
 #include "pagor/sets/synthetic.hpp"
+#include "pagor/verify/evaluation.hpp"
+#include "pagor/verify/refinement.hpp"
 
 using namespace pagor;
 

@@ -14,9 +14,9 @@
 #include <thread>
 #include <vector>
 
-#include "pagor/io/dataset.hpp"
-#include "pagor/verify/diagnosis.hpp"
 #include "pagor/pipeline.hpp"
+#include "pagor/sets/dataset.hpp"
+#include "pagor/verify/diagnosis.hpp"
 
 namespace pagor::studio {
 

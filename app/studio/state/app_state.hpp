@@ -7,9 +7,9 @@
 #include <utility>
 #include <vector>
 
-#include "scene/camera.hpp"
 #include "pagor/config.hpp"
-#include "pagor/io/dataset.hpp"
+#include "pagor/sets/dataset.hpp"
+#include "scene/camera.hpp"
 
 namespace pagor::studio {
 

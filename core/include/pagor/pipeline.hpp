@@ -13,16 +13,16 @@
 #include <string>
 #include <vector>
 
-#include "pagor/verify/acceptance.hpp"
 #include "pagor/config.hpp"
 #include "pagor/front/correspondences.hpp"
-#include "pagor/graph/densest_clique.hpp"
-#include "pagor/verify/evaluation.hpp"
-#include "pagor/pose/gnc.hpp"
 #include "pagor/front/landmarks.hpp"
+#include "pagor/graph/densest_clique.hpp"
 #include "pagor/graph/pyramid_graph.hpp"
-#include "pagor/pose/refinement.hpp"
+#include "pagor/pose/gnc.hpp"
 #include "pagor/types.hpp"
+#include "pagor/verify/acceptance.hpp"
+#include "pagor/verify/evaluation.hpp"
+#include "pagor/verify/refinement.hpp"
 #include "pagor/verify/verification.hpp"
 
 namespace pagor {
@@ -33,7 +33,7 @@ enum class Stage : int {
   correspondences,    ///< putative correspondences
   graph,              ///< pyramid of consistency graphs
   clique,             ///< densest clique per level
-  pose,               ///< GNC-TLS pose per level
+  gnc,                ///< GNC-TLS pose per level
   verification_prep,  ///< downsampled metric clouds and target kd-tree
   verification,       ///< score D per candidate, selection
   refinement,         ///< optional fine alignment of the selected pose (kept if D drops)

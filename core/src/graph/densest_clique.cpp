@@ -203,17 +203,6 @@ std::vector<int> round_to_clique(const LevelGraph& g, const std::vector<double>&
   return clique;
 }
 
-// Greedy cliques grown for the lower bound of the pruning (from the highest cores).
-constexpr int kGreedyStarts = 4;
-// Improving swaps (one member out, two vertices in) tried on the rounded clique.
-constexpr int kMaxSwaps = 64;
-
-// Node budget of the exact search that ends a warm-started level.
-constexpr long kCascadeCheckNodes = 200000;
-
-// Largest gradient step tried; beyond it a step only renormalises max(gradient, 0).
-constexpr double kMaxStep = 1e6;
-
 // The relaxation proper on a level graph, from a non-negative unit vector u.
 std::vector<int> relax(const LevelGraph& g, std::vector<double>& u, double d, const CliqueParams& p,
                        CliqueResult& r) {
@@ -282,7 +271,7 @@ std::vector<int> relax(const LevelGraph& g, std::vector<double>& u, double d, co
       penalised(Mu, Cu, sum, grad);
       const double dF = F_new - F;
       F = F_new;
-      alpha = std::min(alpha / p.beta, kMaxStep);
+      alpha = std::min(alpha / p.beta, p.max_step);
       if (std::sqrt(step) < p.tol_u || std::abs(dF) < p.tol_F) break;
     }
 
@@ -359,7 +348,7 @@ CliqueResult solve_clipper(const PyramidGraph& g, int level, const std::vector<d
     if (!known_clique.empty() && detail::is_clique(view, known_clique, marks))
       lower = detail::extend_clique(view, known_clique, deg, static_cast<int>(known_clique.size()),
                                     marks);
-    lower = detail::greedy_clique(view, deg, kGreedyStarts, marks, std::move(lower));
+    lower = detail::greedy_clique(view, deg, p.greedy_starts, marks, std::move(lower));
     keep = detail::k_core(view, deg, static_cast<int>(lower.size()) - 1,
                           [&](int v) { return view.row_length(v); });
   } else {
@@ -400,16 +389,14 @@ CliqueResult solve_clipper(const PyramidGraph& g, int level, const std::vector<d
   // Rounding keeps round(u^T C u) entries; vertices adjacent to all of them join, largest u first.
   if (!found.empty()) found = detail::extend_clique(view, found, r.u, 0.0, marks);
   r.vertices = found.size() >= lower.size() ? found : lower;  // never worse than the lower bound
-  r.vertices = detail::improve_by_swaps(view, std::move(r.vertices), marks, kMaxSwaps);
+  r.vertices = detail::improve_by_swaps(view, std::move(r.vertices), marks, p.max_swaps);
   // A warm start can settle in a worse local optimum than a cold one (KITTI 20 -> 30, level 2:
   // 29 against 30). A warm-started level therefore ends with a bounded exact search for a larger
   // clique: cheap here, as the clique found prunes every vertex whose core number is below its
   // size. Within the budget the cascade's clique is then maximum, never smaller than any other.
-  if (p.prune && !known_clique.empty()) {
-    bool optimal = true;  // (a budget hit keeps the best clique found)
-    r.vertices =
-        detail::larger_clique(g, level, std::move(r.vertices), kCascadeCheckNodes, optimal);
-  }
+  if (p.prune && !known_clique.empty() && p.cascade_check_nodes > 0)     // a budget hit keeps the
+    r.vertices = detail::larger_clique(g, level, std::move(r.vertices),  // best clique found
+                                       p.cascade_check_nodes, r.optimal);
   r.time_ms = ms_since(t0);
   return r;
 }

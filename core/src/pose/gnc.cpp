@@ -87,7 +87,7 @@ PoseEstimate estimate_pose_gnc(const std::vector<Eigen::Vector3d>& src,
   };
   PoseEstimate est;
   const std::size_t n = src.size();
-  const std::size_t needed = p.model == PoseModel::se3 ? 3 : 2;  // 2 fix a yaw
+  const std::size_t needed = static_cast<std::size_t>(minimal_sample_size(p.model));
   if (n < needed || dst.size() != n) {
     est.failure = "needs at least " + std::to_string(needed) + " correspondences, got " +
                   std::to_string(std::min(n, dst.size()));

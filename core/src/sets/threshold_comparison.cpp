@@ -2,9 +2,9 @@
 
 #include <cstdio>
 
-#include "pagor/io/dataset.hpp"
 #include "pagor/errors.hpp"
 #include "pagor/pipeline.hpp"
+#include "pagor/sets/dataset.hpp"
 
 namespace pagor {
 namespace {
@@ -45,7 +45,7 @@ std::vector<VariantResult> compare_variants(
     out.push_back({v.name});
   }
   Pipeline pipeline(variants.front().config, threads);
-  const Stage timed[] = {Stage::graph, Stage::clique, Stage::pose, Stage::verification};
+  const Stage timed[] = {Stage::graph, Stage::clique, Stage::gnc, Stage::verification};
   for (std::size_t k = 0; k < set.pairs.size(); ++k) {
     const PairEntry& entry = set.pairs[k];
     LoadedPair pair;

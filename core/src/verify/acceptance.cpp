@@ -3,8 +3,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "pagor/verify/evaluation.hpp"
 #include "pagor/front/landmarks.hpp"
+#include "pagor/verify/evaluation.hpp"
 
 namespace pagor {
 namespace {
@@ -68,8 +68,7 @@ Acceptance judge_selection(const Verifier& verifier, const std::vector<PoseEstim
     a.reason = below("inliers", a.inliers, params.min_inliers);
   else if (a.margin < params.min_margin)
     a.reason = below("D margin", a.margin, params.min_margin);
-  else if (a.inliers <= (model == PoseModel::se3 ? 3 : 2) &&
-           a.overlap < params.minimal_support_overlap)
+  else if (a.inliers <= minimal_sample_size(model) && a.overlap < params.minimal_support_overlap)
     a.reason = below("overlap with minimal support", a.overlap, params.minimal_support_overlap);
   a.accepted = a.reason.empty();
   return a;

@@ -245,7 +245,7 @@ Diagnosis diagnose(const DiagnosisInput& in, const Transform& T_gt, const Diagno
                              ? params.residual_tolerance
                              : in.config->evaluation.max_translation_error;
   d.min_true =
-      params.min_true > 0 ? params.min_true : (in.config->gnc.model == PoseModel::se3 ? 3 : 2) + 1;
+      params.min_true > 0 ? params.min_true : minimal_sample_size(in.config->gnc.model) + 1;
   const Eigen::Matrix3d R = T_gt.block<3, 3>(0, 0);
   const Eigen::Vector3d t = T_gt.block<3, 1>(0, 3);
   for (const Correspondence& c : in.correspondences->items)

@@ -6,11 +6,36 @@
 #include <string>
 #include <vector>
 
-#include "pagor/config.hpp"
 #include "pagor/front/landmarks.hpp"
 #include "pagor/types.hpp"
 
 namespace pagor {
+
+/// Correspondence generation.
+struct CorrespondenceParams {
+  int max_correspondences = 1500;  ///< cap on the total; the most promising are kept; 0 = no cap
+  bool fpfh_mutual = true;         ///< fpfh classes: keep only mutual nearest descriptors
+  int fpfh_max_per_class = 300;    ///< fpfh classes: at most this many matches (best first)
+  double shape_scale = 0.5;        ///< ranking of cluster pairs: extents differing by this much [m]
+                                   ///< score e^-1
+
+  template <class V>
+  static void fields(V&& v) {
+    v(&CorrespondenceParams::max_correspondences,
+      {"max_correspondences",
+       "Cap on the number of correspondences; the most promising are kept; 0: no cap.", "",
+       Range::closed(1, 1e7), 0.0, true});
+    v(&CorrespondenceParams::fpfh_mutual,
+      {"fpfh_mutual", "FPFH classes: keep only mutual nearest descriptors."});
+    v(&CorrespondenceParams::fpfh_max_per_class,
+      {"fpfh_max_per_class", "FPFH classes: at most this many matches per class, best first.", "",
+       Range::closed(1, 1e6)});
+    v(&CorrespondenceParams::shape_scale,
+      {"shape_scale",
+       "Ranking of cluster pairs: extents differing by this much score e^-1 of alike ones.", "m",
+       Range::above(0, 100)});
+  }
+};
 
 /// The correspondences of a pair of clouds.
 struct CorrespondenceSet {

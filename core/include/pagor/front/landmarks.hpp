@@ -6,10 +6,154 @@
 #include <string>
 #include <vector>
 
-#include "pagor/config.hpp"
+#include "pagor/front/label_scheme.hpp"
 #include "pagor/types.hpp"
+#include "pagor/util/fields.hpp"
 
 namespace pagor {
+
+/// How a class becomes landmarks.
+enum class LandmarkMethod { cluster, fpfh };
+inline constexpr EnumEntry<LandmarkMethod> kLandmarkMethods[] = {
+    {LandmarkMethod::cluster, "cluster",
+     "Euclidean clusters of the class; a landmark per centroid"},
+    {LandmarkMethod::fpfh, "fpfh", "FPFH keypoints of the class, matched by their descriptors"},
+};
+inline const auto& enum_entries(LandmarkMethod) {
+  return kLandmarkMethods;
+}
+
+/// Landmark extraction for one semantic class.
+struct ClassParams {
+  std::string name;                                 ///< class name in the label scheme
+  LandmarkMethod method = LandmarkMethod::cluster;  ///< clusters, or FPFH keypoints
+  double voxel_size = 0.2;         ///< downsampling voxel before clustering or FPFH [m]; 0 = none
+  double cluster_tolerance = 0.5;  ///< cluster: max gap between points of one cluster [m]
+  int min_points = 10;             ///< cluster: smallest cluster kept [voxels]
+  int max_points = 5000;           ///< cluster: largest cluster kept [voxels]
+  double normal_radius = 1.0;      ///< fpfh: radius of the normal estimate [m]
+  double feature_radius = 2.5;     ///< fpfh: radius of the FPFH descriptor [m]
+  int max_keypoints = 1500;        ///< fpfh: descriptors at no more than this many voxels
+
+  template <class V>
+  static void fields(V&& v) {
+    v(&ClassParams::name, {"name", "Class name in the label scheme."});
+    v(&ClassParams::method, {"method", "How the class becomes landmarks: clusters or FPFH."});
+    v(&ClassParams::voxel_size,
+      {"voxel_size", "Downsampling voxel before clustering or FPFH; 0: none.", "m",
+       Range::closed(1e-3, 50), 0.0, true});
+    v(&ClassParams::cluster_tolerance,
+      {"cluster_tolerance", "Clusters: the largest gap between points of one cluster.", "m",
+       Range::above(0, 50)});
+    v(&ClassParams::min_points,
+      {"min_points", "Clusters: the smallest cluster kept, in voxels.", "", Range::closed(1, 1e7)});
+    v(&ClassParams::max_points,
+      {"max_points", "Clusters: the largest cluster kept, in voxels.", "", Range::closed(1, 1e8)});
+    v(&ClassParams::normal_radius,
+      {"normal_radius", "FPFH: radius of the normal estimate.", "m", Range::above(0, 50)});
+    v(&ClassParams::feature_radius,
+      {"feature_radius", "FPFH: radius of the descriptor; larger than normal_radius.", "m",
+       Range::above(0, 100)});
+    v(&ClassParams::max_keypoints,
+      {"max_keypoints",
+       "FPFH: descriptors are computed at no more than this many voxels, spread evenly (normals "
+       "and descriptors still see every voxel).",
+       "", Range::closed(1, 1e6)});
+  }
+  template <class C>
+  static void check(const ClassParams& p, C& c) {
+    c.require(p.max_points >= p.min_points, "max_points", "must be >= min_points");
+    c.require(p.feature_radius > p.normal_radius, "feature_radius",
+              "must be larger than normal_radius [m]");
+  }
+};
+
+/// When class-agnostic landmarks (FPFH keypoints on all non-ground structure, one extra class
+/// `structure`) are added: for class-poor scenes and clouds without labels.
+enum class FallbackMode { automatic, always, never };
+inline constexpr EnumEntry<FallbackMode> kFallbackModes[] = {
+    {FallbackMode::automatic, "automatic",
+     "when either cloud has no labels or is class-poor (class_poor_below)"},
+    {FallbackMode::always, "always", "always add the class-agnostic landmarks"},
+    {FallbackMode::never, "never", "never (an unlabelled cloud is then an error)"},
+};
+inline const auto& enum_entries(FallbackMode) {
+  return kFallbackModes;
+}
+
+/// The class-agnostic keypoints' defaults: FPFH on a 0.8 m grid, radii 1.6 / 4.0 m, descriptors
+/// at 1000 keypoints (9/10 of semreg-dev at voxels 0.4, 0.6 and 0.8 m alike with this budget,
+/// bench/README.md).
+ClassParams default_structure_keypoints();
+
+/// Class-agnostic landmarks for class-poor scenes and for clouds without labels.
+struct FallbackParams {
+  FallbackMode mode = FallbackMode::automatic;  ///< when to add class-agnostic landmarks
+  /// automatic: a cloud with fewer cluster landmarks (cars, trunks, poles, ...) than this is
+  /// class-poor. Measured on semreg-dev, where every scene has 0-11.
+  int class_poor_below = 15;
+  /// Classes that count as ground and are left out (ignored when the scheme lacks them).
+  std::vector<std::string> ground_classes{"road", "parking", "sidewalk", "other-ground", "terrain"};
+  double ground_height = 0.4;  ///< unlabelled: thickness of the removed ground layer [m]
+  ClassParams keypoints = default_structure_keypoints();  ///< the class-agnostic FPFH class
+
+  template <class V>
+  static void fields(V&& v) {
+    v(&FallbackParams::mode, {"mode", "When to add the class-agnostic landmarks."});
+    v(&FallbackParams::class_poor_below,
+      {"class_poor_below",
+       "automatic: a cloud with fewer cluster landmarks (cars, trunks, poles, ...) than this is "
+       "class-poor.",
+       "", Range::closed(0, 1e6)});
+    v(&FallbackParams::ground_classes,
+      {"ground_classes",
+       "Classes that count as ground and are left out (ignored when the scheme lacks them)."});
+    v(&FallbackParams::ground_height,
+      {"ground_height",
+       "Clouds without labels: points this far above the lowest dense height layer are ground.",
+       "m", Range::closed(0, 10)});
+    v(&FallbackParams::keypoints, {"keypoints", "The class-agnostic FPFH class `structure`."});
+  }
+  template <class C>
+  static void check(const FallbackParams& p, C& c) {
+    c.require(p.keypoints.voxel_size > 0, "keypoints.voxel_size", "must be > 0 [m]");
+  }
+};
+
+/// Landmark extraction, one entry per class.
+struct LandmarkParams {
+  /// Defaults: car, trunk, pole, traffic-sign (clusters); building (fpfh).
+  std::vector<ClassParams> classes;
+  /// Estimate each cloud's point spacing s and keep every class's parameters physical on it:
+  /// voxels never finer than s, cluster tolerances at least `tolerance_spacings` * s, and
+  /// minimum/maximum cluster sizes (counted in voxels of the configured size) rescaled to the
+  /// coarser voxel, so a downsampled cloud gives the landmarks of the full-resolution one.
+  bool adapt_to_spacing = true;
+  double tolerance_spacings = 2.5;  ///< least cluster tolerance, in point spacings
+  int min_cluster_voxels = 3;       ///< rescaled minimum sizes never drop below this [voxels]
+  FallbackParams fallback;          ///< class-agnostic landmarks
+
+  template <class V>
+  static void fields(V&& v) {
+    v(&LandmarkParams::classes, {"classes", "One entry per landmark class."});
+    v(&LandmarkParams::adapt_to_spacing,
+      {"adapt_to_spacing",
+       "Keep each class's parameters physical on the cloud's point spacing: voxels never finer "
+       "than the data, cluster tolerances at least tolerance_spacings spacings, cluster sizes "
+       "rescaled."});
+    v(&LandmarkParams::tolerance_spacings,
+      {"tolerance_spacings", "The least cluster tolerance, in point spacings.", "",
+       Range::above(0, 100)});
+    v(&LandmarkParams::min_cluster_voxels,
+      {"min_cluster_voxels", "Rescaled minimum cluster sizes never drop below this [voxels].", "",
+       Range::closed(1, 1e6)});
+    v(&LandmarkParams::fallback, {"fallback", "Class-agnostic landmarks."});
+  }
+  template <class C>
+  static void check(const LandmarkParams& p, C& c) {
+    c.require(!p.classes.empty(), "classes", "needs at least one class");
+  }
+};
 
 /// What extraction found for one configured class.
 struct ClassSummary {

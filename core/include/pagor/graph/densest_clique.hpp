@@ -10,10 +10,111 @@
 
 #include <vector>
 
-#include "pagor/config.hpp"
 #include "pagor/graph/pyramid_graph.hpp"
+#include "pagor/util/fields.hpp"
 
 namespace pagor {
+
+/// Which densest-clique solver.
+enum class CliqueSolver {
+  cascaded,     ///< CLIPPER relaxation, each level warm-started from the previous one (Alg. 1)
+  independent,  ///< CLIPPER relaxation, each level from the same initial vector
+  exact,        ///< exact maximum clique (branch and bound)
+};
+inline constexpr EnumEntry<CliqueSolver> kCliqueSolvers[] = {
+    {CliqueSolver::cascaded, "cascaded",
+     "CLIPPER relaxation, each level warm-started from the previous one (Alg. 1)"},
+    {CliqueSolver::independent, "independent",
+     "CLIPPER relaxation, each level from the same initial vector"},
+    {CliqueSolver::exact, "exact", "exact maximum clique by branch and bound"},
+};
+inline const auto& enum_entries(CliqueSolver) {
+  return kCliqueSolvers;
+}
+
+/// The densest-clique solver (CLIPPER relaxation) and the exact search.
+struct CliqueParams {
+  CliqueSolver solver = CliqueSolver::cascaded;  ///< solver
+  /// Relaxation on the k-core that can hold a clique at least as large as a greedy one (with
+  /// k = greedy size - 1), and never return less than the greedy clique. Off: the plain relaxation
+  /// on every vertex.
+  bool prune = true;
+  double tol_u = 1e-8;              ///< inner loop stops when |u_new - u| < tol_u
+  double tol_F = 1e-9;              ///< inner loop stops when the objective changes less
+  int max_inner_iterations = 200;   ///< gradient steps for one penalty d
+  int max_outer_iterations = 1000;  ///< penalty increases
+  double beta = 0.25;               ///< backtracking step reduction, in (0, 1)
+  int max_line_search = 99;         ///< backtracking steps per gradient step
+  double eps = 1e-9;                ///< numerical zero
+  double support_tol = 1e-6;        ///< entries below this fraction of the largest count as zero
+  std::uint64_t seed = 42;          ///< seed of the initial vector
+  double warm_start_mix = 0.05;     ///< cascaded: weight of the random start added to a warm start
+  /// cascaded: a warm-started level begins with this fraction of the previous level's final
+  /// penalty d (1: continue where the previous level stopped; 0: from d = 0).
+  double warm_start_penalty = 1.0;
+  long exact_max_nodes = 20000000;  ///< exact: branch-and-bound node budget
+  int greedy_starts = 4;  ///< greedy cliques grown from the highest cores for the lower bound
+  int max_swaps = 64;     ///< improving swaps (one member out, two in) tried on the rounded clique
+  /// cascaded: node budget of the exact search for a larger clique that ends each warm-started
+  /// level (a warm start can settle in a worse local optimum than a cold one); 0: no search
+  long cascade_check_nodes = 200000;
+  double max_step = 1e6;  ///< largest gradient step tried; beyond it a step only renormalises
+
+  template <class V>
+  static void fields(V&& v) {
+    v(&CliqueParams::solver, {"solver", "The densest-clique solver."});
+    v(&CliqueParams::prune,
+      {"prune",
+       "Relax on the k-core that can hold a clique as large as a greedy one, and never return "
+       "less than the greedy clique."});
+    v(&CliqueParams::tol_u, {"tol_u", "The gradient ascent stops when u moves less than this.", "",
+                             Range::above(0, 1), std::numeric_limits<double>::quiet_NaN(), true});
+    v(&CliqueParams::tol_F,
+      {"tol_F", "The gradient ascent stops when the objective changes less than this.", "",
+       Range::above(0, 1), std::numeric_limits<double>::quiet_NaN(), true});
+    v(&CliqueParams::max_inner_iterations,
+      {"max_inner_iterations", "Gradient steps for one penalty d, at most.", "",
+       Range::closed(1, 100000)});
+    v(&CliqueParams::max_outer_iterations,
+      {"max_outer_iterations", "Penalty increases, at most.", "", Range::closed(1, 100000)});
+    v(&CliqueParams::beta,
+      {"beta", "Backtracking line search: step reduction factor.", "", Range::open(0, 1)});
+    v(&CliqueParams::max_line_search,
+      {"max_line_search", "Backtracking steps per gradient step, at most.", "",
+       Range::closed(1, 1000)});
+    v(&CliqueParams::eps, {"eps", "Numerical zero of the relaxation.", "", Range::above(0, 1),
+                           std::numeric_limits<double>::quiet_NaN(), true});
+    v(&CliqueParams::support_tol,
+      {"support_tol", "Entries of u below this fraction of the largest count as zero.", "",
+       Range::below(0, 1)});
+    v(&CliqueParams::seed, {"seed", "Seed of the relaxation's initial vector."});
+    v(&CliqueParams::warm_start_mix,
+      {"warm_start_mix", "Cascaded: weight of the random start mixed into a warm start.", "",
+       Range::closed(0, 1000)});
+    v(&CliqueParams::warm_start_penalty,
+      {"warm_start_penalty",
+       "Cascaded: a warm-started level begins with this fraction of the previous level's final "
+       "penalty d (1: where it stopped; 0: from d = 0).",
+       "", Range::closed(0, 1)});
+    v(&CliqueParams::exact_max_nodes,
+      {"exact_max_nodes", "Exact solver: branch-and-bound nodes, at most.", "",
+       Range::closed(1, 1e12), std::numeric_limits<double>::quiet_NaN(), true});
+    v(&CliqueParams::greedy_starts,
+      {"greedy_starts", "Greedy cliques grown from the highest cores for the pruning's bound.", "",
+       Range::closed(1, 1000)});
+    v(&CliqueParams::max_swaps,
+      {"max_swaps", "Improving swaps (one member out, two in) tried on the rounded clique.", "",
+       Range::closed(0, 100000)});
+    v(&CliqueParams::cascade_check_nodes,
+      {"cascade_check_nodes",
+       "Cascaded: node budget of the exact search for a larger clique that ends each "
+       "warm-started level; 0: no search.",
+       "", Range::closed(0, 1e12), std::numeric_limits<double>::quiet_NaN(), true});
+    v(&CliqueParams::max_step,
+      {"max_step", "The largest gradient step tried; beyond it a step only renormalises.", "",
+       Range::above(0, 1e12), std::numeric_limits<double>::quiet_NaN(), true});
+  }
+};
 
 /// The clique found on one level.
 struct CliqueResult {
@@ -23,8 +124,10 @@ struct CliqueResult {
   int gradient_steps = 0;     ///< accepted and rejected gradient steps, over all penalties
   int penalty_updates = 0;    ///< outer iterations (increases of d)
   double penalty = 0.0;       ///< final penalty d
-  bool optimal = false;       ///< exact solver: whether the search finished within its budget
-  double time_ms = 0.0;       ///< wall time [ms]
+  /// whether the clique is proven maximum on its level: the exact solver's search, or a cascaded
+  /// level's search for a larger clique, finished within its budget
+  bool optimal = false;
+  double time_ms = 0.0;  ///< wall time [ms]
 };
 
 /// CLIPPER relaxation on level `level` from `u0` (any non-negative vector of the graph's size; it

@@ -10,10 +10,44 @@
 #include <vector>
 
 #include "pagor/indoor/column_detector.hpp"
-#include "pagor/config.hpp"
 #include "pagor/types.hpp"
 
 namespace pagor {
+
+/// Indoor re-localization against a floor plan (floor_plan.hpp): the plan is sampled into points
+/// and the scan is projected to the floor plane with its columns found. Applies when a pair's
+/// target is a floor plan (`.json` or `.svg`).
+struct IndoorParams {
+  double plan_spacing = 0.05;  ///< sampling of plan walls and column outlines [m]
+  double height_min = -0.3;    ///< scan points lower than this (scan frame, z up) are left out [m]
+  double height_max = 1.9;     ///< scan points higher than this are left out [m]
+  double floor_voxel = 0.05;   ///< 2-D grid of the projected scan [m]
+  /// Find columns with the detector; false: take them from the scan's labels (`indoor` ids,
+  /// column 2), fitting a circle to each labelled cluster.
+  bool detect_columns = true;
+  ColumnDetectorParams columns;  ///< the detector
+
+  template <class V>
+  static void fields(V&& v) {
+    v(&IndoorParams::plan_spacing, {"plan_spacing", "Sampling of plan walls and column outlines.",
+                                    "m", Range::closed(1e-3, 10)});
+    v(&IndoorParams::height_min,
+      {"height_min", "Scan points lower than this (scan frame, z up) are left out.", "m",
+       Range::closed(-1000, 1000)});
+    v(&IndoorParams::height_max, {"height_max", "Scan points higher than this are left out.", "m",
+                                  Range::closed(-1000, 1000)});
+    v(&IndoorParams::floor_voxel,
+      {"floor_voxel", "The 2-D grid of the projected scan.", "m", Range::closed(1e-3, 10)});
+    v(&IndoorParams::detect_columns,
+      {"detect_columns",
+       "Find columns with the detector; off: take them from the scan's labels (indoor scheme)."});
+    v(&IndoorParams::columns, {"columns", "The column detector."});
+  }
+  template <class C>
+  static void check(const IndoorParams& p, C& c) {
+    c.require(p.height_max > p.height_min, "height_max", "must be > height_min [m]");
+  }
+};
 
 /// A projected scan.
 struct FloorScan {

@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "pagor/indoor/column_detector.hpp"
-#include "pagor/config.hpp"
 #include "pagor/indoor/floor_plan.hpp"
+#include "pagor/indoor/floor_projection.hpp"
 #include "pagor/types.hpp"
 
 namespace pagor {

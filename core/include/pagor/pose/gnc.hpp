@@ -7,10 +7,53 @@
 #include <string>
 #include <vector>
 
-#include "pagor/config.hpp"
 #include "pagor/types.hpp"
+#include "pagor/util/fields.hpp"
 
 namespace pagor {
+
+/// The pose model.
+enum class PoseModel {
+  se3,       ///< rotation and translation in 3D (outdoor)
+  se2,       ///< yaw and planar translation (planar robots, scan vs floor plan)
+  four_dof,  ///< yaw and 3-D translation, roll and pitch held level (ground vehicles, as Quatro)
+};
+inline constexpr EnumEntry<PoseModel> kPoseModels[] = {
+    {PoseModel::se3, "se3", "rotation and translation in 3-D"},
+    {PoseModel::se2, "se2", "yaw and planar translation (planar robots, scan vs floor plan)"},
+    {PoseModel::four_dof, "four_dof",
+     "yaw and 3-D translation, roll and pitch held level (ground vehicles)"},
+};
+inline const auto& enum_entries(PoseModel) {
+  return kPoseModels;
+}
+
+/// The fewest correspondences that fix a pose of the model: 3 in SE(3), 2 in SE(2) and 4-DoF.
+inline int minimal_sample_size(PoseModel model) {
+  return model == PoseModel::se3 ? 3 : 2;
+}
+
+/// GNC with a truncated least-squares cost.
+struct GncParams {
+  PoseModel model = PoseModel::se3;  ///< pose model
+  double noise_bound = 1.0;          ///< TLS truncation: residuals beyond are outliers [m]
+  double mu_factor = 1.4;            ///< GNC continuation factor, > 1
+  int max_iterations = 100;          ///< GNC iterations
+  double cost_tolerance = 1e-6;      ///< stop when the TLS cost changes less [m^2]
+
+  template <class V>
+  static void fields(V&& v) {
+    v(&GncParams::model, {"model", "The pose model."});
+    v(&GncParams::noise_bound, {"noise_bound", "TLS truncation: residuals beyond it are outliers.",
+                                "m", Range::above(0, 1000)});
+    v(&GncParams::mu_factor, {"mu_factor", "GNC continuation factor.", "", Range::above(1, 100)});
+    v(&GncParams::max_iterations,
+      {"max_iterations", "GNC iterations, at most.", "", Range::closed(1, 10000)});
+    v(&GncParams::cost_tolerance,
+      {"cost_tolerance", "GNC stops when the TLS cost changes less than this.", "m^2",
+       Range::above(0, 1e6), std::numeric_limits<double>::quiet_NaN(), true});
+  }
+};
 
 /// A candidate pose.
 struct PoseEstimate {

@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "pagor/io/dataset.hpp"
+#include "pagor/sets/dataset.hpp"
 #include "pagor/types.hpp"
 
 namespace pagor {

@@ -16,11 +16,52 @@
 #include <string>
 #include <vector>
 
-#include "pagor/config.hpp"
 #include "pagor/pose/gnc.hpp"
+#include "pagor/util/fields.hpp"
+#include "pagor/verify/evaluation.hpp"
 #include "pagor/verify/verification.hpp"
 
 namespace pagor {
+
+/// Whether the selected pose is trusted.
+struct AcceptanceParams {
+  double inlier_distance = 0.5;   ///< a verification point counts as aligned within this [m]
+  double ground_thickness = 0.4;  ///< points this far above the ground layer are structure [m]
+  /// least fraction of structure points aligned, in [0, 1]; calibrated on the shared data with
+  /// refinement on: true pairs 0.27-0.61, scans that share nothing 0.03-0.20
+  double min_overlap = 0.24;
+  int min_inliers = 2;  ///< least GNC inliers of the selected candidate
+  /// least overlap when the pose rests on the minimal number of inliers (2 for 4-DoF and SE(2),
+  /// 3 for SE(3)): such a pose has no redundant support, so the clouds must say more
+  double minimal_support_overlap = 0.3;
+  /// least D margin to a distinct candidate, fraction of mu * points; calibrated on the shared
+  /// data: true pairs 0.18-1 (1: no distinct candidate), scans that share nothing 0.02-0.05
+  double min_margin = 0.1;
+
+  template <class V>
+  static void fields(V&& v) {
+    v(&AcceptanceParams::inlier_distance,
+      {"inlier_distance", "A verification point counts as aligned within this distance.", "m",
+       Range::above(0, 1000)});
+    v(&AcceptanceParams::ground_thickness,
+      {"ground_thickness", "Points this far above the ground layer are structure.", "m",
+       Range::closed(0, 100)});
+    v(&AcceptanceParams::min_overlap,
+      {"min_overlap", "The least fraction of structure points aligned under the pose.", "",
+       Range::closed(0, 1)});
+    v(&AcceptanceParams::min_inliers,
+      {"min_inliers", "The least GNC inliers of the selected candidate.", "",
+       Range::closed(0, 1e6)});
+    v(&AcceptanceParams::minimal_support_overlap,
+      {"minimal_support_overlap",
+       "The least overlap when the pose rests on the minimal number of inliers.", "",
+       Range::closed(0, 1)});
+    v(&AcceptanceParams::min_margin,
+      {"min_margin",
+       "The least D margin to the best distinct candidate, as a fraction of mu times the points.",
+       "", Range::closed(0, 1)});
+  }
+};
 
 /// The verdict and the measures behind it.
 struct Acceptance {

@@ -1,4 +1,4 @@
-#include "pagor/io/dataset.hpp"
+#include "pagor/sets/dataset.hpp"
 
 #include "pagor/errors.hpp"
 #include "pagor/indoor/floor_plan.hpp"

@@ -1,4 +1,4 @@
-#include "pagor/pose/refinement.hpp"
+#include "pagor/verify/refinement.hpp"
 
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
