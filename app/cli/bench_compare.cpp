@@ -27,14 +27,14 @@ int run_threshold_comparison(const Args& args, const Config& config, const PairS
   if (results.empty() || results.front().with_truth == 0)
     throw InputError(set.origin + ": no pair with ground truth could be loaded");
   std::printf("%-22s %-10s %-13s %9s %10s %14s\n", "variant", "solver", "verification", "success",
-              "rate [%]", "mean [ms]");
+              "rate", "mean [ms]");
   for (std::size_t i = 0; i < results.size(); ++i) {
     const VariantResult& r = results[i];
     const Config& c = variants[i].config;
-    std::printf("%-22s %-10s %-13s %4d/%-4d %10.1f %14.2f\n", r.name.c_str(),
+    std::printf("%-22s %-10s %-13s %4d/%-4d %10s %14.2f\n", r.name.c_str(),
                 to_string(c.clique.solver),
                 c.graph.thresholds.size() > 1 ? "lowest D" : "none (1 lvl)", r.successes,
-                r.with_truth, 100.0 * r.success_rate(), r.mean_ms);
+                r.with_truth, rate_text(r.success_rate()).c_str(), r.mean_ms);
   }
   std::printf(
       "\nsuccess: %.1f m / %.1f deg; thresholds in %s TRIM units; time: graph, clique, "

@@ -12,8 +12,9 @@
 
 #include "bench_journal.hpp"
 #include "command.hpp"
-#include "pagor/sets/benchmark.hpp"
 #include "pagor/errors.hpp"
+#include "pagor/sets/benchmark.hpp"
+#include "pagor/sets/runner.hpp"
 
 namespace pagor::cli {
 namespace {
@@ -27,30 +28,6 @@ PairSet pair_set_from_args(const Args& args) {
   if (!args.has("kitti-root") || !args.has("pairs"))
     throw UsageError("bench needs --manifest FILE, or --kitti-root DIR and --pairs FILE");
   return kitti_pair_set(args.get("kitti-root"), args.get("sequence", "00"), args.get("pairs"));
-}
-
-// What the summary needs of a pair taken from an earlier run's line; its times are not counted.
-PairOutcome resumed_outcome(const PairEntry& entry, const nlohmann::json& line) {
-  PairOutcome o;
-  o.name = entry.name;
-  o.negative = entry.negative;
-  o.loaded = true;
-  o.timed = false;
-  const auto gt = line.find("ground_truth");
-  if (gt != line.end() && gt->is_object()) {
-    o.has_ground_truth = true;
-    o.success = gt->value("success", false);
-    o.upper_bound = gt->value("upper_bound", false);
-  }
-  const auto a = line.find("acceptance");
-  if (a != line.end() && a->is_object()) o.accepted = a->value("accepted", false);
-  const auto level = line.find("selected_level");
-  if (level != line.end() && level->is_number_integer()) o.selected_level = level->get<int>();
-  const auto diagnosis = line.find("diagnosis");
-  if (diagnosis != line.end() && diagnosis->is_object())
-    o.diagnosis = diagnosis->value("verdict", std::string());
-  o.report_json = line.dump();
-  return o;
 }
 
 void print_row(const PairOutcome& o) {
@@ -75,41 +52,31 @@ void print_summary(const BenchmarkSummary& s, const Config& config) {
   std::printf("\npairs run: %d%s\n", s.pairs_run,
               s.skipped ? (" (" + std::to_string(s.skipped) + " skipped)").c_str() : "");
   if (s.with_truth > 0) {
-    std::printf("success (selected pose, %.1f m / %.1f deg): %d/%d = %.1f %%\n",
+    std::printf("success (selected pose, %.1f m / %.1f deg): %d/%d = %s\n",
                 config.evaluation.max_translation_error, config.evaluation.max_rotation_error,
-                s.successes, s.with_truth, 100.0 * s.successes / s.with_truth);
-    std::printf("upper bound (any level succeeds):       %d/%d = %.1f %%\n", s.upper_bound,
-                s.with_truth, 100.0 * s.upper_bound / s.with_truth);
+                s.successes, s.with_truth, rate_text(s.success_rate()).c_str());
+    std::printf("upper bound (any level succeeds):       %d/%d = %s\n", s.upper_bound, s.with_truth,
+                rate_text(s.upper_bound_rate()).c_str());
   }
   std::printf(
-      "verdict: %d accepted; precision %.1f %% (%d right, %d wrong), recall %.1f %% of "
-      "the %d successful pairs; %d known negatives\n",
-      s.accepted, 100.0 * s.precision(), s.true_accepts, s.false_accepts, 100.0 * s.recall(),
-      s.successes, s.negatives);
+      "verdict: %d accepted; precision %s (%d right, %d wrong), recall %s of the %d successful "
+      "pairs; %d known negatives\n",
+      s.accepted, rate_text(s.precision()).c_str(), s.true_accepts, s.false_accepts,
+      rate_text(s.recall()).c_str(), s.successes, s.negatives);
+  if (s.accepted_unjudged > 0)
+    std::printf("         %d more accepted without a ground truth to judge them by\n",
+                s.accepted_unjudged);
   std::printf("\n%-18s %10s %12s\n", "stage", "mean [ms]", "median [ms]");
   for (int i = 0; i < kStageCount; ++i)
     std::printf("%-18s %10.2f %12.2f\n", stage_name(static_cast<Stage>(i)),
                 s.mean_ms[static_cast<std::size_t>(i)], s.median_ms[static_cast<std::size_t>(i)]);
   std::printf("%-18s %10.2f %12.2f\n", "total", s.mean_total_ms, s.median_total_ms);
-}
-
-// How many pairs each diagnosis verdict got, e.g. "diagnosis: 9 success, 1 clique-missed".
-void print_diagnosis_counts(const std::vector<PairOutcome>& outcomes) {
-  std::vector<std::pair<std::string, int>> counts;
-  for (const PairOutcome& o : outcomes) {
-    if (o.diagnosis.empty()) continue;
-    auto it = std::find_if(counts.begin(), counts.end(),
-                           [&](const auto& c) { return c.first == o.diagnosis; });
-    if (it == counts.end())
-      counts.push_back({o.diagnosis, 1});
-    else
-      ++it->second;
+  if (!s.diagnoses.empty()) {  // e.g. "diagnosis: 9 success, 1 clique-missed"
+    std::printf("diagnosis (pairs with ground truth):");
+    for (std::size_t i = 0; i < s.diagnoses.size(); ++i)
+      std::printf("%s %d %s", i ? "," : "", s.diagnoses[i].second, s.diagnoses[i].first.c_str());
+    std::printf("\n");
   }
-  if (counts.empty()) return;
-  std::printf("diagnosis (pairs with ground truth):");
-  for (std::size_t i = 0; i < counts.size(); ++i)
-    std::printf("%s %d %s", i ? "," : "", counts[i].second, counts[i].first.c_str());
-  std::printf("\n");
 }
 
 }  // namespace
@@ -141,39 +108,40 @@ int run_bench(const Args& args) {
     journal.emplace(args.get("out"), args.has("resume"),
                     fingerprint(set.origin + "\n" + config_to_json(config, -1)));
 
-  Pipeline pipeline(config, args.get_int("threads", 1));
+  SetRunner runner(set, args.get_int("threads", 1));
   std::printf("%-14s %6s %10s %11s %8s %6s %8s %10s  %s\n", "pair", "level", "t err [m]",
               "r err [deg]", "success", "bound", "verdict", "time [ms]", "diagnosis");
-  std::vector<PairOutcome> outcomes;
   const bool progress = isatty(STDERR_FILENO);  // in a log it would run into the next line
-  for (std::size_t k = 0; k < set.pairs.size(); ++k) {
+  RunSetHooks hooks;
+  hooks.reuse = [&](std::size_t k) -> std::optional<PairOutcome> {
     const PairEntry& entry = set.pairs[k];
     if (progress) {
       std::fprintf(stderr, "[%zu/%zu] %s ...\r", k + 1, set.pairs.size(), entry.name.c_str());
       std::fflush(stderr);
     }
-    if (const nlohmann::json* done = journal ? journal->find(entry.name) : nullptr) {
-      outcomes.push_back(resumed_outcome(entry, *done));
-      print_row(outcomes.back());
-      continue;
-    }
-    PairOutcome o;
-    with_config_origin(args, [&] { o = run_pair(pipeline, entry); });
+    const nlohmann::json* done = journal ? journal->find(entry.name) : nullptr;
+    if (!done) return std::nullopt;
+    PairOutcome o = outcome_from_json_line(done->dump(), args.get("out") + ".partial");
+    o.timed = false;  // its times are not counted
+    return o;
+  };
+  hooks.done = [&](std::size_t k, const PairOutcome& o) {
     if (!o.loaded) {
       warn("pair " + o.name + " skipped: " + o.load_error);
-    } else {
-      print_row(o);
-      if (journal) journal->append(nlohmann::json::parse(o.report_json), entry.name);
+      return;
     }
-    outcomes.push_back(std::move(o));
-  }
+    print_row(o);
+    if (journal && o.timed)
+      journal->append(nlohmann::json::parse(o.report_json), set.pairs[k].name);
+  };
+  std::vector<PairOutcome> outcomes;
+  with_config_origin(args, [&] { outcomes = run_set(runner, config, hooks); });
   if (progress) std::fprintf(stderr, "%60s\r", "");
   const BenchmarkSummary s = summarize(outcomes);
   if (s.pairs_run == 0)
     throw InputError(set.origin +
                      ": no pair could be loaded (first: " + outcomes.front().load_error + ")");
   print_summary(s, config);
-  print_diagnosis_counts(outcomes);
   const auto resumed = std::count_if(outcomes.begin(), outcomes.end(),
                                      [](const PairOutcome& o) { return !o.timed; });
   if (resumed > 0)

@@ -6,8 +6,8 @@
 #include <sstream>
 
 #include "command.hpp"
-#include "pagor/io/atomic_file.hpp"
 #include "pagor/errors.hpp"
+#include "pagor/io/atomic_file.hpp"
 #include "pagor/sets/sweep.hpp"
 #ifdef PAGOR_CLI_PLOT
 #include "widgets/bench_plots.hpp"
@@ -23,17 +23,11 @@ std::vector<E> parse_enum_list(const std::string& text, const std::string& what)
   std::stringstream in(text);
   std::string item;
   while (std::getline(in, item, ',')) {
-    bool found = false;
-    std::string names;
-    for (int i = 0; i < 32; ++i) {
-      const std::string name = to_string(static_cast<E>(i));
-      if (name == "?") continue;
-      names += (names.empty() ? "" : ", ") + name;
-      if (name == item) out.push_back(static_cast<E>(i)), found = true;
-    }
-    if (!found)
+    const std::optional<E> v = enum_from_string<E>(item);
+    if (!v)
       throw UsageError(what + ": element " + std::to_string(out.size() + 1) + " '" + item +
-                       "' is not one of " + names);
+                       "' is not one of " + enum_name_list<E>());
+    out.push_back(*v);
   }
   return out;
 }
@@ -63,17 +57,17 @@ PairSet sweep_pair_set(const Args& args) {
 void print_table(const SweepResult& r, const Config& base) {
   std::size_t w = 7;
   for (const auto& s : r.settings) w = std::max(w, s.setting.label.size());
-  std::printf("\n%-*s %12s %12s %9s %10s %14s %12s\n", static_cast<int>(w), "setting", "success",
+  std::printf("\n%-*s %14s %14s %9s %10s %14s %12s\n", static_cast<int>(w), "setting", "success",
               "upper bound", "accepted", "precision", "mean time [ms]", "wall [ms]");
   for (const auto& s : r.settings) {
     const BenchmarkSummary& m = s.summary;
-    const auto pct = [&](int n) { return m.with_truth ? 100.0 * n / m.with_truth : 0.0; };
-    char succ[32], bound[32];
-    std::snprintf(succ, sizeof(succ), "%d/%d %5.1f%%", m.successes, m.with_truth, pct(m.successes));
-    std::snprintf(bound, sizeof(bound), "%d/%d %5.1f%%", m.upper_bound, m.with_truth,
-                  pct(m.upper_bound));
-    std::printf("%-*s %12s %12s %9d %9.1f%% %14.1f %12.1f\n", static_cast<int>(w),
-                s.setting.label.c_str(), succ, bound, m.accepted, 100.0 * m.precision(),
+    char succ[48], bound[48];
+    std::snprintf(succ, sizeof(succ), "%d/%d %s", m.successes, m.with_truth,
+                  rate_text(m.success_rate()).c_str());
+    std::snprintf(bound, sizeof(bound), "%d/%d %s", m.upper_bound, m.with_truth,
+                  rate_text(m.upper_bound_rate()).c_str());
+    std::printf("%-*s %14s %14s %9d %10s %14.1f %12.1f\n", static_cast<int>(w),
+                s.setting.label.c_str(), succ, bound, m.accepted, rate_text(m.precision()).c_str(),
                 m.mean_total_ms, s.wall_ms);
   }
   std::printf(

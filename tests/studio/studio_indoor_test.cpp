@@ -6,16 +6,16 @@
 #include <catch2/catch.hpp>
 #include <fstream>
 
-#include "widgets/bench_plots.hpp"
-#include "runners/bench_worker.hpp"
 #include "pagor/indoor/floor_projection.hpp"
 #include "pagor/indoor/indoor_synthetic.hpp"
 #include "pagor/io/clouds.hpp"
+#include "runners/bench_worker.hpp"
+#include "runners/worker.hpp"
 #include "scene/plan_overlay.hpp"
-#include "widgets/plot_export.hpp"
 #include "studio_test_util.hpp"
 #include "ui_driver.hpp"
-#include "runners/worker.hpp"
+#include "widgets/bench_plots.hpp"
+#include "widgets/plot_export.hpp"
 
 using namespace pagor;
 using namespace pagor::test;
@@ -196,10 +196,10 @@ TEST_CASE("picking statistics label each level by its epsilon with the TRIM's un
   a.level_success = {false, true};
   a.level_epsilons = {0.05, 0.1};
   a.trim = TrimKind::difference;
-  CHECK(studio::picking_plot({a}).categories ==
+  CHECK(studio::picking_plot(summarize({a})).categories ==
         std::vector<std::string>{"level 0: \xCE\xB5 = 0.05 m", "level 1: \xCE\xB5 = 0.1 m"});
   a.trim = TrimKind::ratio;
-  CHECK(studio::picking_plot({a}).categories[1] == "level 1: \xCE\xB5 = 0.1");
+  CHECK(studio::picking_plot(summarize({a})).categories[1] == "level 1: \xCE\xB5 = 0.1");
 }
 
 TEST_CASE("every widget with an indoor pair open, the floor plan layer included") {

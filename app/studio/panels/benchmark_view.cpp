@@ -6,12 +6,12 @@
 #include <cmath>
 #include <cstdio>
 
-#include "widgets/bench_plots.hpp"
-#include "pagor/io/atomic_file.hpp"
 #include "pagor/errors.hpp"
+#include "pagor/io/atomic_file.hpp"
 #include "panels/panels.hpp"
-#include "widgets/plot.hpp"
 #include "panels/plot_panel.hpp"
+#include "widgets/bench_plots.hpp"
+#include "widgets/plot.hpp"
 #include "widgets/widgets.hpp"
 
 namespace pagor::studio {
@@ -302,7 +302,7 @@ void benchmark_view(UiContext& ui) {
   const float w = ImGui::GetContentRegionAvail().x;
   plot_with_exports(ui, "rates", rates_plot(summary), w * 0.5f - 4);
   ImGui::SameLine();
-  plot_with_exports(ui, "picking", picking_plot(outcomes), w * 0.5f - 4);
+  plot_with_exports(ui, "picking", picking_plot(summary), w * 0.5f - 4);
   if (const auto plan = bench.plan()) {              // an indoor set: its trajectory over the plan
     std::vector<PairOutcome> sequence(rows.size());  // by scan index; not yet run: left out
     for (std::size_t i = 0; i < rows.size(); ++i)

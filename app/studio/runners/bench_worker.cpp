@@ -12,7 +12,6 @@ namespace {
 
 constexpr int kPipelineThreads = 2;                    // graph and verification
 constexpr std::size_t kDefaultBudget = 1024ull << 20;  // [bytes]
-constexpr std::size_t kTreeBytesPerPoint = 32;         // kd-tree node share, estimated
 
 double ms_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
@@ -35,11 +34,6 @@ std::string beside(const std::string& path, const std::string& file) {
   return (std::filesystem::path(file).parent_path() / p).string();
 }
 
-std::size_t cloud_bytes(const PointCloud& c) {
-  return c.points.capacity() * sizeof(Eigen::Vector3f) + c.intensities.capacity() * sizeof(float) +
-         c.labels.capacity() * sizeof(std::uint32_t);
-}
-
 }  // namespace
 
 BenchWorker::BenchWorker() : config_(default_config()) {
@@ -55,20 +49,6 @@ BenchWorker::~BenchWorker() {
   }
   changed_.notify_all();
   thread_.join();
-}
-
-std::size_t BenchWorker::estimate_bytes(const Pipeline& p) {
-  std::size_t bytes = cloud_bytes(p.source()) + cloud_bytes(p.target());
-  if (const Verifier* v = p.verifier())
-    bytes += (v->source_points().size() + v->target_points().size()) * sizeof(Eigen::Vector3f) +
-             v->target_points().size() * kTreeBytesPerPoint;
-  bytes += p.correspondences().items.size() * sizeof(Correspondence);
-  const PyramidGraph& g = p.graph();
-  bytes += g.neighbors.size() * (sizeof(int) + sizeof(std::uint8_t) + sizeof(float)) +
-           g.offsets.size() * sizeof(std::int64_t);
-  for (const LandmarkSet* l : {&p.source_landmarks(), &p.target_landmarks()})
-    bytes += l->landmarks.size() * 256;  // centroid, extent, descriptor share
-  return bytes;
 }
 
 void BenchWorker::open(PairSet set, const Config& config) {
@@ -232,12 +212,11 @@ void BenchWorker::loop() {
       if (pending_set_) {
         set_ = std::move(*pending_set_);
         pending_set_.reset();
-        caches_.clear();
-        caches_.resize(set_.pairs.size());
-        bytes_.assign(set_.pairs.size(), 0);
+        runner_ = std::make_unique<SetRunner>(set_, kPipelineThreads);
         status_.cached = 0;
         status_.cache_bytes = 0;
       }
+      runner_->set_cache_budget(status_.budget_bytes);
       status_.busy = !set_.pairs.empty();
       status_.pass_ms = 0;
       // Cached pairs first: they re-run only what the change invalidated, so the rates of most
@@ -245,7 +224,7 @@ void BenchWorker::loop() {
       order.resize(set_.pairs.size());
       std::iota(order.begin(), order.end(), 0);
       std::stable_partition(order.begin(), order.end(),
-                            [&](std::size_t i) { return caches_[i].pipeline != nullptr; });
+                            [&](std::size_t i) { return runner_->cached(i); });
     }
     load_pending_plan();
     const auto t0 = std::chrono::steady_clock::now();
@@ -308,12 +287,12 @@ void BenchWorker::run_pending_sweep() {
   std::string error;
   try {
     result = std::make_shared<SweepResult>(run_sweep(
-        set_, settings, kPipelineThreads,
+        *runner_, settings,
         [this](int, int, const PairOutcome&) {
           std::lock_guard<std::mutex> lock(mutex_);
           ++status_.sweep_done;
         },
-        &cancel_, &caches_));
+        &cancel_));
   } catch (const Cancelled&) {
     error = "the sweep was cancelled by a parameter change";
   } catch (const Error& e) {
@@ -328,29 +307,15 @@ void BenchWorker::run_pending_sweep() {
 
 bool BenchWorker::evaluate(std::size_t i, const Config& config, std::uint64_t gen) {
   if (cancel_) return false;
-  const PairEntry& entry = set_.pairs[i];
-  PairCache& slot = caches_[i];
   const auto t0 = std::chrono::steady_clock::now();
   PairOutcome o;
   std::string error;
   try {
-    if (slot.pipeline) {
-      slot.pipeline->set_config(config);
-      slot.pipeline->run(ProgressFn{}, &cancel_);
-      o = pair_outcome(*slot.pipeline, entry, slot.source_name, slot.target_name);
-    } else {
-      auto pipeline = std::make_unique<Pipeline>(config, kPipelineThreads);
-      o = run_pair(*pipeline, entry);
-      if (o.loaded) {
-        slot.pipeline = std::move(pipeline);
-        slot.source_name = o.source_name;
-        slot.target_name = o.target_name;
-      }
-    }
+    o = runner_->run(i, config, &cancel_);
   } catch (const Cancelled&) {
     return false;
   } catch (const Error& e) {  // a work budget exceeded, unreadable data: the row says why
-    slot.pipeline.reset();
+    const PairEntry& entry = set_.pairs[i];
     o = PairOutcome{};
     o.name = entry.name;
     o.negative = entry.negative;
@@ -358,24 +323,14 @@ bool BenchWorker::evaluate(std::size_t i, const Config& config, std::uint64_t ge
     error = entry.name + ": " + e.what();
   }
   const double ms = ms_since(t0);
-  bytes_[i] = slot.pipeline ? estimate_bytes(*slot.pipeline) : 0;
   std::lock_guard<std::mutex> lock(mutex_);
-  // Keep the pipelines already kept; a new one only when it fits (a stable cached set).
-  std::size_t total = 0;
-  for (std::size_t k = 0; k < caches_.size(); ++k)
-    if (k != i && caches_[k].pipeline) total += bytes_[k];
-  if (slot.pipeline && total + bytes_[i] > status_.budget_bytes) {
-    slot.pipeline.reset();
-    bytes_[i] = 0;
-  }
-  status_.cache_bytes = total + bytes_[i];
-  status_.cached = static_cast<int>(std::count_if(
-      caches_.begin(), caches_.end(), [](const PairCache& c) { return c.pipeline != nullptr; }));
+  status_.cache_bytes = runner_->cache_bytes();
+  status_.cached = runner_->cached_count();
+  for (std::size_t k = 0; k < rows_.size(); ++k) rows_[k].cached = runner_->cached(k);
   if (status_.generation != gen) return false;
   BenchRow& row = rows_[i];
   row.outcome = std::move(o);
   row.done = row.current = true;
-  row.cached = slot.pipeline != nullptr;
   row.last_ms = ms;
   ++status_.done;
   if (!error.empty()) status_.error = error;

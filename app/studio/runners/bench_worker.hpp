@@ -1,9 +1,9 @@
 #pragma once
 /// \file bench_worker.hpp
-/// The benchmark view's runner: every pair of a set through the core's benchmark functions on a
-/// background thread, one cached Pipeline per pair kept within a memory budget. A new
-/// configuration re-evaluates the whole set: each cached pair re-runs only the stages the change
-/// invalidated (cached pairs first, so the rates update fast), the others run from their files.
+/// The benchmark view's runner: every pair of a set through the core's SetRunner on a background
+/// thread, which keeps a pipeline per pair within a memory budget. A new configuration
+/// re-evaluates the whole set: each kept pair re-runs only the stages the change invalidated
+/// (kept pairs first, so the rates update fast), the others run from their files.
 
 #include <atomic>
 #include <condition_variable>
@@ -15,8 +15,9 @@
 #include <thread>
 #include <vector>
 
-#include "pagor/sets/benchmark.hpp"
 #include "pagor/indoor/floor_plan.hpp"
+#include "pagor/sets/benchmark.hpp"
+#include "pagor/sets/runner.hpp"
 #include "pagor/sets/sweep.hpp"
 
 namespace pagor::studio {
@@ -82,9 +83,6 @@ class BenchWorker {
   /// Blocks until the current pass is complete or `timeout_s` passes; true when complete.
   bool wait_idle(double timeout_s) const;
 
-  /// Estimated memory a pipeline holds: its clouds, verification clouds and kd-tree [bytes].
-  static std::size_t estimate_bytes(const Pipeline& pipeline);
-
  private:
   void loop();
   void run_pending_sweep();
@@ -104,8 +102,7 @@ class BenchWorker {
   bool rerunnable_ = false;
   Config config_;
   std::vector<BenchRow> rows_;
-  std::vector<PairCache> caches_;   // one per pair; the thread's, replaced under the mutex
-  std::vector<std::size_t> bytes_;  // estimate_bytes of each kept pipeline
+  std::unique_ptr<SetRunner> runner_;  // the thread's, replaced under the mutex
   std::optional<std::vector<SweepSetting>> pending_sweep_;
   std::shared_ptr<const SweepResult> sweep_result_;
   BenchStatus status_;

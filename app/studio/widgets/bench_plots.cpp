@@ -8,14 +8,9 @@
 namespace pagor::studio {
 namespace {
 
-double percent(int n, int of) {
-  return of ? 100.0 * n / of : 0.0;
-}
-
-// A rate of nothing (no pair with a ground truth, none accepted, none successful) is NaN, shown
-// as n/a, rather than the 0 % or 100 % the summary's conventions would give.
-double rate_or_none(int n, int of) {
-  return of ? percent(n, of) : std::numeric_limits<double>::quiet_NaN();
+// A rate in percent; an undefined one (BenchmarkSummary) is NaN, which the plots show as n/a.
+double percent(std::optional<double> rate) {
+  return rate ? 100.0 * *rate : std::numeric_limits<double>::quiet_NaN();
 }
 
 // A plot whose values are percentages, on an axis from 0 to 100 %.
@@ -37,8 +32,8 @@ Plot sweep_success_plot(const SweepResult& result) {
   p.series = {{"success", {}, {}}, {"upper bound", {}, {}}};
   for (const SweepSettingResult& r : result.settings) {
     p.categories.push_back(r.setting.label);
-    p.series[0].y.push_back(percent(r.summary.successes, r.summary.with_truth));
-    p.series[1].y.push_back(percent(r.summary.upper_bound, r.summary.with_truth));
+    p.series[0].y.push_back(percent(r.summary.success_rate()));
+    p.series[1].y.push_back(percent(r.summary.upper_bound_rate()));
   }
   return p;
 }
@@ -89,8 +84,8 @@ Plot sweep_line_plot(const SweepResult& result) {
     const double x = axis_value(r.setting.config, a);
     p.series[0].x.push_back(x);
     p.series[1].x.push_back(x);
-    p.series[0].y.push_back(percent(r.summary.successes, r.summary.with_truth));
-    p.series[1].y.push_back(percent(r.summary.upper_bound, r.summary.with_truth));
+    p.series[0].y.push_back(percent(r.summary.success_rate()));
+    p.series[1].y.push_back(percent(r.summary.upper_bound_rate()));
   }
   return p;
 }
@@ -115,7 +110,7 @@ Plot sweep_pair_plot(const SweepResult& result, std::size_t pair) {
   return p;
 }
 
-Plot picking_plot(const std::vector<PairOutcome>& outcomes) {
+Plot picking_plot(const BenchmarkSummary& s) {
   Plot p;
   p.title = "Picking: per pyramid level";
   p.kind = PlotKind::bars;
@@ -123,30 +118,14 @@ Plot picking_plot(const std::vector<PairOutcome>& outcomes) {
   p.value_unit = "count";
   p.value_min = 0.0;
   p.integer_values = true;
-  std::size_t levels = 0;
-  for (const PairOutcome& o : outcomes) levels = std::max(levels, o.level_success.size());
-  p.series = {{"selected", std::vector<double>{}, std::vector<double>(levels, 0.0)},
-              {"alone would succeed", std::vector<double>{}, std::vector<double>(levels, 0.0)},
-              {"selected and succeeded", std::vector<double>{}, std::vector<double>(levels, 0.0)}};
-  for (std::size_t l = 0; l < levels; ++l) {
-    std::optional<double> eps;
-    std::optional<TrimKind> trim;
-    for (const PairOutcome& o : outcomes)  // the first outcome that knows this level's threshold
-      if (l < o.level_epsilons.size()) {
-        eps = o.level_epsilons[l];
-        trim = o.trim;
-        break;
-      }
-    p.categories.push_back(level_label(static_cast<int>(l), eps, trim));
-  }
-  for (const PairOutcome& o : outcomes) {
-    if (!o.loaded || o.negative || !o.has_ground_truth) continue;
-    if (o.selected_level >= 0 && static_cast<std::size_t>(o.selected_level) < levels) {
-      p.series[0].y[static_cast<std::size_t>(o.selected_level)] += 1;
-      if (o.success) p.series[2].y[static_cast<std::size_t>(o.selected_level)] += 1;
-    }
-    for (std::size_t l = 0; l < o.level_success.size(); ++l)
-      if (o.level_success[l]) p.series[1].y[l] += 1;
+  p.series = {
+      {"selected", {}, {}}, {"alone would succeed", {}, {}}, {"selected and succeeded", {}, {}}};
+  for (std::size_t l = 0; l < s.levels.size(); ++l) {
+    const LevelPicks& picks = s.levels[l];
+    p.categories.push_back(level_label(static_cast<int>(l), picks.epsilon, s.trim));
+    p.series[0].y.push_back(picks.selected);
+    p.series[1].y.push_back(picks.alone_succeeds);
+    p.series[2].y.push_back(picks.selected_and_succeeded);
   }
   return p;
 }
@@ -157,9 +136,8 @@ Plot rates_plot(const BenchmarkSummary& s) {
   p.categories = {"success", "upper bound", "verdict precision", "verdict recall"};
   p.series = {{"this run",
                {},
-               {rate_or_none(s.successes, s.with_truth), rate_or_none(s.upper_bound, s.with_truth),
-                rate_or_none(s.true_accepts, s.accepted),
-                rate_or_none(s.true_accepts, s.successes)}}};
+               {percent(s.success_rate()), percent(s.upper_bound_rate()), percent(s.precision()),
+                percent(s.recall())}}};
   return p;
 }
 
@@ -249,20 +227,13 @@ Plot trajectory_plot(const std::vector<PairOutcome>& outcomes, const FloorPlan* 
 }
 
 std::string summary_text(const BenchmarkSummary& s) {
-  const auto pct = [](int n, int of) {
-    const double r = rate_or_none(n, of);
-    char buf[32];
-    std::snprintf(buf, sizeof(buf), "%.1f %%", r);
-    return std::isnan(r) ? std::string("n/a") : std::string(buf);
-  };
   char line[320];
   std::snprintf(line, sizeof(line),
                 "success %d/%d (%s), upper bound %d/%d (%s); verdict: %d accepted, precision %s, "
                 "recall %s; mean time %.0f ms per pair",
-                s.successes, s.with_truth, pct(s.successes, s.with_truth).c_str(), s.upper_bound,
-                s.with_truth, pct(s.upper_bound, s.with_truth).c_str(), s.accepted,
-                pct(s.true_accepts, s.accepted).c_str(), pct(s.true_accepts, s.successes).c_str(),
-                s.mean_total_ms);
+                s.successes, s.with_truth, rate_text(s.success_rate()).c_str(), s.upper_bound,
+                s.with_truth, rate_text(s.upper_bound_rate()).c_str(), s.accepted,
+                rate_text(s.precision()).c_str(), rate_text(s.recall()).c_str(), s.mean_total_ms);
   return line;
 }
 

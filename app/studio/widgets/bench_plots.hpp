@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "pagor/sets/benchmark.hpp"
 #include "pagor/indoor/floor_plan.hpp"
+#include "pagor/sets/benchmark.hpp"
 #include "pagor/sets/sweep.hpp"
 #include "widgets/plot.hpp"
 
@@ -29,7 +29,7 @@ Plot sweep_pair_plot(const SweepResult& result, std::size_t pair);
 /// Bars per level: how often it was selected and how often its candidate alone would succeed
 /// [pairs], over the pairs with ground truth. Each level is labelled by its epsilon with its unit
 /// (level_label).
-Plot picking_plot(const std::vector<PairOutcome>& outcomes);
+Plot picking_plot(const BenchmarkSummary& summary);
 
 /// "level 2: ε = 0.15 m" (difference TRIM), "level 2: ε = 0.15" (ratio, unitless), or
 /// "level 2" when the threshold is not known.

@@ -1,13 +1,15 @@
 #include "pagor/sets/benchmark.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <fstream>
 #include <limits>
 #include <nlohmann/json.hpp>
 
-#include "pagor/verify/diagnosis.hpp"
+#include "io/json_input.hpp"
 #include "pagor/errors.hpp"
 #include "pagor/report.hpp"
+#include "pagor/verify/diagnosis.hpp"
 
 namespace pagor {
 namespace {
@@ -27,7 +29,7 @@ double mean(const std::vector<double>& v) {
 
 }  // namespace
 
-PairOutcome run_pair(Pipeline& pipeline, const PairEntry& entry) {
+PairOutcome run_pair(Pipeline& pipeline, const PairEntry& entry, const std::atomic<bool>* cancel) {
   PairOutcome o;
   o.name = entry.name;
   o.negative = entry.negative;
@@ -42,7 +44,7 @@ PairOutcome run_pair(Pipeline& pipeline, const PairEntry& entry) {
   o.has_ground_truth = pair.T_target_source_gt.has_value();
   pipeline.set_input(std::move(pair.source.cloud), std::move(pair.target.cloud));
   pipeline.set_ground_truth(pair.T_target_source_gt);
-  pipeline.run();
+  pipeline.run(ProgressFn{}, cancel);
   return pair_outcome(pipeline, entry, pair.source_name, pair.target_name);
 }
 
@@ -87,6 +89,29 @@ PairOutcome pair_outcome(const Pipeline& pipeline, const PairEntry& entry,
   return o;
 }
 
+std::string rate_text(std::optional<double> rate) {
+  if (!rate) return "n/a";
+  char buf[32];
+  std::snprintf(buf, sizeof(buf), "%.1f %%", 100.0 * *rate);
+  return buf;
+}
+
+namespace {
+
+// The per-level picks of the pairs with ground truth.
+void count_levels(const PairOutcome& o, BenchmarkSummary& s) {
+  if (s.levels.size() < o.level_success.size()) s.levels.resize(o.level_success.size());
+  if (o.selected_level >= 0 && static_cast<std::size_t>(o.selected_level) < s.levels.size()) {
+    LevelPicks& l = s.levels[static_cast<std::size_t>(o.selected_level)];
+    ++l.selected;
+    l.selected_and_succeeded += o.success;
+  }
+  for (std::size_t l = 0; l < o.level_success.size(); ++l)
+    s.levels[l].alone_succeeds += o.level_success[l];
+}
+
+}  // namespace
+
 BenchmarkSummary summarize(const std::vector<PairOutcome>& outcomes) {
   BenchmarkSummary s;
   std::array<std::vector<double>, kStageCount> times;
@@ -102,13 +127,28 @@ BenchmarkSummary summarize(const std::vector<PairOutcome>& outcomes) {
       ++s.with_truth;
       s.successes += o.success;
       s.upper_bound += o.upper_bound;
+      count_levels(o, s);
     }
+    if (o.accepted && !o.negative && !o.has_ground_truth) ++s.accepted_unjudged;
     if (o.accepted && (o.negative || o.has_ground_truth)) {  // a verdict that can be judged
       ++s.accepted;
       if (!o.negative && o.success)
         ++s.true_accepts;
-      else if (o.negative || o.has_ground_truth)
+      else
         ++s.false_accepts;
+    }
+    if (!o.diagnosis.empty()) {
+      auto it = std::find_if(s.diagnoses.begin(), s.diagnoses.end(),
+                             [&](const auto& d) { return d.first == o.diagnosis; });
+      if (it == s.diagnoses.end())
+        s.diagnoses.push_back({o.diagnosis, 1});
+      else
+        ++it->second;
+    }
+    if (!s.trim && o.trim) s.trim = o.trim;
+    for (std::size_t l = 0; l < o.level_epsilons.size(); ++l) {
+      if (s.levels.size() <= l) s.levels.resize(l + 1);
+      if (!s.levels[l].epsilon) s.levels[l].epsilon = o.level_epsilons[l];
     }
     if (!o.timed) continue;
     for (int i = 0; i < kStageCount; ++i)
@@ -145,46 +185,61 @@ std::optional<Transform> transform_from_json(nlohmann::json::const_iterator it,
   return T;
 }
 
-PairOutcome outcome_from_line(const nlohmann::json& j, const std::string& where) {
-  if (!j.is_object() || j.value("schema", "") != "pagor.register/1" || !j.contains("pair"))
+// Typed members of a results line: a member of another type counts as absent (a line written by
+// hand or by another tool must not end the reader).
+bool flag(const nlohmann::json& j, const char* key) {
+  const auto it = j.find(key);
+  return it != j.end() && it->is_boolean() && it->get<bool>();
+}
+double number(const nlohmann::json& j, const char* key) {
+  const auto it = j.find(key);
+  return it != j.end() && it->is_number() ? it->get<double>() : 0.0;
+}
+std::string text(const nlohmann::json& j, const char* key) {
+  const auto it = j.find(key);
+  return it != j.end() && it->is_string() ? it->get<std::string>() : std::string();
+}
+const nlohmann::json* object(const nlohmann::json& j, const char* key) {
+  const auto it = j.find(key);
+  return it != j.end() && it->is_object() ? &*it : nullptr;
+}
+
+PairOutcome outcome_from_json(const nlohmann::json& j, const std::string& where) {
+  if (!j.is_object() || text(j, "schema") != "pagor.register/1" || !j.contains("pair"))
     throw InputError(where + ": not a pagor bench result (schema pagor.register/1 with 'pair')");
   PairOutcome o;
   o.loaded = true;
   o.name = j["pair"].is_string() ? j["pair"].get<std::string>() : j["pair"].dump();
-  o.negative = j.value("negative", false);
-  o.source_name = j.value("source", "");
-  o.target_name = j.value("target", "");
+  o.negative = flag(j, "negative");
+  o.source_name = text(j, "source");
+  o.target_name = text(j, "target");
   const auto level = j.find("selected_level");
   if (level != j.end() && level->is_number_integer()) o.selected_level = level->get<int>();
-  const auto gt = j.find("ground_truth");
-  if (gt != j.end() && gt->is_object()) {
+  if (const nlohmann::json* gt = object(j, "ground_truth")) {
     o.has_ground_truth = true;
-    o.success = gt->value("success", false);
-    o.upper_bound = gt->value("upper_bound", false);
+    o.success = flag(*gt, "success");
+    o.upper_bound = flag(*gt, "upper_bound");
     if (gt->contains("translation_error_m"))
-      o.error = PoseError{gt->value("translation_error_m", 0.0),
-                          gt->value("rotation_error_deg", 0.0), o.success};
-  }
-  const auto a = j.find("acceptance");
-  if (a != j.end() && a->is_object()) {
-    o.accepted = a->value("accepted", false);
-    o.margin = a->value("margin", 0.0);
-  }
-  o.T_target_source = transform_from_json(j.find("T_target_source"), j.end());
-  if (gt != j.end() && gt->is_object())
+      o.error = PoseError{number(*gt, "translation_error_m"), number(*gt, "rotation_error_deg"),
+                          o.success};
     o.T_target_source_gt = transform_from_json(gt->find("T_target_source"), gt->end());
-  const std::string trim = j.value("trim", "");
-  if (trim == to_string(TrimKind::difference)) o.trim = TrimKind::difference;
-  if (trim == to_string(TrimKind::ratio)) o.trim = TrimKind::ratio;
+  }
+  if (const nlohmann::json* a = object(j, "acceptance")) {
+    o.accepted = flag(*a, "accepted");
+    o.margin = number(*a, "margin");
+  }
+  if (const nlohmann::json* d = object(j, "diagnosis")) o.diagnosis = text(*d, "verdict");
+  o.T_target_source = transform_from_json(j.find("T_target_source"), j.end());
+  o.trim = enum_from_string<TrimKind>(text(j, "trim"));
   const auto levels = j.find("levels");
   if (levels != j.end() && levels->is_array())
     for (const auto& l : *levels) {
-      o.level_success.push_back(l.is_object() && l.value("success", false));
-      o.level_epsilons.push_back(l.is_object() ? l.value("epsilon", 0.0) : 0.0);
+      o.level_success.push_back(l.is_object() && flag(l, "success"));
+      o.level_epsilons.push_back(l.is_object() ? number(l, "epsilon") : 0.0);
     }
-  const auto t = j.find("timings_ms");
-  o.timed = t != j.end() && t->is_object() && t->contains("total");
-  if (o.timed) o.total_ms = t->value("total", 0.0);
+  const nlohmann::json* t = object(j, "timings_ms");
+  o.timed = t && t->contains("total");
+  if (o.timed) o.total_ms = number(*t, "total");
   o.report_json = j.dump();
   return o;
 }
@@ -199,16 +254,20 @@ std::vector<PairOutcome> read_bench_results(const std::string& path) {
   for (int n = 1; std::getline(in, line); ++n) {
     if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
     const std::string where = path + ":" + std::to_string(n);
-    nlohmann::json j;
-    try {
-      j = nlohmann::json::parse(line);
-    } catch (const nlohmann::json::exception&) {
-      throw InputError(where + ": not JSON");
-    }
-    out.push_back(outcome_from_line(j, where));
+    out.push_back(outcome_from_json_line(line, where));
   }
   if (out.empty()) throw InputError(path + ": no results in the file");
   return out;
+}
+
+PairOutcome outcome_from_json_line(const std::string& line, const std::string& where) {
+  nlohmann::json j;
+  try {
+    j = parse_json_limited(line, where);
+  } catch (const Error&) {
+    throw InputError(where + ": not JSON");
+  }
+  return outcome_from_json(j, where);
 }
 
 }  // namespace pagor

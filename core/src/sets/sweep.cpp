@@ -31,10 +31,6 @@ std::vector<T> values_or(const std::vector<T>& grid, const T& base) {
   return grid.empty() ? std::vector<T>{base} : grid;
 }
 
-double rate(int n, int of) {
-  return of ? static_cast<double>(n) / of : 0.0;
-}
-
 }  // namespace
 
 std::vector<SweepSetting> sweep_settings(const Config& base, const SweepGrid& grid) {
@@ -71,55 +67,36 @@ std::vector<SweepSetting> sweep_settings(const Config& base, const SweepGrid& gr
   return out;
 }
 
-SweepResult run_sweep(const PairSet& set, const std::vector<SweepSetting>& settings, int threads,
-                      const SweepProgressFn& progress, const std::atomic<bool>* cancel,
-                      std::vector<PairCache>* caches) {
+SweepResult run_sweep(SetRunner& runner, const std::vector<SweepSetting>& settings,
+                      const SweepProgressFn& progress, const std::atomic<bool>* cancel) {
   SweepResult result;
-  result.pairs = static_cast<int>(set.pairs.size());
+  result.pairs = static_cast<int>(runner.size());
   for (const SweepSetting& s : settings) result.settings.push_back({s, {}, {}, 0.0});
-  for (std::size_t p = 0; p < set.pairs.size(); ++p) {
-    const PairEntry& entry = set.pairs[p];
-    // One pipeline per pair, alive across the settings: its caches are the reuse.
-    PairCache own;
-    PairCache& cache = caches && p < caches->size() && (*caches)[p].pipeline ? (*caches)[p] : own;
-    const bool cached = cache.pipeline != nullptr;
-    std::array<int, kStageCount> runs_before{};
-    if (cached)
-      for (int i = 0; i < kStageCount; ++i)
-        runs_before[static_cast<std::size_t>(i)] = cache.pipeline->runs(static_cast<Stage>(i));
-    else
-      cache.pipeline = std::make_unique<Pipeline>(
-          settings.empty() ? default_config() : settings.front().config, threads);
-    bool loaded = cached;
-    PairOutcome skipped;
+  const std::array<int, kStageCount> runs_before = runner.stage_runs();
+  for (std::size_t p = 0; p < runner.size(); ++p) {
+    std::optional<PairOutcome> skipped;  // a pair that does not load is skipped in every setting
     for (std::size_t k = 0; k < settings.size(); ++k) {
       if (cancel && cancel->load()) throw Cancelled();
       const auto t0 = std::chrono::steady_clock::now();
-      PairOutcome o;
-      if (!loaded && k == 0) {
-        o = run_pair(*cache.pipeline, entry);
-        loaded = o.loaded;
-        cache.source_name = o.source_name;
-        cache.target_name = o.target_name;
-        if (!loaded) skipped = o;
-      } else if (!loaded) {
-        o = skipped;  // skipped in every setting
-      } else {
-        cache.pipeline->set_config(settings[k].config);
-        cache.pipeline->run(ProgressFn{}, cancel);
-        o = pair_outcome(*cache.pipeline, entry, cache.source_name, cache.target_name);
-      }
+      PairOutcome o = skipped ? *skipped : runner.run(p, settings[k].config, cancel);
+      if (!o.loaded) skipped = o;
       result.settings[k].wall_ms +=
           std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
       if (progress) progress(static_cast<int>(p), static_cast<int>(k), o);
       result.settings[k].outcomes.push_back(std::move(o));
     }
-    for (int i = 0; i < kStageCount; ++i)
-      result.stage_runs[static_cast<std::size_t>(i)] +=
-          cache.pipeline->runs(static_cast<Stage>(i)) - runs_before[static_cast<std::size_t>(i)];
   }
+  for (int i = 0; i < kStageCount; ++i)
+    result.stage_runs[static_cast<std::size_t>(i)] =
+        runner.stage_runs()[static_cast<std::size_t>(i)] - runs_before[static_cast<std::size_t>(i)];
   for (SweepSettingResult& r : result.settings) r.summary = summarize(r.outcomes);
   return result;
+}
+
+SweepResult run_sweep(const PairSet& set, const std::vector<SweepSetting>& settings, int threads,
+                      const SweepProgressFn& progress, const std::atomic<bool>* cancel) {
+  SetRunner runner(set, threads);
+  return run_sweep(runner, settings, progress, cancel);
 }
 
 std::vector<double> parse_number_list(const std::string& text, const std::string& what) {
@@ -157,15 +134,30 @@ std::string sweep_csv(const SweepResult& result) {
       "accepted,precision,recall,mean_time_ms,wall_ms\n";
   for (const SweepSettingResult& r : result.settings) {
     const BenchmarkSummary& s = r.summary;
-    char row[256];
-    std::snprintf(row, sizeof(row), ",%d,%d,%d,%.4f,%d,%.4f,%d,%.4f,%.4f,%.2f,%.2f\n", s.pairs_run,
-                  s.with_truth, s.successes, rate(s.successes, s.with_truth), s.upper_bound,
-                  rate(s.upper_bound, s.with_truth), s.accepted, s.precision(), s.recall(),
-                  s.mean_total_ms, r.wall_ms);
-    out += "\"" + r.setting.label + "\"" + row;
+    const auto cell = [](std::optional<double> rate) {  // an undefined rate is an empty cell
+      char buf[32] = "";
+      if (rate) std::snprintf(buf, sizeof(buf), "%.4f", *rate);
+      return std::string(buf);
+    };
+    char times[64];
+    std::snprintf(times, sizeof(times), "%.2f,%.2f", s.mean_total_ms, r.wall_ms);
+    out += "\"" + r.setting.label + "\"," + std::to_string(s.pairs_run) + "," +
+           std::to_string(s.with_truth) + "," + std::to_string(s.successes) + "," +
+           cell(s.success_rate()) + "," + std::to_string(s.upper_bound) + "," +
+           cell(s.upper_bound_rate()) + "," + std::to_string(s.accepted) + "," +
+           cell(s.precision()) + "," + cell(s.recall()) + "," + times + "\n";
   }
   return out;
 }
+
+namespace {
+
+// An undefined rate is null.
+nlohmann::json json_rate(std::optional<double> rate) {
+  return rate ? nlohmann::json(*rate) : nlohmann::json();
+}
+
+}  // namespace
 
 std::string sweep_json_lines(const SweepResult& result) {
   std::string out;
@@ -183,8 +175,8 @@ std::string sweep_json_lines(const SweepResult& result) {
                         {"successes", s.successes},
                         {"upper_bound", s.upper_bound},
                         {"accepted", s.accepted},
-                        {"precision", s.precision()},
-                        {"recall", s.recall()},
+                        {"precision", json_rate(s.precision())},
+                        {"recall", json_rate(s.recall())},
                         {"mean_time_ms", s.mean_total_ms},
                         {"wall_ms", r.wall_ms}};
     nlohmann::json pairs = nlohmann::json::array();

@@ -1,5 +1,9 @@
 #include "pagor/sets/threshold_comparison.hpp"
 
+#include <algorithm>
+
+#include "pagor/sets/sweep.hpp"
+
 #include <cstdio>
 
 #include "pagor/errors.hpp"
@@ -40,45 +44,34 @@ std::vector<VariantResult> compare_variants(
     const std::function<void(std::size_t, std::size_t)>& progress) {
   std::vector<VariantResult> out;
   if (variants.empty()) return out;
+  std::vector<SweepSetting> settings;
   for (const Variant& v : variants) {
     validate(v.config, v.name);
-    out.push_back({v.name});
+    settings.push_back({v.name, v.config});
   }
-  Pipeline pipeline(variants.front().config, threads);
+  PairSet positives = set;  // known negatives have no pose to get right
+  positives.pairs.erase(std::remove_if(positives.pairs.begin(), positives.pairs.end(),
+                                       [](const PairEntry& e) { return e.negative; }),
+                        positives.pairs.end());
+  SetRunner runner(positives, threads);
+  const SweepResult swept =
+      run_sweep(runner, settings, [&](int pair, int setting, const PairOutcome&) {
+        if (progress && setting + 1 == static_cast<int>(settings.size()))
+          progress(static_cast<std::size_t>(pair) + 1, positives.pairs.size());
+      });
+  // The variants differ from the graph on; stages kept from the previous variant cost nothing.
   const Stage timed[] = {Stage::graph, Stage::clique, Stage::gnc, Stage::verification};
-  for (std::size_t k = 0; k < set.pairs.size(); ++k) {
-    const PairEntry& entry = set.pairs[k];
-    LoadedPair pair;
-    bool usable = !entry.negative;
-    if (usable) {
-      try {
-        pair = load_pair(entry.source, variants.front().config.indoor);
-      } catch (const InputError&) {
-        usable = false;  // a pair that does not load counts for no variant
-      }
+  for (const SweepSettingResult& r : swept.settings) {
+    VariantResult v{r.setting.label, r.summary.with_truth, r.summary.successes, 0.0};
+    for (const PairOutcome& o : r.outcomes) {
+      if (!o.loaded || !o.has_ground_truth) continue;
+      for (Stage t : timed)
+        if (o.ran[static_cast<std::size_t>(t)])
+          v.mean_ms += o.stage_ms[static_cast<std::size_t>(t)];
     }
-    if (usable && pair.T_target_source_gt) {
-      pipeline.set_input(std::move(pair.source.cloud), std::move(pair.target.cloud));
-      pipeline.set_ground_truth(pair.T_target_source_gt);
-      for (std::size_t i = 0; i < variants.size(); ++i) {
-        pipeline.set_config(variants[i].config);  // landmarks and correspondences stay cached
-        int before[4];
-        for (int t = 0; t < 4; ++t) before[t] = pipeline.runs(timed[t]);
-        pipeline.run();
-        const auto err = pipeline.selected_error();
-        VariantResult& r = out[i];
-        ++r.with_truth;
-        r.successes += err && err->success;
-        double ms = 0;
-        for (int t = 0; t < 4; ++t)  // stages cached from the previous variant cost nothing
-          if (pipeline.runs(timed[t]) > before[t]) ms += pipeline.time_ms(timed[t]);
-        r.mean_ms += ms;
-      }
-    }
-    if (progress) progress(k + 1, set.pairs.size());
+    if (v.with_truth) v.mean_ms /= v.with_truth;
+    out.push_back(std::move(v));
   }
-  for (VariantResult& r : out)
-    if (r.with_truth) r.mean_ms /= r.with_truth;
   return out;
 }
 

@@ -12,9 +12,10 @@
 #include <string>
 #include <vector>
 
-#include "pagor/sets/benchmark.hpp"
 #include "pagor/config.hpp"
+#include "pagor/sets/benchmark.hpp"
 #include "pagor/sets/pair_set.hpp"
+#include "pagor/sets/runner.hpp"
 
 namespace pagor {
 
@@ -52,25 +53,20 @@ struct SweepResult {
   int pairs = 0;                              ///< pairs in the set
 };
 
-/// A pair's pipeline kept between runs (by the studio's benchmark view), with the names run_pair
-/// reported; `pipeline` is null when the pair is not cached.
-struct PairCache {
-  std::unique_ptr<Pipeline> pipeline;
-  std::string source_name, target_name;
-};
-
 /// Called after each (pair, setting): indices and that run's outcome.
 using SweepProgressFn = std::function<void(int pair, int setting, const PairOutcome& outcome)>;
 
-/// Runs every setting on every pair. A pair that cannot be loaded is skipped in every setting
-/// (as `pagor bench` does). With `caches` (one per pair), a cached pair starts from its
-/// pipeline, which keeps the last setting afterwards; the others use a pipeline of their own for
-/// the duration of the pair. Throws Cancelled when `cancel` becomes true, ConfigError when a
-/// setting exceeds a work budget.
+/// Runs every setting on every pair of the runner's set, pair by pair (so each pair's pipeline
+/// carries its caches across the settings). A pair that cannot be loaded is skipped in every
+/// setting (as `pagor bench` does). Throws Cancelled when `cancel` becomes true, ConfigError when
+/// a setting exceeds a work budget.
+SweepResult run_sweep(SetRunner& runner, const std::vector<SweepSetting>& settings,
+                      const SweepProgressFn& progress = {},
+                      const std::atomic<bool>* cancel = nullptr);
+/// The same on a runner of its own.
 SweepResult run_sweep(const PairSet& set, const std::vector<SweepSetting>& settings,
                       int threads = 1, const SweepProgressFn& progress = {},
-                      const std::atomic<bool>* cancel = nullptr,
-                      std::vector<PairCache>* caches = nullptr);
+                      const std::atomic<bool>* cancel = nullptr);
 
 /// Parses a list like "0.5,1,2" (comma-separated numbers); `what` names it in errors. Threshold
 /// sets are separated by ';' ("0.02,0.04;0.02,0.04,0.08"). Throws InputError.

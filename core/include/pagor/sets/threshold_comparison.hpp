@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "pagor/config.hpp"
+#include "pagor/sets/benchmark.hpp"
 #include "pagor/sets/pair_set.hpp"
 
 namespace pagor {
@@ -32,7 +33,7 @@ struct VariantResult {
   int with_truth = 0;    ///< pairs with ground truth that loaded
   int successes = 0;     ///< selected pose within the criterion
   double mean_ms = 0.0;  ///< mean time of the stages from the graph on [ms]
-  double success_rate() const { return with_truth ? double(successes) / with_truth : 0.0; }
+  std::optional<double> success_rate() const { return ratio(successes, with_truth); }
 };
 
 /// Runs every variant on every positive pair with ground truth (others are skipped).

@@ -1,0 +1,178 @@
+// The one runner over many pairs and the rates of a set: runs equal fresh ones, kept pipelines
+// re-run only what a change invalidates, and a rate of nothing is undefined.
+
+#include <catch2/catch.hpp>
+
+#include "pagor/errors.hpp"
+#include "pagor/sets/runner.hpp"
+#include "pagor/sets/sweep.hpp"
+
+using namespace pagor;
+
+namespace {
+
+// Three generated pairs (synthetic scenes with a known pose) and one whose files do not exist.
+PairSet synthetic_set() {
+  PairSet set;
+  set.origin = "generated";
+  for (std::uint64_t seed : {3, 7, 11}) {
+    PairEntry e;
+    e.name = "seed " + std::to_string(seed);
+    e.source.kind = PairSource::Kind::synthetic;
+    e.source.synthetic_seed = seed;
+    set.pairs.push_back(e);
+  }
+  PairEntry missing;
+  missing.name = "missing";
+  missing.source.kind = PairSource::Kind::files;
+  missing.source.source = missing.source.target = "/nonexistent/cloud.pcd";
+  set.pairs.push_back(missing);
+  return set;
+}
+
+Config synthetic_config() {
+  Config c = default_config();
+  c.refinement.enabled = false;
+  return c;
+}
+
+bool same_result(const PairOutcome& a, const PairOutcome& b) {
+  return a.selected_level == b.selected_level && a.success == b.success &&
+         a.accepted == b.accepted && a.level_success == b.level_success && a.score == b.score &&
+         a.diagnosis == b.diagnosis;
+}
+
+}  // namespace
+
+TEST_CASE(
+    "the runner gives what a fresh pipeline gives, and re-runs only what a change invalidates") {
+  const PairSet set = synthetic_set();
+  SetRunner runner(set);
+  Config c = synthetic_config();
+  const PairOutcome first = runner.run(0, c);
+  REQUIRE(first.loaded);
+  for (bool r : first.ran) CHECK(r);  // a pair loaded from its files runs every stage
+  c.verification.mu = 0.5;
+  const PairOutcome second = runner.run(0, c);
+  CHECK_FALSE(second.ran[static_cast<std::size_t>(Stage::landmarks)]);
+  CHECK_FALSE(second.ran[static_cast<std::size_t>(Stage::clique)]);
+  CHECK(second.ran[static_cast<std::size_t>(Stage::verification)]);
+  Pipeline fresh(c);
+  const PairOutcome want = run_pair(fresh, set.pairs[0]);
+  CHECK(same_result(second, want));
+
+  const PairOutcome missing = runner.run(3, c);
+  CHECK_FALSE(missing.loaded);
+  CHECK_THAT(missing.load_error, Catch::Contains("/nonexistent/cloud.pcd"));
+}
+
+TEST_CASE("the runner keeps pipelines within its budget, and always the last pair run") {
+  SetRunner runner(synthetic_set());
+  const Config c = synthetic_config();
+  runner.run(0, c);
+  runner.run(1, c);
+  CHECK_FALSE(runner.cached(0));  // budget 0: only the last one is kept
+  CHECK(runner.cached(1));
+  runner.set_cache_budget(std::size_t(1) << 32);
+  runner.run(0, c);
+  runner.run(2, c);
+  CHECK(runner.cached(0));
+  CHECK(runner.cached(1));
+  CHECK(runner.cached(2));
+  CHECK(runner.cached_count() == 3);
+  CHECK(runner.cache_bytes() > 0);
+  runner.clear_cache();
+  CHECK(runner.cached_count() == 0);
+}
+
+TEST_CASE("run_set: outcomes in set order, reused results, hooks in the order asked") {
+  SetRunner runner(synthetic_set());
+  RunSetHooks hooks;
+  hooks.order = {2, 1, 0, 3};
+  std::vector<std::size_t> seen;
+  hooks.reuse = [](std::size_t i) -> std::optional<PairOutcome> {
+    if (i != 1) return std::nullopt;
+    PairOutcome o;
+    o.name = "from an earlier run";
+    o.loaded = true;
+    o.timed = false;
+    return o;
+  };
+  hooks.done = [&](std::size_t i, const PairOutcome&) { seen.push_back(i); };
+  const std::vector<PairOutcome> out = run_set(runner, synthetic_config(), hooks);
+  CHECK(seen == hooks.order);
+  REQUIRE(out.size() == 4);
+  CHECK(out[0].name == "seed 3");
+  CHECK(out[1].name == "from an earlier run");
+  CHECK_FALSE(out[3].loaded);
+  std::atomic<bool> cancel{true};
+  hooks.cancel = &cancel;
+  CHECK_THROWS_AS(run_set(runner, synthetic_config(), hooks), Cancelled);
+}
+
+TEST_CASE("a sweep on the runner equals a benchmark run per setting") {
+  const PairSet set = synthetic_set();
+  SweepGrid grid;
+  grid.mus = {0.5, 1.0};
+  const auto settings = sweep_settings(synthetic_config(), grid);
+  SetRunner runner(set);
+  const SweepResult swept = run_sweep(runner, settings);
+  REQUIRE(swept.settings.size() == 2);
+  for (std::size_t k = 0; k < settings.size(); ++k) {
+    SetRunner fresh(set);
+    const std::vector<PairOutcome> want = run_set(fresh, settings[k].config);
+    for (std::size_t i = 0; i < want.size(); ++i) {
+      INFO("setting " << k << ", pair " << i);
+      CHECK(same_result(swept.settings[k].outcomes[i], want[i]));
+    }
+  }
+  // Each pair's landmarks ran once for both settings; the missing pair never loads.
+  CHECK(swept.stage_runs[static_cast<std::size_t>(Stage::landmarks)] == 3);
+}
+
+TEST_CASE("rates of nothing are undefined, and shown as n/a") {
+  const BenchmarkSummary none = summarize({});
+  CHECK_FALSE(none.success_rate());
+  CHECK_FALSE(none.upper_bound_rate());
+  CHECK_FALSE(none.precision());
+  CHECK_FALSE(none.recall());
+  CHECK(rate_text(none.precision()) == "n/a");
+  CHECK(rate_text(0.75) == "75.0 %");
+  CHECK(ratio(0, 0) == std::nullopt);
+  CHECK(ratio(3, 4) == 0.75);
+}
+
+TEST_CASE("the summary counts what the rows say: picks per level, unjudged accepts, verdicts") {
+  PairOutcome a, b, neg, unknown;
+  a.loaded = b.loaded = neg.loaded = unknown.loaded = true;
+  a.has_ground_truth = b.has_ground_truth = true;
+  a.selected_level = 1;
+  a.success = a.accepted = true;
+  a.level_success = {false, true, true};
+  a.level_epsilons = {0.02, 0.04, 0.08};
+  a.trim = TrimKind::ratio;
+  a.diagnosis = "success";
+  b.selected_level = 0;
+  b.level_success = {false, false, true};
+  b.diagnosis = "clique-missed";
+  neg.negative = true;
+  neg.accepted = true;
+  neg.selected_level = 2;
+  neg.level_success = {true, true, true};  // never counted: no ground truth for negatives
+  unknown.accepted = true;                 // no ground truth and not a known negative
+  const BenchmarkSummary s = summarize({a, b, neg, unknown});
+  REQUIRE(s.levels.size() == 3);
+  CHECK(s.levels[0].selected == 1);
+  CHECK(s.levels[1].selected == 1);
+  CHECK(s.levels[1].selected_and_succeeded == 1);
+  CHECK(s.levels[2].alone_succeeds == 2);
+  CHECK(s.levels[2].epsilon == 0.08);
+  CHECK(s.trim == TrimKind::ratio);
+  CHECK(s.accepted == 2);
+  CHECK(s.true_accepts == 1);
+  CHECK(s.false_accepts == 1);
+  CHECK(s.accepted_unjudged == 1);
+  CHECK(s.precision() == 0.5);
+  CHECK(s.diagnoses ==
+        std::vector<std::pair<std::string, int>>{{"success", 1}, {"clique-missed", 1}});
+}
