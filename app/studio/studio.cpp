@@ -1,7 +1,6 @@
 #include "studio.hpp"
 
 #include <imgui.h>
-#include <stb/stb_image_write.h>
 
 #include <algorithm>
 #include <cassert>
@@ -10,12 +9,12 @@
 #include <cstdio>
 #include <vector>
 
-#include "panels/benchmark_view.hpp"
-#include "pagor/io/atomic_file.hpp"
 #include "pagor/errors.hpp"
+#include "panels/benchmark_view.hpp"
 #include "panels/panels.hpp"
-#include "widgets/plot_export.hpp"
+#include "render/png.hpp"
 #include "render/resources.hpp"
+#include "widgets/plot_export.hpp"
 #include "widgets/widgets.hpp"
 
 namespace pagor::studio {
@@ -146,7 +145,8 @@ void Studio::write_plot_exports(int width, int height) {
   for (const PlotExport& e : exports) {
     const int w = std::min(width, kPlotPngWidth), h = std::min(height, kPlotPngHeight);
     try {
-      write_png_file(e.path, render_plot_rgba(gl_, imgui_renderer_, e.plot, w, h), w, h);
+      render_plot(gl_, imgui_renderer_, e.plot, w, h);
+      write_framebuffer_png(gl_, e.path, w, h);
       state_.message =
           "wrote " + e.path + " (" + std::to_string(w) + "x" + std::to_string(h) + " px)";
       state_.message_is_error = false;
@@ -461,30 +461,8 @@ void Studio::frame(int width, int height) {
 }
 
 bool Studio::screenshot(const std::string& path, int width, int height, std::string& error) const {
-  std::vector<unsigned char> pixels(static_cast<std::size_t>(width) * height * 4);
-  gl_.BindFramebuffer(GL_FRAMEBUFFER, 0);
-  gl_.PixelStorei(GL_PACK_ALIGNMENT, 1);
-  gl_.ReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
-  // GL rows go bottom-up; PNG rows top-down. Opaque alpha.
-  std::vector<unsigned char> flipped(pixels.size());
-  const std::size_t row = static_cast<std::size_t>(width) * 4;
-  for (int y = 0; y < height; ++y)
-    std::copy_n(pixels.data() + static_cast<std::size_t>(height - 1 - y) * row, row,
-                flipped.data() + y * row);
-  for (std::size_t i = 3; i < flipped.size(); i += 4) flipped[i] = 255;
-  // Encoded in memory, then written atomically: a failed write keeps the previous image.
-  std::string png;
-  const auto append = [](void* context, void* data, int size) {
-    static_cast<std::string*>(context)->append(static_cast<const char*>(data),
-                                               static_cast<std::size_t>(size));
-  };
-  if (!stbi_write_png_to_func(append, &png, width, height, 4, flipped.data(),
-                              static_cast<int>(row))) {
-    error = path + ": cannot encode PNG";
-    return false;
-  }
   try {
-    write_file_atomic(path, png);
+    write_framebuffer_png(gl_, path, width, height);
   } catch (const InputError& e) {
     error = e.what();
     return false;
