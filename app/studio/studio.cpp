@@ -13,14 +13,13 @@
 #include "panels/benchmark_view.hpp"
 #include "panels/panels.hpp"
 #include "render/png.hpp"
-#include "render/resources.hpp"
+#include "render/ui_font.hpp"
 #include "widgets/plot_export.hpp"
 #include "widgets/widgets.hpp"
 
 namespace pagor::studio {
 namespace {
 
-constexpr float kFontSize = 15.0f;                                          // [px]
 constexpr float kStatusHeight = 28.0f, kSplitter = 6.0f, kMinPane = 80.0f;  // [px]
 constexpr float kMaxLeftShare = 0.45f;  // of the window width: the view keeps the larger part
 constexpr ImGuiWindowFlags kPanelFlags =
@@ -36,9 +35,6 @@ namespace key {
 constexpr int F = 'F', R = 'R', T = 'T', S = 'S', O = 'O', Z = 'Z', Y = 'Y', H = 'H';
 constexpr int F1 = 290, Escape = 256, Left = 263, Right = 262;
 }  // namespace key
-
-// Latin-1 (degree sign), Greek (epsilon, mu, sigma) and arrows.
-const ImWchar kGlyphRanges[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2190, 0x21FF, 0};
 
 void place(float x, float y, float w, float h) {
   ImGui::SetNextWindowPos(ImVec2(x, y));
@@ -91,14 +87,7 @@ bool Studio::init(std::string& error) {
         {ImGuiKey_Y, 'Y'},          {ImGuiKey_Z, 'Z'}};
     for (const auto& [k, code] : keys) io.KeyMap[k] = code;
   }
-  const Resource font = resource("ui_font.ttf");
-  ImFontConfig cfg;
-  cfg.FontDataOwnedByAtlas = false;
-  if (!io.Fonts->AddFontFromMemoryTTF(const_cast<unsigned char*>(font.data),
-                                      static_cast<int>(font.size), kFontSize, &cfg, kGlyphRanges)) {
-    error = "cannot load the embedded UI font";
-    return false;
-  }
+  if (!load_ui_font(kUiFontSize, error)) return false;
   ImGui::StyleColorsDark();
   ImGuiStyle& style = ImGui::GetStyle();
   style.WindowRounding = 0.0f;

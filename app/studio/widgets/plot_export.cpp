@@ -3,36 +3,15 @@
 #include "pagor/errors.hpp"
 #include "render/headless.hpp"
 #include "render/png.hpp"
-#include "render/resources.hpp"
+#include "render/ui_font.hpp"
 
 namespace pagor::studio {
-namespace {
-
-constexpr float kPlotFontSize = 15.0f;  // [px], as the studio's UI
-// Latin-1 (degree sign), Greek (epsilon, mu, sigma) and arrows.
-const ImWchar kGlyphs[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2190, 0x21FF, 0};
-
-}  // namespace
-
-bool load_ui_font(float size, std::string& error) {
-  const Resource font = resource("ui_font.ttf");
-  ImFontConfig cfg;
-  cfg.FontDataOwnedByAtlas = false;
-  if (!ImGui::GetIO().Fonts->AddFontFromMemoryTTF(const_cast<unsigned char*>(font.data),
-                                                  static_cast<int>(font.size), size, &cfg,
-                                                  kGlyphs)) {
-    error = "cannot load the embedded UI font";
-    return false;
-  }
-  return true;
-}
-
 void render_plot(const Gl& gl, ImGuiRenderer& renderer, const Plot& plot, int width, int height) {
   ImDrawList list(ImGui::GetDrawListSharedData());
   list._ResetForNewFrame();
   list.PushTextureID(ImGui::GetIO().Fonts->TexID);
   list.PushClipRect(ImVec2(0, 0), ImVec2(float(width), float(height)));
-  draw_plot(&list, ImVec2(0, 0), ImVec2(float(width), float(height)), plot, kPlotFontSize);
+  draw_plot(&list, ImVec2(0, 0), ImVec2(float(width), float(height)), plot, kUiFontSize);
   ImDrawList* lists[] = {&list};
   ImDrawData data;
   data.Valid = true;
@@ -68,7 +47,7 @@ void export_plot_png(const Plot& plot, const std::string& path, int width, int h
   } restore{own, previous};
   ImGui::GetIO().IniFilename = nullptr;
   ImGui::GetIO().DisplaySize = ImVec2(float(width), float(height));
-  if (!load_ui_font(kPlotFontSize, error)) throw Error(error);
+  if (!load_ui_font(kUiFontSize, error)) throw Error(error);
   ImGuiRenderer renderer;
   if (!renderer.init(gl, error)) throw Error(error);
   ImGui::NewFrame();  // sets the frame's font, which the draw list uses

@@ -25,8 +25,4 @@ void render_plot(const Gl& gl, ImGuiRenderer& renderer, const Plot& plot, int wi
 void export_plot_png(const Plot& plot, const std::string& path, int width = kPlotPngWidth,
                      int height = kPlotPngHeight);
 
-/// Loads the studio's embedded UI font into the current ImGui context at `size` [px]. False
-/// with `error` on failure.
-bool load_ui_font(float size, std::string& error);
-
 }  // namespace pagor::studio
