@@ -6,12 +6,12 @@
 #include <cmath>
 #include <cstdio>
 
-#include "widgets/bench_plots.hpp"
-#include "pagor/io/atomic_file.hpp"
 #include "pagor/errors.hpp"
+#include "pagor/io/atomic_file.hpp"
 #include "panels/panels.hpp"
-#include "widgets/plot.hpp"
 #include "panels/plot_panel.hpp"
+#include "widgets/bench_plots.hpp"
+#include "widgets/plot.hpp"
 #include "widgets/widgets.hpp"
 
 namespace pagor::studio {
@@ -21,7 +21,12 @@ const char* const kColumns[] = {"pair",  "verdict",      "success",   "t err [m]
                                 "level", "D margin [%]", "time [ms]", "cached",    "diagnosis"};
 constexpr int kColumnCount = 10;
 constexpr int kDiagnosisColumn = 9;  // sorted by name, like the pair
-const char* const kShow[] = {"all pairs", "failures", "successes", "accepted", "rejected"};
+// The choices of the "show" combo, in RowFilter's order.
+const std::pair<RowFilter, const char*> kShow[] = {{RowFilter::all, "all pairs"},
+                                                   {RowFilter::failures, "failures"},
+                                                   {RowFilter::successes, "successes"},
+                                                   {RowFilter::accepted, "accepted"},
+                                                   {RowFilter::rejected, "rejected"}};
 constexpr float kTrajectoryHeight = 420.0f;  // [px]
 
 const char* truth_text(const PairOutcome& o) {
@@ -61,31 +66,32 @@ bool shown(const BenchRow& r, const BenchViewState& v) {
   const PairOutcome& o = r.outcome;
   if (!v.filter.empty() && o.name.find(v.filter) == std::string::npos) return false;
   switch (v.show) {
-    case 1:
+    case RowFilter::failures:
       return r.done && (!o.loaded || (!o.negative && !o.success) || (o.negative && o.accepted));
-    case 2:
+    case RowFilter::successes:
       return r.done && o.success;
-    case 3:
+    case RowFilter::accepted:
       return r.done && o.accepted;
-    case 4:
+    case RowFilter::rejected:
       return r.done && !o.accepted;
-    default:
-      return true;
+    case RowFilter::all:
+      break;
   }
+  return true;
 }
 
 void source_controls(UiContext& ui, BenchWorker& bench) {
   BenchViewState& v = ui.state.bench;
-  ui::radio("manifest", &v.source, BenchViewState::manifest,
+  ui::radio("manifest", &v.source, BenchSource::manifest,
             "a generic manifest: SOURCE TARGET [gt=...] per line (pagor bench --manifest)");
   ImGui::SameLine();
-  ui::radio("KITTI pairs file", &v.source, BenchViewState::kitti_pairs,
+  ui::radio("KITTI pairs file", &v.source, BenchSource::kitti_pairs,
             "frame numbers 'source target' per line, with a KITTI root");
   ImGui::SameLine();
-  ui::radio("bench results", &v.source, BenchViewState::results,
+  ui::radio("bench results", &v.source, BenchSource::results,
             "the JSON lines of pagor bench --out (shown as they are; nothing re-runs)");
   ui::input_text("file##bench_path", &v.path, "path of the manifest, pairs file or results file");
-  if (v.source == BenchViewState::kitti_pairs) {
+  if (v.source == BenchSource::kitti_pairs) {
     ui::input_text("KITTI root##bench", &v.kitti_root, "directory holding sequences/");
     ui::input_text("sequence##bench", &v.sequence, "KITTI sequence, e.g. 00");
   }
@@ -151,9 +157,10 @@ void table_controls(BenchViewState& v) {
   ui::input_text("filter##bench", &v.filter, "show the pairs whose name contains this");
   ImGui::SameLine();
   ImGui::SetNextItemWidth(130);
-  if (ui::begin_combo("show##bench", kShow[std::clamp(v.show, 0, 4)], "which rows to list")) {
-    for (int i = 0; i < 5; ++i)
-      if (ui::selectable((std::string(kShow[i]) + "##show").c_str(), v.show == i)) v.show = i;
+  if (ui::begin_combo("show##bench", kShow[static_cast<int>(v.show)].second,
+                      "which rows to list")) {
+    for (const auto& [filter, name] : kShow)
+      if (ui::selectable((std::string(name) + "##show").c_str(), v.show == filter)) v.show = filter;
     ui::end_combo();
   }
   ImGui::SameLine();
@@ -259,10 +266,10 @@ void open_benchmark(AppState& state, BenchWorker& bench) {
   BenchViewState& v = state.bench;
   const std::string path = resolve_path(state, v.path);
   if (v.path.empty()) throw InputError("benchmark: name a file to open");
-  if (v.source == BenchViewState::results) {
+  if (v.source == BenchSource::results) {
     bench.show_results(read_bench_results(path), path);
   } else {
-    PairSet set = v.source == BenchViewState::kitti_pairs
+    PairSet set = v.source == BenchSource::kitti_pairs
                       ? kitti_pair_set(resolve_path(state, v.kitti_root), v.sequence, path)
                       : read_pair_manifest(path);
     bench.set_budget(std::size_t(std::max(1, v.budget_mib)) << 20);

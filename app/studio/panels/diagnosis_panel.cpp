@@ -144,26 +144,25 @@ void view_controls(UiContext& ui, const Snapshot& s) {
       if (ui::selectable(c.name.c_str(), dv.class_name == c.name)) dv.class_name = c.name;
     ui::end_combo();
   }
-  int truth = static_cast<int>(dv.truth);
-  ui::radio("all##truth", &truth, 0, "Every correspondence");
+  ui::radio("all##truth", &dv.truth, TruthFilter::all, "Every correspondence");
   ImGui::SameLine();
-  ui::radio("true##truth", &truth, 1, "Only those within the tolerance of the truth");
+  ui::radio("true##truth", &dv.truth, TruthFilter::inliers,
+            "Only those within the tolerance of the truth");
   ImGui::SameLine();
-  ui::radio("false##truth", &truth, 2, "Only those beyond the tolerance of the truth");
-  dv.truth = static_cast<TruthFilter>(truth);
+  ui::radio("false##truth", &dv.truth, TruthFilter::outliers,
+            "Only those beyond the tolerance of the truth");
   ui::checkbox("graph edges on hover", &dv.edges_on_hover,
                "Hovering a correspondence line shows its edges in the shown level's graph");
   ImGui::TextUnformatted("source points: part of D");
-  int part = static_cast<int>(dv.contribution);
-  ui::radio("off##part", &part, 0, "Source points in their class (or cloud) colours");
+  ui::radio("off##part", &dv.contribution, Contribution::off,
+            "Source points in their class (or cloud) colours");
   ImGui::SameLine();
-  ui::radio("level##part", &part, 1,
+  ui::radio("level##part", &dv.contribution, Contribution::candidate,
             "min(d, \xce\xbc) of each verification point under the shown level's pose, drawn "
             "there");
   ImGui::SameLine();
-  ui::radio("truth##part", &part, 2,
+  ui::radio("truth##part", &dv.contribution, Contribution::ground_truth,
             "min(d, \xce\xbc) of each verification point under the ground truth, drawn there");
-  dv.contribution = static_cast<Contribution>(part);
 }
 
 }  // namespace

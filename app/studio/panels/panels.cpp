@@ -9,9 +9,9 @@
 #include <limits>
 #include <string>
 
-#include "widgets/number_format.hpp"
 #include "pagor/errors.hpp"
 #include "pagor/io/kitti.hpp"
+#include "widgets/number_format.hpp"
 #include "widgets/widgets.hpp"
 
 namespace pagor::studio {
@@ -130,16 +130,14 @@ void data_panel(UiContext& ui) {
   if (ui::button(s.bench.open ? "back to the benchmark" : "benchmark view...", ImVec2(-1, 0),
                  "Many pairs at once: a pairs file or manifest, rates, plots, sweeps."))
     s.main_view = MainView::benchmark;
-  int kind = static_cast<int>(d.kind);
-  ui::radio("KITTI", &kind, static_cast<int>(PairSource::Kind::kitti),
+  ui::radio("KITTI", &d.kind, PairSource::Kind::kitti,
             "A pair of scans of a KITTI odometry sequence, with ground truth.");
   ImGui::SameLine();
-  ui::radio("files", &kind, static_cast<int>(PairSource::Kind::files),
+  ui::radio("files", &d.kind, PairSource::Kind::files,
             "Two clouds from PCD, PLY or KITTI .bin files, with optional .label files.");
   ImGui::SameLine();
-  ui::radio("synthetic", &kind, static_cast<int>(PairSource::Kind::synthetic),
+  ui::radio("synthetic", &d.kind, PairSource::Kind::synthetic,
             "A labelled scene generated from a seed, seen by two sensors with a known pose.");
-  d.kind = static_cast<PairSource::Kind>(kind);
   if (d.kind == PairSource::Kind::kitti) {
     kitti_fields(ui);
   } else if (d.kind == PairSource::Kind::files) {
@@ -387,29 +385,23 @@ void view_panel(UiContext& ui) {
                    L::max_landmark_size, "%.0f", false, "Size of the landmark points.");
   ui::slider_float("line width [px]", &v.line_width, L::min_line_width, L::max_line_width, "%.1f",
                    false, "Width of the correspondence lines.");
-  int color = static_cast<int>(v.color);
   ImGui::TextUnformatted("colour:");
   ImGui::SameLine();
-  ui::radio("class", &color, static_cast<int>(ColorMode::by_class),
-            "Colour points by semantic class.");
+  ui::radio("class", &v.color, ColorMode::by_class, "Colour points by semantic class.");
   ImGui::SameLine();
-  ui::radio("source/target", &color, static_cast<int>(ColorMode::by_cloud),
+  ui::radio("source/target", &v.color, ColorMode::by_cloud,
             "Colour points by cloud: source blue, target orange.");
-  v.color = static_cast<ColorMode>(color);
-  int pose = static_cast<int>(v.pose);
   ImGui::TextUnformatted("source under:");
-  ui::radio("candidate", &pose, static_cast<int>(PoseShown::selected),
+  ui::radio("candidate", &v.pose, PoseShown::selected,
             "Place the source under the shown level's candidate pose.");
   ImGui::SameLine();
-  ui::radio("refined", &pose, static_cast<int>(PoseShown::refined),
+  ui::radio("refined", &v.pose, PoseShown::refined,
             "Place the source under the selected pose after refinement (the candidate itself "
             "where refinement is off or did not lower D). Toggle with 'candidate' to compare.");
-  ui::radio("ground truth", &pose, static_cast<int>(PoseShown::ground_truth),
+  ui::radio("ground truth", &v.pose, PoseShown::ground_truth,
             "Place the source under the ground-truth pose (when known).");
   ImGui::SameLine();
-  ui::radio("identity", &pose, static_cast<int>(PoseShown::identity),
-            "Leave the source where its sensor saw it.");
-  v.pose = static_cast<PoseShown>(pose);
+  ui::radio("identity", &v.pose, PoseShown::identity, "Leave the source where its sensor saw it.");
   Camera& cam = ui.state.camera;
   if (ui::button("fit", ImVec2(0, 0), "Frame everything shown (F)."))
     ui.state.camera_fitted = false;
