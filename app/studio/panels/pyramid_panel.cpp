@@ -107,18 +107,16 @@ void bar_chart(const Snapshot& s, int shown, const RunChanges& changes) {
 
 }  // namespace
 
-void pyramid_panel(UiContext& ui) {
-  const Snapshot* s = ui.snapshot;
+void pyramid_panel(const Snapshot* s, const RunChanges& changes, const std::string& stale_reason,
+                   ViewState& view) {
   if (!s) {
     ImGui::TextDisabled("no result yet: open data on the left");
     return;
   }
-  const RunChanges empty;
-  const RunChanges& changes = ui.runs ? ui.runs->changes() : empty;
-  if (!ui.stale_reason.empty()) {
+  if (!stale_reason.empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.75f, 0.25f, 1.0f));
     ImGui::PushTextWrapPos(0.0f);
-    ImGui::Text("STALE: results below are from an earlier run (%s)", ui.stale_reason.c_str());
+    ImGui::Text("STALE: results below are from an earlier run (%s)", stale_reason.c_str());
     ImGui::PopTextWrapPos();
     ImGui::PopStyleColor();
   } else if (changes.selected_changed()) {
@@ -135,7 +133,7 @@ void pyramid_panel(UiContext& ui) {
         level(changes.selected_before, changes.selected_eps_before, changes.trim_before).c_str(),
         level(changes.selected_after, changes.selected_eps_after, changes.trim_after).c_str());
   }
-  ImGui::PushStyleVar(ImGuiStyleVar_Alpha, ui.stale_reason.empty() ? 1.0f : 0.55f);
+  ImGui::PushStyleVar(ImGuiStyleVar_Alpha, stale_reason.empty() ? 1.0f : 0.55f);
   ImGui::Text("%s", s->description.c_str());
   std::size_t lm_s = 0, lm_t = 0;
   for (const auto& c : s->source_landmarks.classes)
@@ -144,7 +142,7 @@ void pyramid_panel(UiContext& ui) {
     lm_t += c.method == LandmarkMethod::cluster ? c.landmarks : 0;
   ImGui::TextDisabled("%zu / %zu cluster landmarks, %zu correspondences%s", lm_s, lm_t,
                       s->correspondences.size(), s->correspondences_capped ? " (capped)" : "");
-  const int shown = shown_level(ui.state.view, s->selected, static_cast<int>(s->levels.size()));
+  const int shown = shown_level(view, s->selected, static_cast<int>(s->levels.size()));
   const float chart_w = std::min(330.0f, ImGui::GetContentRegionAvail().x * 0.34f);
   ImGui::BeginChild("levels", ImVec2(ImGui::GetContentRegionAvail().x - chart_w - 8.0f, 0));
   const bool gt = s->ground_truth.has_value();
@@ -184,8 +182,7 @@ void pyramid_panel(UiContext& ui) {
       ImGui::TableNextColumn();
       char label[32];
       std::snprintf(label, sizeof(label), "%s%d", i == s->selected ? "* " : "  ", i);
-      if (ui::selectable(label, i == shown, ImGuiSelectableFlags_SpanAllColumns))
-        ui.state.view.level = i;
+      if (ui::selectable(label, i == shown, ImGuiSelectableFlags_SpanAllColumns)) view.level = i;
       ImGui::TableNextColumn();
       ImGui::Text("%.3f", l.epsilon);
       ImGui::TableNextColumn();

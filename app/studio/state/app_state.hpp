@@ -10,6 +10,7 @@
 #include "pagor/config.hpp"
 #include "pagor/io/dataset.hpp"
 #include "scene/camera.hpp"
+#include "state/message.hpp"
 
 namespace pagor::studio {
 
@@ -118,8 +119,7 @@ struct AppState {
 
   std::string session_path = "pagor-session.json";
   std::string screenshot_path = "pagor-studio.png";
-  std::string message;  ///< last message for the user
-  bool message_is_error = false;
+  Message message;  ///< the last message for the user (StudioActions::notify), in the status bar
   bool want_screenshot = false;
   bool show_help = false;          ///< the shortcut overlay (F1 or H)
   int width = 1280, height = 720;  ///< window or image size [px]
