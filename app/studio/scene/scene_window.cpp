@@ -70,6 +70,55 @@ void correspondence_tooltip(const Snapshot& s, int index, int level) {
                 trims[trims.size() / 2], trims.back());
 }
 
+// The cluster landmark nearest to `mouse` (pixels in `r`) within a few pixels, or -1; `source`
+// says on which side.
+int nearest_landmark(const Snapshot& s, const Transform& pose, const ViewRect& r,
+                     const Eigen::Vector2f& mouse, bool& source) {
+  float best = kLandmarkPickPx;
+  int best_index = -1;
+  for (int side = 0; side < 2; ++side) {
+    const LandmarkSet& set = side == 0 ? s.source_landmarks : s.target_landmarks;
+    for (std::size_t i = 0; i < set.landmarks.size(); ++i) {
+      if (set.landmarks[i].kind != LandmarkKind::cluster) continue;
+      const Eigen::Vector3f p = side == 0 ? transform_point(pose, set.landmarks[i].centroid)
+                                          : set.landmarks[i].centroid.cast<float>();
+      Eigen::Vector2f px;
+      if (!project_to_screen(r.view_projection, p, r.width, r.height, px)) continue;
+      const float d = (px - mouse).norm();
+      if (d < best) {
+        best = d;
+        best_index = static_cast<int>(i);
+        source = side == 0;
+      }
+    }
+  }
+  return best_index;
+}
+
+// The shown correspondence line nearest to `mouse` within a few pixels at `level`, or -1.
+int nearest_line(const Snapshot& s, const ViewState& view, const Transform& pose, const ViewRect& r,
+                 const Eigen::Vector2f& mouse, int level) {
+  const auto& clique = s.levels[static_cast<std::size_t>(level)].clique;
+  float best = kLinePickPx;
+  int best_index = -1;
+  for (std::size_t i = 0; i < s.correspondences.size(); ++i) {
+    const bool member = std::binary_search(clique.begin(), clique.end(), static_cast<int>(i));
+    if (!member && !view.layers.all_correspondences) continue;
+    if (!diagnosis_keeps(s, view.diagnosis, i)) continue;
+    Eigen::Vector2f a, b;
+    const Correspondence& c = s.correspondences[i];
+    if (!project_to_screen(r.view_projection, transform_point(pose, c.p), r.width, r.height, a) ||
+        !project_to_screen(r.view_projection, c.q.cast<float>(), r.width, r.height, b))
+      continue;
+    const float d = segment_distance(mouse, a, b);
+    if (d < best) {
+      best = d;
+      best_index = static_cast<int>(i);
+    }
+  }
+  return best_index;
+}
+
 }  // namespace
 
 void CameraControl::reset() const {
@@ -154,28 +203,11 @@ void scene_window(SceneView& scene, const Snapshot* s, const ViewState& view,
 
   // Hover: the nearest landmark within a few pixels, else the nearest correspondence line.
   const Eigen::Vector2f mouse(io.MousePos.x - origin.x, io.MousePos.y - origin.y);
-  const Eigen::Matrix4f vp = camera.projection(static_cast<float>(w) / h) * camera.view();
-  float best = kLandmarkPickPx;
-  int best_index = -1;
+  // The camera as moved by this frame's input.
+  const ViewRect now{origin, static_cast<float>(w), static_cast<float>(h),
+                     camera.projection(static_cast<float>(w) / h) * camera.view()};
   bool best_source = false;
-  if (view.layers.landmarks) {
-    for (int side = 0; side < 2; ++side) {
-      const LandmarkSet& set = side == 0 ? s->source_landmarks : s->target_landmarks;
-      for (std::size_t i = 0; i < set.landmarks.size(); ++i) {
-        if (set.landmarks[i].kind != LandmarkKind::cluster) continue;
-        const Eigen::Vector3f p = side == 0 ? transform_point(pose, set.landmarks[i].centroid)
-                                            : set.landmarks[i].centroid.cast<float>();
-        Eigen::Vector2f px;
-        if (!project_to_screen(vp, p, static_cast<float>(w), static_cast<float>(h), px)) continue;
-        const float d = (px - mouse).norm();
-        if (d < best) {
-          best = d;
-          best_index = static_cast<int>(i);
-          best_source = side == 0;
-        }
-      }
-    }
-  }
+  int best_index = view.layers.landmarks ? nearest_landmark(*s, pose, now, mouse, best_source) : -1;
   if (best_index >= 0) {
     ImGui::BeginTooltip();
     landmark_tooltip(best_source ? s->source_landmarks : s->target_landmarks, best_index,
@@ -185,24 +217,7 @@ void scene_window(SceneView& scene, const Snapshot* s, const ViewState& view,
   }
   const int level = shown_level(view, s->selected, static_cast<int>(s->levels.size()));
   if (!view.layers.correspondences || level < 0) return;
-  const auto& clique = s->levels[static_cast<std::size_t>(level)].clique;
-  best = kLinePickPx;
-  for (std::size_t i = 0; i < s->correspondences.size(); ++i) {
-    const bool member = std::binary_search(clique.begin(), clique.end(), static_cast<int>(i));
-    if (!member && !view.layers.all_correspondences) continue;
-    if (!diagnosis_keeps(*s, view.diagnosis, i)) continue;
-    Eigen::Vector2f a, b;
-    const Correspondence& c = s->correspondences[i];
-    if (!project_to_screen(vp, transform_point(pose, c.p), static_cast<float>(w),
-                           static_cast<float>(h), a) ||
-        !project_to_screen(vp, c.q.cast<float>(), static_cast<float>(w), static_cast<float>(h), b))
-      continue;
-    const float d = segment_distance(mouse, a, b);
-    if (d < best) {
-      best = d;
-      best_index = static_cast<int>(i);
-    }
-  }
+  best_index = nearest_line(*s, view, pose, now, mouse, level);
   if (best_index >= 0) {
     int true_neighbours = -1, edges = -1;
     if (view.diagnosis.edges_on_hover) {
