@@ -1,7 +1,6 @@
 #include "studio.hpp"
 
 #include <imgui.h>
-#include <stb/stb_image_write.h>
 
 #include <algorithm>
 #include <cassert>
@@ -10,18 +9,17 @@
 #include <cstdio>
 #include <vector>
 
-#include "panels/benchmark_view.hpp"
-#include "pagor/io/atomic_file.hpp"
 #include "pagor/errors.hpp"
+#include "panels/benchmark_view.hpp"
 #include "panels/panels.hpp"
+#include "render/png.hpp"
+#include "render/ui_font.hpp"
 #include "widgets/plot_export.hpp"
-#include "render/resources.hpp"
 #include "widgets/widgets.hpp"
 
 namespace pagor::studio {
 namespace {
 
-constexpr float kFontSize = 15.0f;                                          // [px]
 constexpr float kStatusHeight = 28.0f, kSplitter = 6.0f, kMinPane = 80.0f;  // [px]
 constexpr float kMaxLeftShare = 0.45f;  // of the window width: the view keeps the larger part
 constexpr ImGuiWindowFlags kPanelFlags =
@@ -31,38 +29,12 @@ constexpr ImGuiWindowFlags kBarFlags = kPanelFlags | ImGuiWindowFlags_NoTitleBar
                                        ImGuiWindowFlags_NoScrollbar |
                                        ImGuiWindowFlags_NoScrollWithMouse;
 
-// Key codes as GLFW numbers them (the window backend fills ImGui's KeysDown with these; the
-// headless driver and tests use the same codes).
-namespace key {
-constexpr int F = 'F', R = 'R', T = 'T', S = 'S', O = 'O', Z = 'Z', Y = 'Y', H = 'H';
-constexpr int F1 = 290, Escape = 256, Left = 263, Right = 262;
-}  // namespace key
-
-// Latin-1 (degree sign), Greek (epsilon, mu, sigma) and arrows.
-const ImWchar kGlyphRanges[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2190, 0x21FF, 0};
-
 void place(float x, float y, float w, float h) {
   ImGui::SetNextWindowPos(ImVec2(x, y));
   ImGui::SetNextWindowSize(ImVec2(std::max(w, 1.0f), std::max(h, 1.0f)));
 }
 
 }  // namespace
-
-const std::vector<Shortcut>& shortcuts() {
-  static const std::vector<Shortcut> list = {
-      {"F", "fit the view to everything shown"},
-      {"R", "reset the camera"},
-      {"T", "toggle top-down (orthographic) view"},
-      {"+ / -", "larger / smaller points"},
-      {"Left / Right", "previous / next pair of the pairs file"},
-      {"S", "save a screenshot (PNG path in the Session panel)"},
-      {"Ctrl+S / Ctrl+O", "save / load the session"},
-      {"Ctrl+Z / Ctrl+Y", "undo / redo a parameter change"},
-      {"F1 or H", "show or hide this help"},
-      {"mouse", "left drag orbits, right drag pans, wheel zooms"},
-  };
-  return list;
-}
 
 Studio::Studio(const Gl& gl, AppState state) : gl_(gl), state_(std::move(state)) {
   params_.reset(state_.config);
@@ -92,14 +64,7 @@ bool Studio::init(std::string& error) {
         {ImGuiKey_Y, 'Y'},          {ImGuiKey_Z, 'Z'}};
     for (const auto& [k, code] : keys) io.KeyMap[k] = code;
   }
-  const Resource font = resource("ui_font.ttf");
-  ImFontConfig cfg;
-  cfg.FontDataOwnedByAtlas = false;
-  if (!io.Fonts->AddFontFromMemoryTTF(const_cast<unsigned char*>(font.data),
-                                      static_cast<int>(font.size), kFontSize, &cfg, kGlyphRanges)) {
-    error = "cannot load the embedded UI font";
-    return false;
-  }
+  if (!load_ui_font(kUiFontSize, error)) return false;
   ImGui::StyleColorsDark();
   ImGuiStyle& style = ImGui::GetStyle();
   style.WindowRounding = 0.0f;
@@ -135,8 +100,7 @@ void Studio::open_benchmark_now() {
     open_benchmark(state_, bench_);
   } catch (const Error& e) {
     state_.bench.open = false;
-    state_.message = e.what();
-    state_.message_is_error = true;
+    notify(Message::error(e.what()));
   }
 }
 
@@ -146,13 +110,12 @@ void Studio::write_plot_exports(int width, int height) {
   for (const PlotExport& e : exports) {
     const int w = std::min(width, kPlotPngWidth), h = std::min(height, kPlotPngHeight);
     try {
-      write_png_file(e.path, render_plot_rgba(gl_, imgui_renderer_, e.plot, w, h), w, h);
-      state_.message =
-          "wrote " + e.path + " (" + std::to_string(w) + "x" + std::to_string(h) + " px)";
-      state_.message_is_error = false;
+      render_plot(gl_, imgui_renderer_, e.plot, w, h);
+      write_framebuffer_png(gl_, e.path, w, h);
+      notify(Message::info("wrote " + e.path + " (" + std::to_string(w) + "x" + std::to_string(h) +
+                           " px)"));
     } catch (const Error& ex) {
-      state_.message = ex.what();
-      state_.message_is_error = true;
+      notify(Message::error(ex.what()));
     }
   }
 }
@@ -160,8 +123,7 @@ void Studio::write_plot_exports(int width, int height) {
 void Studio::undo() {
   if (auto c = params_.undo()) {
     state_.config = std::move(*c);
-    state_.message = "undo (" + std::to_string(params_.undo_steps()) + " more)";
-    state_.message_is_error = false;
+    notify(Message::info("undo (" + std::to_string(params_.undo_steps()) + " more)"));
     submit_config();
   }
 }
@@ -169,8 +131,7 @@ void Studio::undo() {
 void Studio::redo() {
   if (auto c = params_.redo()) {
     state_.config = std::move(*c);
-    state_.message = "redo (" + std::to_string(params_.redo_steps()) + " more)";
-    state_.message_is_error = false;
+    notify(Message::info("redo (" + std::to_string(params_.redo_steps()) + " more)"));
     submit_config();
   }
 }
@@ -178,93 +139,34 @@ void Studio::redo() {
 void Studio::save_session_now() {
   try {
     save_session(state_, state_.session_path);
-    state_.message = "saved " + state_.session_path;
-    state_.message_is_error = false;
+    notify(Message::info("saved " + state_.session_path));
   } catch (const Error& e) {
-    state_.message = e.what();
-    state_.message_is_error = true;
+    notify(Message::error(e.what()));
   }
 }
 
 void Studio::load_session_now() {
   try {
     load_session(state_.session_path, state_);
-    state_.message = "loaded " + state_.session_path;
-    state_.message_is_error = false;
+    notify(Message::info("loaded " + state_.session_path));
     params_.reset(state_.config);
     if (state_.have_data) submit_data();
     if (state_.bench.open) open_benchmark_now();
   } catch (const Error& e) {
-    state_.message = e.what();
-    state_.message_is_error = true;
+    notify(Message::error(e.what()));
   }
 }
 
-void Studio::queue_key(int key, bool ctrl, bool shift) {
-  keys_.push_back({key, ctrl, shift});
+void Studio::save_screenshot() {
+  state_.want_screenshot = true;
 }
 
-void Studio::handle_shortcuts(UiContext& ui) {
-  const ImGuiIO& io = ImGui::GetIO();
-  std::vector<KeyPress> keys;
-  keys.swap(keys_);
-  if (io.WantTextInput) return;  // keys go to the field being edited
-  ViewState& v = state_.view;
-  for (const KeyPress& k : keys) {
-    if (k.ctrl) {
-      if (k.key == key::Z && k.shift)
-        redo();
-      else if (k.key == key::Z)
-        undo();
-      else if (k.key == key::Y)
-        redo();
-      else if (k.key == key::S)
-        save_session_now();
-      else if (k.key == key::O)
-        load_session_now();
-      continue;
-    }
-    switch (k.key) {
-      case key::F:
-        state_.camera_fitted = false;
-        break;
-      case key::R: {
-        const bool top_down = state_.camera.top_down;
-        state_.camera = Camera{};
-        state_.camera.top_down = top_down;
-        state_.camera_fitted = false;
-        break;
-      }
-      case key::T:
-        state_.camera.top_down = !state_.camera.top_down;
-        state_.camera_fitted = false;
-        break;
-      case key::S:
-        state_.want_screenshot = true;
-        break;
-      case key::Left:
-        step_pair(ui, state_.pair_index < 0 ? 0 : -1);
-        break;
-      case key::Right:
-        step_pair(ui, 1);
-        break;
-      case key::F1:
-      case key::H:
-        state_.show_help = !state_.show_help;
-        break;
-      case key::Escape:
-        state_.show_help = false;
-        break;
-      default:
-        break;
-    }
-  }
-  // + and - as characters: the same on every keyboard layout and on the keypad.
-  for (ImWchar c : io.InputQueueCharacters) {
-    if (c == '+' || c == '=') v.point_size += 0.5f;
-    if (c == '-') v.point_size -= 0.5f;
-  }
-  v.point_size = std::clamp(v.point_size, ViewLimits::min_point_size, ViewLimits::max_point_size);
+void Studio::export_plot(const Plot& plot, const std::string& path) {
+  plot_exports_.push_back({plot, path});
+}
+
+void Studio::notify(Message message) {
+  state_.message = std::move(message);
 }
 
 void Studio::update_staleness(const WorkerStatus& status) {
@@ -285,10 +187,7 @@ void Studio::update_staleness(const WorkerStatus& status) {
     stale_reason_ = "the parameters changed since this run";
 }
 
-void Studio::layout_windows(UiContext& ui, float W, float H) {
-  LayoutState& layout = state_.layout;
-  const float left = std::clamp(layout.left_width, ViewLimits::min_left_width,
-                                std::max(ViewLimits::min_left_width, kMaxLeftShare * W));
+void Studio::left_panel(float left, float H) {
   place(0, 0, left, H);
   if (ImGui::Begin("Pagor Studio", nullptr, kPanelFlags)) {
     ImGui::PushItemWidth(-std::min(130.0f, left * 0.42f));  // room for the labels
@@ -298,14 +197,72 @@ void Studio::layout_windows(UiContext& ui, float W, float H) {
       if (ui::header(label, open)) draw();
       ImGui::PopID();
     };
-    section("Data", true, [&] { data_panel(ui); });
-    section("Parameters", true, [&] { parameters_panel(ui); });
-    section("View", true, [&] { view_panel(ui); });
-    section("History", false, [&] { history_panel(ui); });
-    section("Session", false, [&] { session_panel(ui); });
+    AppState& s = state_;
+    section("Data", true, [&] { data_panel(s, *this); });
+    section("Parameters", true, [&] { parameters_panel(s.config, params_, config_error_, *this); });
+    section("View", true, [&] {
+      view_panel(s.view, camera_control(), s.show_help, snapshot_ && snapshot_->plan);
+    });
+    section("History", false, [&] { history_panel(params_, runs_, *this); });
+    section("Session", false, [&] {
+      session_panel(SessionFiles{s.session_path, s.screenshot_path}, *this);
+    });
     ImGui::PopItemWidth();
   }
   ImGui::End();
+}
+
+std::string Studio::scene_title() const {
+  const int level = snapshot_ ? shown_level(state_.view, snapshot_->selected,
+                                            static_cast<int>(snapshot_->levels.size()))
+                              : -1;
+  std::string title = "3D view";
+  if (snapshot_)
+    title +=
+        " | " + snapshot_->description + (level >= 0 ? " | level " + std::to_string(level) : "");
+  return title + "###scene";
+}
+
+void Studio::pair_view(float x, float w, float H) {
+  LayoutState& layout = state_.layout;
+  const float scene_h = std::floor(std::clamp(H * layout.scene_share, std::min(kMinPane, H * 0.5f),
+                                              std::max(H * 0.5f, H - kMinPane - kSplitter)));
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 0.0f);
+  place(x, scene_h, w, kSplitter);
+  if (ImGui::Begin("##hsplit", nullptr, kBarFlags)) {
+    const ImVec2 d = ui::splitter("##scene_splitter", ImVec2(w, kSplitter), false);
+    if (d.y != 0)
+      layout.scene_share =
+          std::clamp((scene_h + d.y) / H, ViewLimits::min_scene_share, ViewLimits::max_scene_share);
+  }
+  ImGui::End();
+
+  place(x, 0, w, scene_h);
+  if (ImGui::Begin(scene_title().c_str(), nullptr,
+                   kPanelFlags | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse))
+    scene_window(scene_, snapshot_.get(), state_.view, camera_control());
+  ImGui::End();
+  ImGui::PopStyleVar(2);
+
+  place(x, scene_h + kSplitter, w, H - scene_h - kSplitter);
+  ViewState& view = state_.view;
+  const bool diagnosis = view.diagnosis.panel;
+  if (ImGui::Begin(diagnosis ? "Diagnosis" : "Pyramid", nullptr, kPanelFlags)) {
+    bottom_panel_switch(view.diagnosis);
+    if (diagnosis)
+      diagnosis_panel(snapshot_.get(), stale_reason_, view);
+    else
+      pyramid_panel(snapshot_.get(), runs_.changes(), stale_reason_, view);
+  }
+  ImGui::End();
+}
+
+void Studio::layout_windows(const WorkerStatus& status, float W, float H) {
+  LayoutState& layout = state_.layout;
+  const float left = std::clamp(layout.left_width, ViewLimits::min_left_width,
+                                std::max(ViewLimits::min_left_width, kMaxLeftShare * W));
+  left_panel(left, H);
 
   ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
   ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 0.0f);
@@ -321,75 +278,35 @@ void Studio::layout_windows(UiContext& ui, float W, float H) {
                               std::max(ViewLimits::min_left_width, kMaxLeftShare * W)));
   }
   ImGui::End();
-  const float x = left + kSplitter, w = std::max(1.0f, W - x);
-  const float scene_h = std::floor(std::clamp(H * layout.scene_share, std::min(kMinPane, H * 0.5f),
-                                              std::max(H * 0.5f, H - kMinPane - kSplitter)));
-  if (state_.main_view == MainView::benchmark) {
-    ImGui::PopStyleVar(2);
-    place(x, 0, w, H);
-    if (ImGui::Begin("Benchmark", nullptr, kPanelFlags)) benchmark_view(ui);
-    ImGui::End();
-    place(0, H, W, kStatusHeight);
-    if (ImGui::Begin("##status", nullptr, kBarFlags)) status_bar(ui);
-    ImGui::End();
-    return;
-  }
-  place(x, scene_h, w, kSplitter);
-  if (ImGui::Begin("##hsplit", nullptr, kBarFlags)) {
-    const ImVec2 d = ui::splitter("##scene_splitter", ImVec2(w, kSplitter), false);
-    if (d.y != 0)
-      layout.scene_share =
-          std::clamp((scene_h + d.y) / H, ViewLimits::min_scene_share, ViewLimits::max_scene_share);
-  }
-  ImGui::End();
-
-  place(x, 0, w, scene_h);
-  const int level = snapshot_ ? shown_level(state_.view, snapshot_->selected,
-                                            static_cast<int>(snapshot_->levels.size()))
-                              : -1;
-  std::string title = "3D view";
-  if (snapshot_)
-    title +=
-        " | " + snapshot_->description + (level >= 0 ? " | level " + std::to_string(level) : "");
-  title += "###scene";
-  if (ImGui::Begin(title.c_str(), nullptr,
-                   kPanelFlags | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse))
-    scene_window(ui);
-  ImGui::End();
   ImGui::PopStyleVar(2);
-
-  place(x, scene_h + kSplitter, w, H - scene_h - kSplitter);
-  const bool diagnosis = state_.view.diagnosis.panel;
-  if (ImGui::Begin(diagnosis ? "Diagnosis" : "Pyramid", nullptr, kPanelFlags)) {
-    bottom_panel_switch(ui);
-    diagnosis ? diagnosis_panel(ui) : pyramid_panel(ui);
+  const float x = left + kSplitter, w = std::max(1.0f, W - x);
+  if (state_.main_view == MainView::benchmark) {
+    place(x, 0, w, H);
+    if (ImGui::Begin("Benchmark", nullptr, kPanelFlags)) benchmark_view(state_, bench_, *this);
+    ImGui::End();
+  } else {
+    pair_view(x, w, H);
   }
-  ImGui::End();
-
   place(0, H, W, kStatusHeight);
-  if (ImGui::Begin("##status", nullptr, kBarFlags)) status_bar(ui);
+  if (ImGui::Begin("##status", nullptr, kBarFlags))
+    status_bar(status, snapshot_.get(), state_.message, frame_ms_);
   ImGui::End();
 }
 
-void Studio::help_overlay(float W, float H) {
-  ImGui::SetNextWindowPos(ImVec2(W * 0.5f, H * 0.5f), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
-  ImGui::SetNextWindowBgAlpha(0.94f);
-  if (ImGui::Begin("Shortcuts (F1 or H to close)", nullptr,
-                   ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
-                       ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoMove)) {
-    if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) {
-      for (const Shortcut& s : shortcuts()) {
-        ImGui::TableNextRow();
-        ImGui::TableNextColumn();
-        ImGui::TextColored(ImVec4(1.0f, 0.85f, 0.4f, 1.0f), "%s", s.keys);
-        ImGui::TableNextColumn();
-        ImGui::TextUnformatted(s.action);
-      }
-      ImGui::EndTable();
-    }
-    if (ui::button("close##help", ImVec2(-1, 0))) state_.show_help = false;
+void Studio::report_duplicate_ids() {
+  for (const auto& d : ui::registry().duplicates()) {
+    // Reported once per ID; in a debug build a duplicate is a programming error.
+    static std::vector<ImGuiID> reported;
+    if (std::find(reported.begin(), reported.end(), d.id) != reported.end()) continue;
+    reported.push_back(d.id);
+    std::fprintf(stderr, "pagor-studio: %s\n", d.describe().c_str());
+    notify(Message::error(d.describe()));
+    assert(!"duplicate ImGui ID");
   }
-  ImGui::End();
+}
+
+CameraControl Studio::camera_control() {
+  return {state_.camera, state_.camera_fitted};
 }
 
 void Studio::frame(int width, int height) {
@@ -405,43 +322,15 @@ void Studio::frame(int width, int height) {
   ImGuiIO& io = ImGui::GetIO();
   io.DisplaySize = ImVec2(static_cast<float>(width), static_cast<float>(height));
   ImGui::NewFrame();
-  UiContext ui{state_,
-               snapshot_.get(),
-               status,
-               [this] { submit_data(); },
-               [this] { submit_config(); },
-               scene_,
-               frame_ms_,
-               config_error_,
-               stale_reason_,
-               &runs_,
-               &params_,
-               [this] { undo(); },
-               [this] { redo(); },
-               [this] { save_session_now(); },
-               [this] { load_session_now(); },
-               &bench_,
-               [this](const Plot& plot, const std::string& path) {
-                 plot_exports_.push_back({plot, path});
-               }};
-  handle_shortcuts(ui);
+  handle_shortcuts();
   const float W = static_cast<float>(width), H = static_cast<float>(height) - kStatusHeight;
-  layout_windows(ui, W, H);
+  layout_windows(status, W, H);
   if (state_.show_help) help_overlay(W, H);
   // One undo step per finished edit (a slider drag is one step), valid configurations only.
   if (!ImGui::IsAnyItemActive() && config_error_.empty()) params_.commit(state_.config);
 
   ImGui::Render();
-  for (const auto& d : ui::registry().duplicates()) {
-    // Reported once per ID; in a debug build a duplicate is a programming error.
-    static std::vector<ImGuiID> reported;
-    if (std::find(reported.begin(), reported.end(), d.id) != reported.end()) continue;
-    reported.push_back(d.id);
-    std::fprintf(stderr, "pagor-studio: %s\n", d.describe().c_str());
-    state_.message = d.describe();
-    state_.message_is_error = true;
-    assert(!"duplicate ImGui ID");
-  }
+  report_duplicate_ids();
   write_plot_exports(width, height);  // drawn over by this frame before it is shown
   gl_.BindFramebuffer(GL_FRAMEBUFFER, 0);
   gl_.Viewport(0, 0, width, height);
@@ -452,39 +341,17 @@ void Studio::frame(int width, int height) {
   if (state_.want_screenshot) {
     state_.want_screenshot = false;
     std::string error;
-    const bool ok = screenshot(state_.screenshot_path, width, height, error);
-    state_.message = ok ? "wrote " + state_.screenshot_path : error;
-    state_.message_is_error = !ok;
+    notify(screenshot(state_.screenshot_path, width, height, error)
+               ? Message::info("wrote " + state_.screenshot_path)
+               : Message::error(error));
   }
   frame_ms_ =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
 
 bool Studio::screenshot(const std::string& path, int width, int height, std::string& error) const {
-  std::vector<unsigned char> pixels(static_cast<std::size_t>(width) * height * 4);
-  gl_.BindFramebuffer(GL_FRAMEBUFFER, 0);
-  gl_.PixelStorei(GL_PACK_ALIGNMENT, 1);
-  gl_.ReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
-  // GL rows go bottom-up; PNG rows top-down. Opaque alpha.
-  std::vector<unsigned char> flipped(pixels.size());
-  const std::size_t row = static_cast<std::size_t>(width) * 4;
-  for (int y = 0; y < height; ++y)
-    std::copy_n(pixels.data() + static_cast<std::size_t>(height - 1 - y) * row, row,
-                flipped.data() + y * row);
-  for (std::size_t i = 3; i < flipped.size(); i += 4) flipped[i] = 255;
-  // Encoded in memory, then written atomically: a failed write keeps the previous image.
-  std::string png;
-  const auto append = [](void* context, void* data, int size) {
-    static_cast<std::string*>(context)->append(static_cast<const char*>(data),
-                                               static_cast<std::size_t>(size));
-  };
-  if (!stbi_write_png_to_func(append, &png, width, height, 4, flipped.data(),
-                              static_cast<int>(row))) {
-    error = path + ": cannot encode PNG";
-    return false;
-  }
   try {
-    write_file_atomic(path, png);
+    write_framebuffer_png(gl_, path, width, height);
   } catch (const InputError& e) {
     error = e.what();
     return false;

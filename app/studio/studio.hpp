@@ -6,15 +6,18 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
-#include "state/app_state.hpp"
-#include "runners/bench_worker.hpp"
+#include "panels/studio_actions.hpp"
 #include "render/gl.hpp"
-#include "state/history.hpp"
 #include "render/imgui_renderer.hpp"
-#include "widgets/plot.hpp"
-#include "scene/scene_view.hpp"
+#include "runners/bench_worker.hpp"
 #include "runners/worker.hpp"
+#include "scene/scene_view.hpp"
+#include "scene/scene_window.hpp"
+#include "state/app_state.hpp"
+#include "state/history.hpp"
+#include "widgets/plot.hpp"
 
 namespace pagor::studio {
 
@@ -26,24 +29,35 @@ struct Shortcut {
 /// Every shortcut of the studio.
 const std::vector<Shortcut>& shortcuts();
 
-class Studio {
+/// The studio: owns the state, the workers and the renderers, lays out the panels each frame and
+/// carries out what they ask (StudioActions).
+class Studio : public StudioActions {
  public:
   /// Needs a current GL context and an ImGui context.
   Studio(const Gl& gl, AppState state);
-  ~Studio();
+  ~Studio() override;
   /// Loads the font, builds renderers, maps ImGui's named keys when no backend did. False with
   /// `error` on failure.
   bool init(std::string& error);
 
   /// Sends the current data and configuration to the worker.
-  void submit_data();
+  void submit_data() override;
   /// Re-runs with the current configuration; does nothing while it is invalid (the UI says why).
-  void submit_config();
-  void undo();
-  void redo();
-  /// Saves or loads `state().session_path`; the outcome goes to the status bar.
-  void save_session_now();
-  void load_session_now();
+  void submit_config() override;
+  /// One step back in the parameter history and a re-run; the status bar says how many remain.
+  void undo() override;
+  /// One step forward in the parameter history and a re-run.
+  void redo() override;
+  /// Saves the state to `state().session_path`; the outcome goes to the status bar.
+  void save_session_now() override;
+  /// Loads `state().session_path` and opens its data; the outcome goes to the status bar.
+  void load_session_now() override;
+  /// Writes the window to `state().screenshot_path` at the end of this frame.
+  void save_screenshot() override;
+  /// Queues a plot for PNG export; rendered and written at the next frame.
+  void export_plot(const Plot& plot, const std::string& path) override;
+  /// Keeps the message in `state().message`, which the status bar shows.
+  void notify(Message message) override;
 
   /// A key press (GLFW key code) for the shortcuts, queued until the next frame so that a press
   /// and release between two frames still counts (ImGui 1.86 only sees keys held at a frame).
@@ -70,11 +84,16 @@ class Studio {
   const std::string& stale_reason() const { return stale_reason_; }
 
  private:
-  void handle_shortcuts(struct UiContext& ui);
-  void layout_windows(struct UiContext& ui, float width, float height);
+  void handle_shortcuts();
+  void layout_windows(const WorkerStatus& status, float width, float height);
+  void left_panel(float left, float height);
+  void pair_view(float x, float width, float height);
+  std::string scene_title() const;
   void help_overlay(float width, float height);
   void update_staleness(const WorkerStatus& status);
   void write_plot_exports(int width, int height);
+  void report_duplicate_ids();
+  CameraControl camera_control();
 
   const Gl& gl_;
   AppState state_;

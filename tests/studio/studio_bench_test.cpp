@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 #include <chrono>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <thread>
 
 #include "pagor/errors.hpp"
@@ -169,7 +170,7 @@ TEST_CASE("benchmark view: state saved and restored with the session") {
   studio::AppState s = synthetic_state(tmp);
   s.main_view = studio::MainView::benchmark;
   s.bench.open = true;
-  s.bench.source = studio::BenchViewState::kitti_pairs;
+  s.bench.source = studio::BenchSource::kitti_pairs;
   s.bench.path = "pairs.txt";
   s.bench.filter = "0";
   s.bench.sort = 3;
@@ -181,13 +182,21 @@ TEST_CASE("benchmark view: state saved and restored with the session") {
   studio::load_session(tmp.file("s.json"), r);
   CHECK(r.main_view == studio::MainView::benchmark);
   CHECK(r.bench.open);
-  CHECK(r.bench.source == studio::BenchViewState::kitti_pairs);
+  CHECK(r.bench.source == studio::BenchSource::kitti_pairs);
   CHECK(r.bench.path == "pairs.txt");
   CHECK(r.bench.filter == "0");
   CHECK(r.bench.sort == 3);
   CHECK(r.bench.descending);
   CHECK(r.bench.budget_mib == 300);
   CHECK(r.bench.sweep_mu == "0.5,1");
+  // The row filter is stored as the number it always was (0 all ... 4 rejected).
+  s.bench.show = studio::RowFilter::accepted;
+  studio::save_session(s, tmp.file("s.json"));
+  CHECK(nlohmann::json::parse(std::ifstream(tmp.file("s.json")))["benchmark"]["show"] == 3);
+  std::ofstream(tmp.file("rejected.json"))
+      << R"({"schema": "pagor.session/1", "benchmark": {"show": 4}})";
+  studio::load_session(tmp.file("rejected.json"), r);
+  CHECK(r.bench.show == studio::RowFilter::rejected);
   std::ofstream(tmp.file("bad.json"))
       << R"({"schema": "pagor.session/1", "benchmark": {"show": 9}})";
   CHECK_THROWS_WITH(studio::load_session(tmp.file("bad.json"), r),
@@ -227,7 +236,7 @@ TEST_CASE("every widget of the benchmark view, driven") {
         if (d.state().main_view == studio::MainView::benchmark && d.studio().bench().can_rerun())
           return;
         d.state().bench.path = small_manifest(tmp);
-        d.state().bench.source = studio::BenchViewState::manifest;
+        d.state().bench.source = studio::BenchSource::manifest;
         if (!d.studio().bench().can_rerun()) d.studio().open_benchmark_now();
         d.state().main_view = studio::MainView::benchmark;
         d.frames(2);
@@ -235,7 +244,7 @@ TEST_CASE("every widget of the benchmark view, driven") {
       200, "Benchmark");
   settle_bench();
   // The sweep the walk started: its table applies a setting to the session.
-  d.state().bench.show = 0;
+  d.state().bench.show = studio::RowFilter::all;
   d.state().bench.filter.clear();
   for (int i = 0; i < 4800 && d.studio().bench().status().sweeping; ++i) d.frame();
   d.frames(3);
@@ -244,7 +253,7 @@ TEST_CASE("every widget of the benchmark view, driven") {
   REQUIRE(d.click_widget("apply##sweep0"));
   d.frames(2);
   CHECK(d.state().config.verification.mu == sweep->settings[0].setting.config.verification.mu);
-  d.state().bench.source = studio::BenchViewState::kitti_pairs;
+  d.state().bench.source = studio::BenchSource::kitti_pairs;
   d.frames(2);
   CHECK(d.find("KITTI root##bench", "Benchmark"));
   std::set<std::string> benchmark_widgets;

@@ -212,11 +212,20 @@ TEST_CASE("shortcuts") {
 
   d.press_key('S');
   CHECK(std::filesystem::file_size(s.screenshot_path) > 1000);
+  CHECK(s.message.level == studio::MessageLevel::info);
+  CHECK(s.message.text == "wrote " + s.screenshot_path);
 
-  // Ctrl+S saves, a change, Ctrl+O loads it back.
+  // Ctrl+S saves, a change, Ctrl+O loads it back; each says so in the status bar.
   const double eps0 = s.config.graph.thresholds[0];
   d.press_key('S', true);
   CHECK(std::filesystem::exists(s.session_path));
+  CHECK(s.message.text == "saved " + s.session_path);
+  const std::string session = s.session_path;
+  s.session_path = tmp.file("no/such/dir/session.json");
+  d.press_key('S', true);
+  CHECK(s.message.level == studio::MessageLevel::error);
+  CHECK(s.message.text.find("no/such/dir") != std::string::npos);
+  s.session_path = session;
   s.config.graph.thresholds[0] = eps0 / 2;
   d.frame();
   d.press_key('O', true);

@@ -5,7 +5,7 @@ The core's folders are layers in the order of the pipeline (util, io, front, gra
 indoor, sets); the top-level config gathers the stages' parameters, the pipeline runs them and the
 report writes their result. A file may include its own layer and the layers below it, never above:
 a stage does not know the configuration document, the pipeline or the sets that run it. The
-studio's folders are layers too (render, widgets, state, runners, scene, panels, then the studio).
+studio's folders are layers too (render, widgets, runners, state, scene, panels, then the studio).
 Usage: check_layering.py REPO_ROOT; prints each violation and exits 1 when there is one.
 """
 import os
@@ -32,8 +32,8 @@ LAYERS = [
     # the studio
     ("app/studio/render/", 20),
     ("app/studio/widgets/", 21),
-    ("app/studio/state/", 22),
-    ("app/studio/runners/", 23),
+    ("app/studio/runners/", 22),
+    ("app/studio/state/", 23),
     ("app/studio/scene/", 24),
     ("app/studio/panels/", 25),
     ("app/studio/studio.", 26), ("app/studio/main.cpp", 27),

@@ -21,7 +21,12 @@ const char* const kColumns[] = {"pair",  "verdict",      "success",   "t err [m]
                                 "level", "D margin [%]", "time [ms]", "cached",    "diagnosis"};
 constexpr int kColumnCount = 10;
 constexpr int kDiagnosisColumn = 9;  // sorted by name, like the pair
-const char* const kShow[] = {"all pairs", "failures", "successes", "accepted", "rejected"};
+// The choices of the "show" combo, in RowFilter's order.
+const std::pair<RowFilter, const char*> kShow[] = {{RowFilter::all, "all pairs"},
+                                                   {RowFilter::failures, "failures"},
+                                                   {RowFilter::successes, "successes"},
+                                                   {RowFilter::accepted, "accepted"},
+                                                   {RowFilter::rejected, "rejected"}};
 constexpr float kTrajectoryHeight = 420.0f;  // [px]
 
 const char* truth_text(const PairOutcome& o) {
@@ -61,31 +66,32 @@ bool shown(const BenchRow& r, const BenchViewState& v) {
   const PairOutcome& o = r.outcome;
   if (!v.filter.empty() && o.name.find(v.filter) == std::string::npos) return false;
   switch (v.show) {
-    case 1:
+    case RowFilter::failures:
       return r.done && (!o.loaded || (!o.negative && !o.success) || (o.negative && o.accepted));
-    case 2:
+    case RowFilter::successes:
       return r.done && o.success;
-    case 3:
+    case RowFilter::accepted:
       return r.done && o.accepted;
-    case 4:
+    case RowFilter::rejected:
       return r.done && !o.accepted;
-    default:
-      return true;
+    case RowFilter::all:
+      break;
   }
+  return true;
 }
 
-void source_controls(UiContext& ui, BenchWorker& bench) {
-  BenchViewState& v = ui.state.bench;
-  ui::radio("manifest", &v.source, BenchViewState::manifest,
+void source_controls(AppState& state, BenchWorker& bench, StudioActions& actions) {
+  BenchViewState& v = state.bench;
+  ui::radio("manifest", &v.source, BenchSource::manifest,
             "a generic manifest: SOURCE TARGET [gt=...] per line (pagor bench --manifest)");
   ImGui::SameLine();
-  ui::radio("KITTI pairs file", &v.source, BenchViewState::kitti_pairs,
+  ui::radio("KITTI pairs file", &v.source, BenchSource::kitti_pairs,
             "frame numbers 'source target' per line, with a KITTI root");
   ImGui::SameLine();
-  ui::radio("bench results", &v.source, BenchViewState::results,
+  ui::radio("bench results", &v.source, BenchSource::results,
             "the JSON lines of pagor bench --out (shown as they are; nothing re-runs)");
   ui::input_text("file##bench_path", &v.path, "path of the manifest, pairs file or results file");
-  if (v.source == BenchViewState::kitti_pairs) {
+  if (v.source == BenchSource::kitti_pairs) {
     ui::input_text("KITTI root##bench", &v.kitti_root, "directory holding sequences/");
     ui::input_text("sequence##bench", &v.sequence, "KITTI sequence, e.g. 00");
   }
@@ -95,24 +101,20 @@ void source_controls(UiContext& ui, BenchWorker& bench) {
   if (ui::button("load##bench_config", ImVec2(0, 0),
                  "use the file's parameters in the session (absent keys: the defaults)")) {
     try {
-      ui.state.config = load_config(resolve_path(ui.state, v.config_path));
-      ui.submit_config();
-      ui.state.message = "parameters from " + v.config_path;
-      ui.state.message_is_error = false;
+      state.config = load_config(resolve_path(state, v.config_path));
+      actions.submit_config();
+      actions.notify(Message::info("parameters from " + v.config_path));
     } catch (const Error& e) {
-      ui.state.message = e.what();
-      ui.state.message_is_error = true;
+      actions.notify(Message::error(e.what()));
     }
   }
   if (ui::button("open and run##bench", ImVec2(0, 0),
                  "read the file and run every pair with the current parameters")) {
     try {
-      open_benchmark(ui.state, bench);
-      ui.state.message = "opened " + v.path;
-      ui.state.message_is_error = false;
+      open_benchmark(state, bench);
+      actions.notify(Message::info("opened " + v.path));
     } catch (const Error& e) {
-      ui.state.message = e.what();
-      ui.state.message_is_error = true;
+      actions.notify(Message::error(e.what()));
     }
   }
   ImGui::SameLine();
@@ -122,11 +124,10 @@ void source_controls(UiContext& ui, BenchWorker& bench) {
   }
   ImGui::SameLine();
   if (ui::button("pair view##bench", ImVec2(0, 0), "back to the 3D view of the current pair"))
-    ui.state.main_view = MainView::pair;
+    state.main_view = MainView::pair;
 }
 
-void progress_and_cache(UiContext& ui, BenchWorker& bench, const BenchStatus& st) {
-  BenchViewState& v = ui.state.bench;
+void progress_and_cache(BenchViewState& v, BenchWorker& bench, const BenchStatus& st) {
   char text[160];
   std::snprintf(text, sizeof(text), "%d / %d pairs with these parameters%s, %.2f s", st.done,
                 st.total, st.busy ? " (running)" : "", st.pass_ms / 1000.0);
@@ -151,9 +152,10 @@ void table_controls(BenchViewState& v) {
   ui::input_text("filter##bench", &v.filter, "show the pairs whose name contains this");
   ImGui::SameLine();
   ImGui::SetNextItemWidth(130);
-  if (ui::begin_combo("show##bench", kShow[std::clamp(v.show, 0, 4)], "which rows to list")) {
-    for (int i = 0; i < 5; ++i)
-      if (ui::selectable((std::string(kShow[i]) + "##show").c_str(), v.show == i)) v.show = i;
+  if (ui::begin_combo("show##bench", kShow[static_cast<int>(v.show)].second,
+                      "which rows to list")) {
+    for (const auto& [filter, name] : kShow)
+      if (ui::selectable((std::string(name) + "##show").c_str(), v.show == filter)) v.show = filter;
     ui::end_combo();
   }
   ImGui::SameLine();
@@ -205,8 +207,9 @@ void row_cells(const BenchRow& r) {
         "panel to 'diagnosis' for why");
 }
 
-void rows_table(UiContext& ui, const std::vector<BenchRow>& rows, BenchWorker& bench) {
-  BenchViewState& v = ui.state.bench;
+void rows_table(AppState& state, const std::vector<BenchRow>& rows, BenchWorker& bench,
+                StudioActions& actions) {
+  const BenchViewState& v = state.bench;
   std::vector<std::size_t> order;
   for (std::size_t i = 0; i < rows.size(); ++i)
     if (shown(rows[i], v)) order.push_back(i);
@@ -236,8 +239,8 @@ void rows_table(UiContext& ui, const std::vector<BenchRow>& rows, BenchWorker& b
     if (!r.current) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.55f, 0.55f, 0.6f, 1));
     const std::string label = o.name + "##bench_row" + std::to_string(i);
     if (ui::selectable(label.c_str(), false) && i < set.pairs.size()) {
-      show_pair(ui.state, set.pairs[i]);
-      ui.submit_data();
+      show_pair(state, set.pairs[i]);
+      actions.submit_data();
     }
     if (i < set.pairs.size()) ui::tooltip("open this pair in the pair view with these parameters");
     if (!r.done) {  // not run yet with any parameters
@@ -259,10 +262,10 @@ void open_benchmark(AppState& state, BenchWorker& bench) {
   BenchViewState& v = state.bench;
   const std::string path = resolve_path(state, v.path);
   if (v.path.empty()) throw InputError("benchmark: name a file to open");
-  if (v.source == BenchViewState::results) {
+  if (v.source == BenchSource::results) {
     bench.show_results(read_bench_results(path), path);
   } else {
-    PairSet set = v.source == BenchViewState::kitti_pairs
+    PairSet set = v.source == BenchSource::kitti_pairs
                       ? kitti_pair_set(resolve_path(state, v.kitti_root), v.sequence, path)
                       : read_pair_manifest(path);
     bench.set_budget(std::size_t(std::max(1, v.budget_mib)) << 20);
@@ -283,37 +286,36 @@ void show_pair(AppState& state, const PairEntry& entry) {
   state.main_view = MainView::pair;
 }
 
-void benchmark_view(UiContext& ui) {
-  if (!ui.bench) return;
-  BenchWorker& bench = *ui.bench;
+void benchmark_view(AppState& state, BenchWorker& bench, StudioActions& actions) {
   const BenchStatus st = bench.status();
   const std::vector<BenchRow> rows = bench.rows();
-  source_controls(ui, bench);
+  source_controls(state, bench, actions);
   if (!bench.origin().empty()) ImGui::Text("open: %s", bench.origin().c_str());
-  indoor_preset_hint(ui, bench.plan() != nullptr, "bench");
-  if (bench.can_rerun()) progress_and_cache(ui, bench, st);
+  indoor_preset_hint(state.config, bench.plan() != nullptr, "bench", actions);
+  if (bench.can_rerun()) progress_and_cache(state.bench, bench, st);
   std::vector<PairOutcome> outcomes;
   for (const BenchRow& r : rows)
     if (r.done && r.current) outcomes.push_back(r.outcome);
   const BenchmarkSummary summary = summarize(outcomes);
   summary_line(summary);
-  table_controls(ui.state.bench);
-  rows_table(ui, rows, bench);
+  table_controls(state.bench);
+  rows_table(state, rows, bench, actions);
   const float w = ImGui::GetContentRegionAvail().x;
-  plot_with_exports(ui, "rates", rates_plot(summary), w * 0.5f - 4);
+  const PlotExports to{state.bench.plot_path, actions};
+  plot_with_exports(to, "rates", rates_plot(summary), w * 0.5f - 4);
   ImGui::SameLine();
-  plot_with_exports(ui, "picking", picking_plot(summary), w * 0.5f - 4);
+  plot_with_exports(to, "picking", picking_plot(summary), w * 0.5f - 4);
   if (const auto plan = bench.plan()) {              // an indoor set: its trajectory over the plan
     std::vector<PairOutcome> sequence(rows.size());  // by scan index; not yet run: left out
     for (std::size_t i = 0; i < rows.size(); ++i)
       if (rows[i].done && rows[i].current) sequence[i] = rows[i].outcome;
-    plot_with_exports(ui, "trajectory", trajectory_plot(sequence, plan.get()), w,
+    plot_with_exports(to, "trajectory", trajectory_plot(sequence, plan.get()), w,
                       kTrajectoryHeight);
   }
-  ui::input_text("export path##bench", &ui.state.bench.plot_path,
+  ui::input_text("export path##bench", &state.bench.plot_path,
                  "plots are written to PATH-<plot>.png and .csv");
   ImGui::PushID("sweep_section");
-  if (ui::header("Sweep", true) && bench.can_rerun()) sweep_section(ui, bench, st);
+  if (ui::header("Sweep", true) && bench.can_rerun()) sweep_section(state, bench, st, actions);
   ImGui::PopID();
 }
 

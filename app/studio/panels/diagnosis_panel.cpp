@@ -131,8 +131,7 @@ int levels_table(const Diagnosis& d, int shown) {
 }
 
 // The 3D view's diagnosis items.
-void view_controls(UiContext& ui, const Snapshot& s) {
-  DiagnosisView& dv = ui.state.view.diagnosis;
+void view_controls(DiagnosisView& dv, const Snapshot& s) {
   ImGui::TextUnformatted("3D view");
   ui::checkbox("residual colours", &dv.color_by_residual,
                "Colour every correspondence line by its ground-truth residual |T_gt p - q| "
@@ -144,42 +143,40 @@ void view_controls(UiContext& ui, const Snapshot& s) {
       if (ui::selectable(c.name.c_str(), dv.class_name == c.name)) dv.class_name = c.name;
     ui::end_combo();
   }
-  int truth = static_cast<int>(dv.truth);
-  ui::radio("all##truth", &truth, 0, "Every correspondence");
+  ui::radio("all##truth", &dv.truth, TruthFilter::all, "Every correspondence");
   ImGui::SameLine();
-  ui::radio("true##truth", &truth, 1, "Only those within the tolerance of the truth");
+  ui::radio("true##truth", &dv.truth, TruthFilter::inliers,
+            "Only those within the tolerance of the truth");
   ImGui::SameLine();
-  ui::radio("false##truth", &truth, 2, "Only those beyond the tolerance of the truth");
-  dv.truth = static_cast<TruthFilter>(truth);
+  ui::radio("false##truth", &dv.truth, TruthFilter::outliers,
+            "Only those beyond the tolerance of the truth");
   ui::checkbox("graph edges on hover", &dv.edges_on_hover,
                "Hovering a correspondence line shows its edges in the shown level's graph");
   ImGui::TextUnformatted("source points: part of D");
-  int part = static_cast<int>(dv.contribution);
-  ui::radio("off##part", &part, 0, "Source points in their class (or cloud) colours");
+  ui::radio("off##part", &dv.contribution, Contribution::off,
+            "Source points in their class (or cloud) colours");
   ImGui::SameLine();
-  ui::radio("level##part", &part, 1,
+  ui::radio("level##part", &dv.contribution, Contribution::candidate,
             "min(d, \xce\xbc) of each verification point under the shown level's pose, drawn "
             "there");
   ImGui::SameLine();
-  ui::radio("truth##part", &part, 2,
+  ui::radio("truth##part", &dv.contribution, Contribution::ground_truth,
             "min(d, \xce\xbc) of each verification point under the ground truth, drawn there");
-  dv.contribution = static_cast<Contribution>(part);
 }
 
 }  // namespace
 
-void bottom_panel_switch(UiContext& ui) {
-  int which = ui.state.view.diagnosis.panel ? 1 : 0;
+void bottom_panel_switch(DiagnosisView& diagnosis) {
+  int which = diagnosis.panel ? 1 : 0;
   ui::radio("pyramid##bottom", &which, 0, "Levels, clique sizes, poses and scores");
   ImGui::SameLine();
   ui::radio("diagnosis##bottom", &which, 1,
             "Which stage failed and why, against the ground truth (needs one)");
-  ui.state.view.diagnosis.panel = which == 1;
+  diagnosis.panel = which == 1;
   ImGui::SameLine(0.0f, 24.0f);  // the panel's first line follows on this one
 }
 
-void diagnosis_panel(UiContext& ui) {
-  const Snapshot* s = ui.snapshot;
+void diagnosis_panel(const Snapshot* s, const std::string& stale_reason, ViewState& view) {
   if (!s) {
     ImGui::TextDisabled("no result yet: open data on the left");
     return;
@@ -191,8 +188,8 @@ void diagnosis_panel(UiContext& ui) {
     return;
   }
   const Diagnosis& d = *s->diagnosis;
-  if (!ui.stale_reason.empty())
-    ImGui::TextColored(ImVec4(1.0f, 0.75f, 0.25f, 1.0f), "STALE: %s", ui.stale_reason.c_str());
+  if (!stale_reason.empty())
+    ImGui::TextColored(ImVec4(1.0f, 0.75f, 0.25f, 1.0f), "STALE: %s", stale_reason.c_str());
   const bool ok = d.verdict == DiagnosisVerdict::success;
   ImGui::TextColored(ok ? kGood : kBad, "%s", verdict_sentence(d.verdict));
   ImGui::SameLine();
@@ -206,9 +203,9 @@ void diagnosis_panel(UiContext& ui) {
   ImGui::SameLine();
   ImGui::BeginChild("diag_mid", ImVec2(w - front_w - controls_w - 16.0f, 0));
   ImGui::TextUnformatted("Per level: the clique against the most consistent true ones");
-  const int shown = shown_level(ui.state.view, s->selected, static_cast<int>(s->levels.size()));
+  const int shown = shown_level(view, s->selected, static_cast<int>(s->levels.size()));
   const int clicked = levels_table(d, shown);
-  if (clicked >= 0) ui.state.view.level = clicked;
+  if (clicked >= 0) view.level = clicked;
   ImGui::TextDisabled("* selected (lowest D). Shaded: the level the verdict is about.");
   if (d.selected >= 0)
     ImGui::TextColored(d.score_misled ? kBad : kDim,
@@ -220,7 +217,7 @@ void diagnosis_panel(UiContext& ui) {
   ImGui::EndChild();
   ImGui::SameLine();
   ImGui::BeginChild("diag_view", ImVec2(0, 0));
-  view_controls(ui, *s);
+  view_controls(view.diagnosis, *s);
   ImGui::EndChild();
 }
 

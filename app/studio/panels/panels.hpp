@@ -1,68 +1,65 @@
 #pragma once
 /// \file panels.hpp
-/// The studio's panels. Each draws from and edits the app state; none runs an algorithm (changes
-/// go to the worker through `UiContext::submit_*`).
+/// The studio's panels. Each draws from and edits the part of the app state it is given; none runs
+/// an algorithm (runs, files and messages go through StudioActions). The 3D view's window is in
+/// scene/scene_window.hpp.
 
-#include <functional>
-#include <memory>
+#include <string>
+#include <utility>
 
+#include "panels/studio_actions.hpp"
+#include "runners/worker.hpp"
+#include "scene/scene_window.hpp"
 #include "state/app_state.hpp"
 #include "state/history.hpp"
-#include "scene/scene_view.hpp"
-#include "runners/worker.hpp"
 
 namespace pagor::studio {
 
 class BenchWorker;
-struct Plot;
 
-/// What a panel may read and do during one frame.
-struct UiContext {
-  AppState& state;
-  const Snapshot* snapshot;  ///< latest results (may be null)
-  const WorkerStatus& status;
-  std::function<void()> submit_data;    ///< open state.data (and the current config)
-  std::function<void()> submit_config;  ///< re-run with state.config
-  SceneView& scene;
-  double frame_ms = 0.0;     ///< last frame's time
-  std::string config_error;  ///< why state.config is invalid (empty when valid)
-  std::string stale_reason;  ///< why the results shown are not those of state.config (or empty)
-  const RunHistory* runs = nullptr;
-  const ParamHistory* params = nullptr;
-  std::function<void()> undo, redo;
-  std::function<void()> save_session, load_session;  ///< state.session_path
-  BenchWorker* bench = nullptr;                      ///< the benchmark view's runner
-  /// Writes a plot as PNG (rendered by the studio at the next frame) at the given path.
-  std::function<void(const Plot&, const std::string&)> export_plot;
+/// The files the Session panel names.
+struct SessionFiles {
+  std::string& session_path;     ///< the session file saved and loaded
+  std::string& screenshot_path;  ///< where a screenshot is written (PNG)
 };
 
 /// Moves through the pairs file by `delta` (clamped) and opens that pair.
-void step_pair(UiContext& ui, int delta);
+void step_pair(AppState& state, int delta, StudioActions& actions);
 /// The range the epsilon sliders span for a TRIM kind (fixed, log scale).
 std::pair<double, double> epsilon_range(TrimKind trim);
 
-void data_panel(UiContext& ui);
+/// What data is open: its kind, paths or frames, the pairs file; opening it and the benchmark.
+void data_panel(AppState& state, StudioActions& actions);
 /// For indoor data or sets (`indoor`) run with parameters of another kind: a line saying so and a
-/// button that applies the `indoor` preset. Nothing otherwise.
-void indoor_preset_hint(UiContext& ui, bool indoor, const char* id);
-void parameters_panel(UiContext& ui);
-void view_panel(UiContext& ui);
-void session_panel(UiContext& ui);
+/// button that applies the `indoor` preset to `config`. Nothing otherwise. `id` tells two apart.
+void indoor_preset_hint(Config& config, bool indoor, const char* id, StudioActions& actions);
+/// Undo and redo buttons on one line (disabled when there is no step); `id` tells two apart.
+void undo_redo_buttons(const ParamHistory& params, StudioActions& actions, const char* id);
+/// Every parameter of `config` (re-run on change), with why it is invalid and undo/redo.
+void parameters_panel(Config& config, const ParamHistory& params, const std::string& config_error,
+                      StudioActions& actions);
+/// Layers, sizes, colours, the source pose, the camera buttons. `has_plan`: the result has a
+/// floor plan (its layer can be toggled).
+void view_panel(ViewState& view, CameraControl camera, bool& show_help, bool has_plan);
+/// The session and screenshot files, with save and load.
+void session_panel(SessionFiles files, StudioActions& actions);
 /// Undo/redo and the last runs with their outcome.
-void history_panel(UiContext& ui);
-void pyramid_panel(UiContext& ui);
+void history_panel(const ParamHistory& params, const RunHistory& runs, StudioActions& actions);
+/// One row per pyramid level of `snapshot` (null: none yet), the candidate details and a bar chart
+/// of D; `stale_reason` says why it is not a run of the parameters shown. A row click sets
+/// `view.level`.
+void pyramid_panel(const Snapshot* snapshot, const RunChanges& changes,
+                   const std::string& stale_reason, ViewState& view);
 /// The diagnosis against the ground truth (diagnosis_panel.cpp) and the 3D view's diagnosis items.
-void diagnosis_panel(UiContext& ui);
+void diagnosis_panel(const Snapshot* snapshot, const std::string& stale_reason, ViewState& view);
 /// Radio buttons choosing what the bottom panel shows: the pyramid or the diagnosis (the panel's
 /// first line continues on their line).
-void bottom_panel_switch(UiContext& ui);
-void status_bar(UiContext& ui);
+void bottom_panel_switch(DiagnosisView& diagnosis);
+/// The worker's progress or the last run's stage times, the frame time, the run's warnings, and
+/// the worker's error or else the last message for the user.
+void status_bar(const WorkerStatus& status, const Snapshot* snapshot, const Message& message,
+                double frame_ms);
 /// The benchmark view: the open pairs set, its table, rates and plots, and sweeps.
-void benchmark_view(UiContext& ui);
-/// The 3D view: renders the scene into its framebuffer, shows it, handles camera input and hover.
-void scene_window(UiContext& ui);
-
-/// The transform the source cloud is drawn under, per `view.pose`.
-Transform shown_source_pose(const AppState& state, const Snapshot& snapshot);
+void benchmark_view(AppState& state, BenchWorker& bench, StudioActions& actions);
 
 }  // namespace pagor::studio

@@ -3,10 +3,10 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "widgets/bench_plots.hpp"
-#include "pagor/io/atomic_file.hpp"
 #include "pagor/errors.hpp"
+#include "pagor/io/atomic_file.hpp"
 #include "pagor/sets/sweep.hpp"
+#include "widgets/bench_plots.hpp"
 #include "widgets/widgets.hpp"
 
 namespace pagor::studio {
@@ -18,33 +18,33 @@ std::string absolute_path(const std::string& path) {
   return ec ? path : p.lexically_normal().string();
 }
 
-void plot_with_exports(UiContext& ui, const char* id, const Plot& plot, float width, float height) {
+void plot_with_exports(const PlotExports& to, const char* id, const Plot& plot, float width,
+                       float height) {
   ImGui::BeginGroup();
   ImGui::PushID(id);
   plot_widget(id, plot, ImVec2(width, height));
   // Absolute, so that the message after an export says where the file went (made on a click,
   // not every frame).
-  const auto base = [&] { return absolute_path(ui.state.bench.plot_path + "-" + id); };
-  if (ui::small_button("PNG", "write the plot as PNG (path below the plots)") && ui.export_plot)
-    ui.export_plot(plot, base() + ".png");
+  const auto base = [&] { return absolute_path(to.base + "-" + id); };
+  if (ui::small_button("PNG", "write the plot as PNG (path below the plots)"))
+    to.actions.export_plot(plot, base() + ".png");
   ImGui::SameLine();
   if (ui::small_button("CSV", "write the plotted numbers as CSV")) {
     const std::string path = base() + ".csv";
     try {
       write_file_atomic(path, plot_csv(plot));
-      ui.state.message = "wrote " + path;
-      ui.state.message_is_error = false;
+      to.actions.notify(Message::info("wrote " + path));
     } catch (const Error& e) {
-      ui.state.message = e.what();
-      ui.state.message_is_error = true;
+      to.actions.notify(Message::error(e.what()));
     }
   }
   ImGui::PopID();
   ImGui::EndGroup();
 }
 
-void sweep_section(UiContext& ui, BenchWorker& bench, const BenchStatus& st) {
-  BenchViewState& v = ui.state.bench;
+void sweep_section(AppState& state, BenchWorker& bench, const BenchStatus& st,
+                   StudioActions& actions) {
+  BenchViewState& v = state.bench;
   ui::input_text("mu values [m]##sweep", &v.sweep_mu, "comma-separated, e.g. 0.5,1,2");
   ui::input_text("threshold sets##sweep", &v.sweep_thresholds,
                  "sets separated by ';', e.g. 0.02,0.04;0.05 (empty: the current set only)");
@@ -55,10 +55,9 @@ void sweep_section(UiContext& ui, BenchWorker& bench, const BenchStatus& st) {
       if (!v.sweep_mu.empty()) grid.mus = parse_number_list(v.sweep_mu, "mu values");
       if (!v.sweep_thresholds.empty())
         grid.threshold_sets = parse_threshold_sets(v.sweep_thresholds, "threshold sets");
-      bench.sweep(sweep_settings(ui.state.config, grid));
+      bench.sweep(sweep_settings(state.config, grid));
     } catch (const Error& e) {
-      ui.state.message = e.what();
-      ui.state.message_is_error = true;
+      actions.notify(Message::error(e.what()));
     }
   }
   if (st.sweeping) {
@@ -90,19 +89,20 @@ void sweep_section(UiContext& ui, BenchWorker& bench, const BenchStatus& st) {
       ImGui::TableNextColumn();
       if (ui::small_button(("apply##sweep" + std::to_string(k)).c_str(),
                            "use this setting's parameters in the session")) {
-        ui.state.config = r.setting.config;
-        ui.submit_config();
+        state.config = r.setting.config;
+        actions.submit_config();
       }
     }
     ImGui::EndTable();
   }
   const float w = ImGui::GetContentRegionAvail().x;
   const Plot line = sweep_line_plot(*result);
-  plot_with_exports(ui, "sweep", sweep_success_plot(*result),
+  const PlotExports to{v.plot_path, actions};
+  plot_with_exports(to, "sweep", sweep_success_plot(*result),
                     line.series.empty() ? w : w * 0.5f - 4);
   if (!line.series.empty()) {
     ImGui::SameLine();
-    plot_with_exports(ui, "sweep-line", line, w * 0.5f - 4);
+    plot_with_exports(to, "sweep-line", line, w * 0.5f - 4);
   }
 }
 

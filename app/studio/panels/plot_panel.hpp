@@ -5,8 +5,8 @@
 
 #include <string>
 
-#include "runners/bench_worker.hpp"
 #include "panels/panels.hpp"
+#include "runners/bench_worker.hpp"
 #include "widgets/plot.hpp"
 
 namespace pagor::studio {
@@ -18,12 +18,19 @@ std::string absolute_path(const std::string& path);
 /// Height of the benchmark view's plots [px].
 constexpr float kPlotHeight = 260.0f;
 
-/// The plot `width` x `height` pixels, then buttons writing it to `<plot_path>-<id>.png / .csv`.
-void plot_with_exports(UiContext& ui, const char* id, const Plot& plot, float width,
+/// Where a plot's export buttons write: `<base>-<id>.png / .csv`.
+struct PlotExports {
+  const std::string& base;  ///< the benchmark view's export path
+  StudioActions& actions;   ///< renders the PNG; says where the files went
+};
+
+/// The plot `width` x `height` pixels, then buttons writing it to `<base>-<id>.png / .csv`.
+void plot_with_exports(const PlotExports& to, const char* id, const Plot& plot, float width,
                        float height = kPlotHeight);
 
 /// The sweep over the open set: mu values and threshold sets, run, progress, the table of
-/// settings (each can be applied to the session) and the success plots.
-void sweep_section(UiContext& ui, BenchWorker& bench, const BenchStatus& st);
+/// settings (each can be applied to the session's configuration) and the success plots.
+void sweep_section(AppState& state, BenchWorker& bench, const BenchStatus& status,
+                   StudioActions& actions);
 
 }  // namespace pagor::studio

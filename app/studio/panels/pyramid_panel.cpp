@@ -105,20 +105,12 @@ void bar_chart(const Snapshot& s, int shown, const RunChanges& changes) {
   }
 }
 
-}  // namespace
-
-void pyramid_panel(UiContext& ui) {
-  const Snapshot* s = ui.snapshot;
-  if (!s) {
-    ImGui::TextDisabled("no result yet: open data on the left");
-    return;
-  }
-  const RunChanges empty;
-  const RunChanges& changes = ui.runs ? ui.runs->changes() : empty;
-  if (!ui.stale_reason.empty()) {
+// The stale-results warning, or the line saying the last run changed the selected level.
+void change_line(const RunChanges& changes, const std::string& stale_reason) {
+  if (!stale_reason.empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.75f, 0.25f, 1.0f));
     ImGui::PushTextWrapPos(0.0f);
-    ImGui::Text("STALE: results below are from an earlier run (%s)", ui.stale_reason.c_str());
+    ImGui::Text("STALE: results below are from an earlier run (%s)", stale_reason.c_str());
     ImGui::PopTextWrapPos();
     ImGui::PopStyleColor();
   } else if (changes.selected_changed()) {
@@ -126,8 +118,7 @@ void pyramid_panel(UiContext& ui) {
     const auto level = [&](int l, double eps, TrimKind trim) {
       char text[48] = "none";
       if (l >= 0)
-        std::snprintf(text, sizeof(text), "\xce\xb5 %.3g%s (L%d)", eps,
-                      trim == TrimKind::difference ? " m" : "", l);
+        std::snprintf(text, sizeof(text), "\xce\xb5 %.3g%s (L%d)", eps, trim_unit_suffix(trim), l);
       return std::string(text);
     };
     ImGui::TextColored(
@@ -135,110 +126,103 @@ void pyramid_panel(UiContext& ui) {
         level(changes.selected_before, changes.selected_eps_before, changes.trim_before).c_str(),
         level(changes.selected_after, changes.selected_eps_after, changes.trim_after).c_str());
   }
-  ImGui::PushStyleVar(ImGuiStyleVar_Alpha, ui.stale_reason.empty() ? 1.0f : 0.55f);
-  ImGui::Text("%s", s->description.c_str());
-  std::size_t lm_s = 0, lm_t = 0;
-  for (const auto& c : s->source_landmarks.classes)
-    lm_s += c.method == LandmarkMethod::cluster ? c.landmarks : 0;
-  for (const auto& c : s->target_landmarks.classes)
-    lm_t += c.method == LandmarkMethod::cluster ? c.landmarks : 0;
-  ImGui::TextDisabled("%zu / %zu cluster landmarks, %zu correspondences%s", lm_s, lm_t,
-                      s->correspondences.size(), s->correspondences_capped ? " (capped)" : "");
-  const int shown = shown_level(ui.state.view, s->selected, static_cast<int>(s->levels.size()));
-  const float chart_w = std::min(330.0f, ImGui::GetContentRegionAvail().x * 0.34f);
-  ImGui::BeginChild("levels", ImVec2(ImGui::GetContentRegionAvail().x - chart_w - 8.0f, 0));
-  const bool gt = s->ground_truth.has_value();
+}
+
+// One level's row of the table; true when its label was clicked.
+bool level_row(const Snapshot& s, int i, int shown, const RunChanges& changes) {
+  const bool gt = s.ground_truth.has_value();
+  const LevelView& l = s.levels[static_cast<std::size_t>(i)];
+  const LevelChange* change = static_cast<std::size_t>(i) < changes.levels.size()
+                                  ? &changes.levels[static_cast<std::size_t>(i)]
+                                  : nullptr;
+  ImGui::TableNextRow();
+  const bool flipped = changes.comparable && change &&
+                       (change->success_flipped || change->validity_flipped ||
+                        (changes.selected_changed() && (l.epsilon == changes.selected_eps_before ||
+                                                        i == changes.selected_after)));
+  if (flipped) ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg1, IM_COL32(120, 95, 20, 160));
+  ImGui::TableNextColumn();
+  char label[32];
+  std::snprintf(label, sizeof(label), "%s%d", i == s.selected ? "* " : "  ", i);
+  const bool clicked = ui::selectable(label, i == shown, ImGuiSelectableFlags_SpanAllColumns);
+  ImGui::TableNextColumn();
+  ImGui::Text("%.3f", l.epsilon);
+  ImGui::TableNextColumn();
+  ImGui::Text("%zu", l.vertices);
+  ImGui::TableNextColumn();
+  ImGui::Text("%zu", l.edges);
+  ImGui::TableNextColumn();
+  ImGui::Text("%zu", l.clique.size());
+  ImGui::TableNextColumn();
+  if (l.pose.valid)
+    ImGui::Text("%.1f", l.score);
+  else
+    ImGui::TextColored(kDim, "invalid");
+  ImGui::TableNextColumn();
+  if (changes.comparable && change && change->d_delta && std::abs(*change->d_delta) > 1e-9)
+    ImGui::TextColored(*change->d_delta < 0 ? kGood : kBad, "%+.1f", *change->d_delta);
+  if (gt) {
+    ImGui::TableNextColumn();
+    if (l.error) ImGui::Text("%.2f", l.error->translation);
+    ImGui::TableNextColumn();
+    if (l.error) ImGui::Text("%.2f", l.error->rotation_deg);
+    ImGui::TableNextColumn();
+    if (l.error)
+      ImGui::TextColored(l.error->success ? kGood : kBad, "%s%s", l.error->success ? "yes" : "no",
+                         change && change->success_flipped ? " (flipped)" : "");
+  }
+  ImGui::TableNextColumn();
+  if (l.pose.valid) {
+    const Transform& T = l.pose.T_target_source;
+    ImGui::Text("%7.2f %6.2f %6.2f", T(0, 3), T(1, 3), T(2, 3));
+    ImGui::TableNextColumn();
+    ImGui::Text("%.2f", yaw_pitch_roll_deg(T.block<3, 3>(0, 0)).x());
+  } else {
+    ImGui::TextColored(kDim, "%s", l.pose.failure.c_str());
+    ImGui::TableNextColumn();
+  }
+  return clicked;
+}
+
+// One row per level; returns the level clicked, or -1.
+int levels_table(const Snapshot& s, int shown, const RunChanges& changes) {
+  int clicked = -1;
+  const bool gt = s.ground_truth.has_value();
   const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_Borders |
                                 ImGuiTableFlags_ScrollX | ImGuiTableFlags_SizingFixedFit;
   const int columns = gt ? 12 : 9;
   const float table_h =
-      ImGui::GetTextLineHeightWithSpacing() * (static_cast<float>(s->levels.size()) + 2.4f);
-  if (ImGui::BeginTable("pyramid", columns, flags, ImVec2(0, table_h))) {
-    ImGui::TableSetupScrollFreeze(1, 1);
-    // A difference TRIM's thresholds are lengths; a ratio's have no unit.
-    const char* eps = s->config.graph.trim == TrimKind::difference ? "\xce\xb5 [m]" : "\xce\xb5";
-    for (const char* h : {"level", eps, "verts", "edges", "clique", "D [m]",
-                          "\xce\x94"
-                          "D"})
-      ImGui::TableSetupColumn(h);
-    if (gt) {
-      ImGui::TableSetupColumn("t err [m]");
-      ImGui::TableSetupColumn("r err [\xc2\xb0]");
-      ImGui::TableSetupColumn("ok");
-    }
-    ImGui::TableSetupColumn("t (x, y, z) [m]");
-    ImGui::TableSetupColumn("yaw [\xc2\xb0]");
-    ImGui::TableHeadersRow();
-    for (int i = 0; i < static_cast<int>(s->levels.size()); ++i) {
-      const LevelView& l = s->levels[static_cast<std::size_t>(i)];
-      const LevelChange* change = static_cast<std::size_t>(i) < changes.levels.size()
-                                      ? &changes.levels[static_cast<std::size_t>(i)]
-                                      : nullptr;
-      ImGui::TableNextRow();
-      const bool flipped =
-          changes.comparable && change &&
-          (change->success_flipped || change->validity_flipped ||
-           (changes.selected_changed() &&
-            (l.epsilon == changes.selected_eps_before || i == changes.selected_after)));
-      if (flipped) ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg1, IM_COL32(120, 95, 20, 160));
-      ImGui::TableNextColumn();
-      char label[32];
-      std::snprintf(label, sizeof(label), "%s%d", i == s->selected ? "* " : "  ", i);
-      if (ui::selectable(label, i == shown, ImGuiSelectableFlags_SpanAllColumns))
-        ui.state.view.level = i;
-      ImGui::TableNextColumn();
-      ImGui::Text("%.3f", l.epsilon);
-      ImGui::TableNextColumn();
-      ImGui::Text("%zu", l.vertices);
-      ImGui::TableNextColumn();
-      ImGui::Text("%zu", l.edges);
-      ImGui::TableNextColumn();
-      ImGui::Text("%zu", l.clique.size());
-      ImGui::TableNextColumn();
-      if (l.pose.valid)
-        ImGui::Text("%.1f", l.score);
-      else
-        ImGui::TextColored(kDim, "invalid");
-      ImGui::TableNextColumn();
-      if (changes.comparable && change && change->d_delta && std::abs(*change->d_delta) > 1e-9)
-        ImGui::TextColored(*change->d_delta < 0 ? kGood : kBad, "%+.1f", *change->d_delta);
-      if (gt) {
-        ImGui::TableNextColumn();
-        if (l.error) ImGui::Text("%.2f", l.error->translation);
-        ImGui::TableNextColumn();
-        if (l.error) ImGui::Text("%.2f", l.error->rotation_deg);
-        ImGui::TableNextColumn();
-        if (l.error)
-          ImGui::TextColored(l.error->success ? kGood : kBad, "%s%s",
-                             l.error->success ? "yes" : "no",
-                             change && change->success_flipped ? " (flipped)" : "");
-      }
-      ImGui::TableNextColumn();
-      if (l.pose.valid) {
-        const Transform& T = l.pose.T_target_source;
-        ImGui::Text("%7.2f %6.2f %6.2f", T(0, 3), T(1, 3), T(2, 3));
-        ImGui::TableNextColumn();
-        ImGui::Text("%.2f", yaw_pitch_roll_deg(T.block<3, 3>(0, 0)).x());
-      } else {
-        ImGui::TextColored(kDim, "%s", l.pose.failure.c_str());
-        ImGui::TableNextColumn();
-      }
-    }
-    ImGui::EndTable();
+      ImGui::GetTextLineHeightWithSpacing() * (static_cast<float>(s.levels.size()) + 2.4f);
+  if (!ImGui::BeginTable("pyramid", columns, flags, ImVec2(0, table_h))) return -1;
+  ImGui::TableSetupScrollFreeze(1, 1);
+  // A difference TRIM's thresholds are lengths; a ratio's have no unit.
+  const char* eps = s.config.graph.trim == TrimKind::difference ? "\xce\xb5 [m]" : "\xce\xb5";
+  for (const char* h : {"level", eps, "verts", "edges", "clique", "D [m]",
+                        "\xce\x94"
+                        "D"})
+    ImGui::TableSetupColumn(h);
+  if (gt) {
+    ImGui::TableSetupColumn("t err [m]");
+    ImGui::TableSetupColumn("r err [\xc2\xb0]");
+    ImGui::TableSetupColumn("ok");
   }
-  ImGui::TextDisabled(
-      "* selected: lowest D (\xce\xbc %.2f m, %zu points). Click a row to view its level.",
-      s->config.verification.mu, s->verification_points);
+  ImGui::TableSetupColumn("t (x, y, z) [m]");
+  ImGui::TableSetupColumn("yaw [\xc2\xb0]");
+  ImGui::TableHeadersRow();
+  for (int i = 0; i < static_cast<int>(s.levels.size()); ++i)
+    if (level_row(s, i, shown, changes)) clicked = i;
+  ImGui::EndTable();
+  return clicked;
+}
 
-  ImGui::EndChild();
-  ImGui::SameLine();
-  ImGui::BeginChild("chart", ImVec2(0, 0));
-  bar_chart(*s, shown, changes);
+// The shown level's candidate and, with a ground truth, the selected pose's outcome.
+void level_details(const Snapshot& s, int shown) {
+  const bool gt = s.ground_truth.has_value();
   if (shown >= 0) {
-    const LevelView& l = s->levels[static_cast<std::size_t>(shown)];
+    const LevelView& l = s.levels[static_cast<std::size_t>(shown)];
     ImGui::Spacing();
     ImGui::Text("level %d (\xce\xb5 %.3f%s): clique of %zu", shown, l.epsilon,
-                s->config.graph.trim == TrimKind::difference ? " m" : "", l.clique.size());
+                trim_unit_suffix(s.config.graph.trim), l.clique.size());
     if (l.pose.valid) {
       const Transform& T = l.pose.T_target_source;
       const Eigen::Vector3d a = yaw_pitch_roll_deg(T.block<3, 3>(0, 0));
@@ -251,16 +235,47 @@ void pyramid_panel(UiContext& ui) {
   }
   if (gt) {
     ImGui::Spacing();
-    if (s->selected_error)
-      ImGui::TextColored(s->selected_error->success ? kGood : kBad,
+    if (s.selected_error)
+      ImGui::TextColored(s.selected_error->success ? kGood : kBad,
                          "selected: %s (%.2f m, %.2f\xc2\xb0)",
-                         s->selected_error->success ? "SUCCESS" : "FAILURE",
-                         s->selected_error->translation, s->selected_error->rotation_deg);
+                         s.selected_error->success ? "SUCCESS" : "FAILURE",
+                         s.selected_error->translation, s.selected_error->rotation_deg);
     else
       ImGui::TextColored(kBad, "selected: none");
     ImGui::SameLine();
-    ImGui::TextDisabled("bound: %s", s->upper_bound ? "yes" : "no");
+    ImGui::TextDisabled("bound: %s", s.upper_bound ? "yes" : "no");
   }
+}
+
+}  // namespace
+
+void pyramid_panel(const Snapshot* s, const RunChanges& changes, const std::string& stale_reason,
+                   ViewState& view) {
+  if (!s) {
+    ImGui::TextDisabled("no result yet: open data on the left");
+    return;
+  }
+  change_line(changes, stale_reason);
+  ImGui::PushStyleVar(ImGuiStyleVar_Alpha, stale_reason.empty() ? 1.0f : 0.55f);
+  ImGui::Text("%s", s->description.c_str());
+  ImGui::TextDisabled("%zu / %zu cluster landmarks, %zu correspondences%s",
+                      cluster_landmark_count(s->source_landmarks),
+                      cluster_landmark_count(s->target_landmarks), s->correspondences.size(),
+                      s->correspondences_capped ? " (capped)" : "");
+  const int shown = shown_level(view, s->selected, static_cast<int>(s->levels.size()));
+  const float chart_w = std::min(330.0f, ImGui::GetContentRegionAvail().x * 0.34f);
+  ImGui::BeginChild("levels", ImVec2(ImGui::GetContentRegionAvail().x - chart_w - 8.0f, 0));
+  const int clicked = levels_table(*s, shown, changes);
+  if (clicked >= 0) view.level = clicked;
+  ImGui::TextDisabled(
+      "* selected: lowest D (\xce\xbc %.2f m, %zu points). Click a row to view its level.",
+      s->config.verification.mu, s->verification_points);
+
+  ImGui::EndChild();
+  ImGui::SameLine();
+  ImGui::BeginChild("chart", ImVec2(0, 0));
+  bar_chart(*s, shown, changes);
+  level_details(*s, shown);
   ImGui::EndChild();
   ImGui::PopStyleVar();
 }

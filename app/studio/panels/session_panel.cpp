@@ -10,19 +10,11 @@ namespace {
 const ImVec4 kRed(1.0f, 0.4f, 0.4f, 1.0f);
 }  // namespace
 
-void history_panel(UiContext& ui) {
-  ImGui::BeginDisabled(!ui.params || !ui.params->can_undo());
-  if (ui::button("undo##history", ImVec2(0, 0), "Undo the last parameter change (Ctrl+Z)."))
-    ui.undo();
-  ImGui::EndDisabled();
+void history_panel(const ParamHistory& params, const RunHistory& runs, StudioActions& actions) {
+  undo_redo_buttons(params, actions, "history");
   ImGui::SameLine();
-  ImGui::BeginDisabled(!ui.params || !ui.params->can_redo());
-  if (ui::button("redo##history", ImVec2(0, 0), "Redo (Ctrl+Y).")) ui.redo();
-  ImGui::EndDisabled();
-  ImGui::SameLine();
-  ImGui::TextDisabled("%zu undo, %zu redo", ui.params ? ui.params->undo_steps() : 0,
-                      ui.params ? ui.params->redo_steps() : 0);
-  if (!ui.runs || ui.runs->runs().empty()) {
+  ImGui::TextDisabled("%zu undo, %zu redo", params.undo_steps(), params.redo_steps());
+  if (runs.runs().empty()) {
     ImGui::TextDisabled("no runs yet");
     return;
   }
@@ -33,7 +25,7 @@ void history_panel(UiContext& ui) {
     ImGui::TableSetupColumn("outcome");
     ImGui::TableSetupColumn("change");
     ImGui::TableHeadersRow();
-    for (const RunRecord& r : ui.runs->runs()) {
+    for (const RunRecord& r : runs.runs()) {
       ImGui::TableNextRow();
       ImGui::TableNextColumn();
       ImGui::Text("#%llu", static_cast<unsigned long long>(r.request));
@@ -52,18 +44,17 @@ void history_panel(UiContext& ui) {
   }
 }
 
-void session_panel(UiContext& ui) {
-  AppState& s = ui.state;
-  ui::input_text("session", &s.session_path,
+void session_panel(SessionFiles files, StudioActions& actions) {
+  ui::input_text("session", &files.session_path,
                  "Session file: data, parameters, camera, layers, level and layout.");
   if (ui::button("save session", ImVec2(0, 0), "Writes the session file (Ctrl+S)."))
-    ui.save_session();
+    actions.save_session_now();
   ImGui::SameLine();
   if (ui::button("load session", ImVec2(0, 0), "Reads the session file (Ctrl+O)."))
-    ui.load_session();
-  ui::input_text("PNG", &s.screenshot_path, "Where a screenshot is written.");
+    actions.load_session_now();
+  ui::input_text("PNG", &files.screenshot_path, "Where a screenshot is written.");
   if (ui::button("save screenshot", ImVec2(0, 0), "Writes the whole window as a PNG (S)."))
-    s.want_screenshot = true;
+    actions.save_screenshot();
 }
 
 }  // namespace pagor::studio

@@ -9,7 +9,8 @@
 
 #include "pagor/config.hpp"
 #include "pagor/sets/dataset.hpp"
-#include "scene/camera.hpp"
+#include "state/camera.hpp"
+#include "state/message.hpp"
 
 namespace pagor::studio {
 
@@ -75,18 +76,23 @@ struct ViewLimits {
 /// What the main area shows: the pair view (3D view and pyramid) or the benchmark view.
 enum class MainView { pair, benchmark };
 
+/// What the benchmark view opens: a manifest, a KITTI pairs file or `pagor bench --out` results.
+enum class BenchSource { manifest, kitti_pairs, results };
+
+/// Which rows the benchmark table lists. The session stores the number (0 all ... 4 rejected).
+enum class RowFilter { all, failures, successes, accepted, rejected };
+
 /// The benchmark view (benchmark_view.hpp); kept in the session.
 struct BenchViewState {
-  enum Source { manifest = 0, kitti_pairs = 1, results = 2 };
-  int source = manifest;  ///< what `path` names
-  std::string path;       ///< the manifest, KITTI pairs file or `pagor bench --out` results
+  BenchSource source = BenchSource::manifest;  ///< what `path` names
+  std::string path;  ///< the manifest, KITTI pairs file or `pagor bench --out` results
   std::string kitti_root = "../shared/data/kitti";  ///< kitti_pairs: the KITTI root
   std::string sequence = "00";                      ///< kitti_pairs: the sequence
-  std::string config_path;  ///< a configuration JSON the user loads for the set
-  bool open = false;        ///< a set is open (re-opened when a session is loaded)
-  std::string filter;       ///< rows whose pair name contains this
-  int show = 0;             ///< 0 all, 1 failures, 2 successes, 3 accepted, 4 rejected
-  int sort = 0;             ///< column index of benchmark_view's columns
+  std::string config_path;          ///< a configuration JSON the user loads for the set
+  bool open = false;                ///< a set is open (re-opened when a session is loaded)
+  std::string filter;               ///< rows whose pair name contains this
+  RowFilter show = RowFilter::all;  ///< which rows the table lists
+  int sort = 0;                     ///< column index of benchmark_view's columns
   bool descending = false;
   int budget_mib = 1024;                 ///< memory budget of the per-pair caches [MiB]
   std::string plot_path = "pagor-plot";  ///< exports go to PATH-<plot>.png / .csv
@@ -113,8 +119,7 @@ struct AppState {
 
   std::string session_path = "pagor-session.json";
   std::string screenshot_path = "pagor-studio.png";
-  std::string message;  ///< last message for the user
-  bool message_is_error = false;
+  Message message;  ///< the last message for the user (StudioActions::notify), in the status bar
   bool want_screenshot = false;
   bool show_help = false;          ///< the shortcut overlay (F1 or H)
   int width = 1280, height = 720;  ///< window or image size [px]

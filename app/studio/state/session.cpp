@@ -5,13 +5,13 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "state/app_state.hpp"
-#include "render/headless.hpp"
-#include "widgets/number_format.hpp"
-#include "pagor/io/atomic_file.hpp"
-#include "pagor/errors.hpp"
 #include "io/json_input.hpp"
+#include "pagor/errors.hpp"
+#include "pagor/io/atomic_file.hpp"
 #include "pagor/io/kitti.hpp"
+#include "render/headless.hpp"
+#include "state/app_state.hpp"
+#include "widgets/number_format.hpp"
 
 namespace pagor::studio {
 namespace {
@@ -315,15 +315,15 @@ json bench_json(const AppState& s) {
   const BenchViewState& b = s.bench;
   return {{"shown", s.main_view == MainView::benchmark},
           {"open", b.open},
-          {"source", b.source == BenchViewState::kitti_pairs ? "kitti_pairs"
-                     : b.source == BenchViewState::results   ? "results"
-                                                             : "manifest"},
+          {"source", b.source == BenchSource::kitti_pairs ? "kitti_pairs"
+                     : b.source == BenchSource::results   ? "results"
+                                                          : "manifest"},
           {"path", b.path},
           {"kitti_root", b.kitti_root},
           {"sequence", b.sequence},
           {"config_path", b.config_path},
           {"filter", b.filter},
-          {"show", b.show},
+          {"show", static_cast<int>(b.show)},
           {"sort", b.sort},
           {"descending", b.descending},
           {"budget_mib", b.budget_mib},
@@ -343,16 +343,17 @@ void read_bench(const json& j, const std::string& where, AppState& s) {
   if (source != "manifest" && source != "kitti_pairs" && source != "results")
     throw InputError(where + ": source: expected manifest, kitti_pairs or results, got \"" +
                      source + "\"");
-  b.source = source == "kitti_pairs" ? BenchViewState::kitti_pairs
-             : source == "results"   ? BenchViewState::results
-                                     : BenchViewState::manifest;
+  b.source = source == "kitti_pairs" ? BenchSource::kitti_pairs
+             : source == "results"   ? BenchSource::results
+                                     : BenchSource::manifest;
   b.path = get_string(j, "path", where, b.path);
   b.kitti_root = get_string(j, "kitti_root", where, b.kitti_root);
   b.sequence = get_string(j, "sequence", where, b.sequence);
   b.config_path = get_string(j, "config_path", where, b.config_path);
   b.open = get_bool(j, "open", where, false) && !b.path.empty();
   b.filter = get_string(j, "filter", where, "");
-  b.show = get_int(j, "show", where, 0, 0, 4);
+  b.show = static_cast<RowFilter>(
+      get_int(j, "show", where, 0, 0, static_cast<int>(RowFilter::rejected)));
   b.sort = get_int(j, "sort", where, 0, 0, 9);  // a column of the benchmark table
   b.descending = get_bool(j, "descending", where, false);
   b.budget_mib = get_int(j, "budget_mib", where, b.budget_mib, 64, 8192);

@@ -150,7 +150,7 @@ std::string level_label(int level, std::optional<double> epsilon, std::optional<
   if (!epsilon) return s;
   char buf[48];
   std::snprintf(buf, sizeof(buf), ": \xCE\xB5 = %.3g%s", *epsilon,
-                trim == TrimKind::difference ? " m" : "");
+                trim ? trim_unit_suffix(*trim) : "");
   return s + buf;
 }
 

@@ -1,11 +1,10 @@
 #pragma once
 /// \file plot_export.hpp
 /// Plots as pictures: rendered by the studio's own ImGui renderer through the GL table, read back
-/// and written as PNG through the atomic writer. In the studio it uses the window's (or headless)
+/// and written as PNG (render/png.hpp). In the studio it uses the window's (or headless)
 /// context; `pagor --plot` opens an OSMesa context of its own (so `core/` stays free of GL).
 
 #include <string>
-#include <vector>
 
 #include "render/gl.hpp"
 #include "render/imgui_renderer.hpp"
@@ -17,22 +16,13 @@ namespace pagor::studio {
 constexpr int kPlotPngWidth = 960, kPlotPngHeight = 600;
 
 /// Renders `plot` into the lower-left width x height pixels of the default framebuffer (which
-/// must be at least that large) and returns the RGBA pixels, rows top-down. Needs a current GL
-/// context and an ImGui frame begun (the font is the frame's).
-std::vector<unsigned char> render_plot_rgba(const Gl& gl, ImGuiRenderer& renderer, const Plot& plot,
-                                            int width, int height);
-
-/// Encodes RGBA pixels (rows top-down) as PNG and writes them atomically. Throws InputError.
-void write_png_file(const std::string& path, const std::vector<unsigned char>& rgba, int width,
-                    int height);
+/// must be at least that large; render/png.hpp reads them back). Needs a current GL context and
+/// an ImGui frame begun (the font is the frame's).
+void render_plot(const Gl& gl, ImGuiRenderer& renderer, const Plot& plot, int width, int height);
 
 /// For the command line: opens an offscreen context and an ImGui context of its own, renders the
 /// plot and writes the PNG. Throws pagor::Error (no OSMesa, unwritable file).
 void export_plot_png(const Plot& plot, const std::string& path, int width = kPlotPngWidth,
                      int height = kPlotPngHeight);
-
-/// Loads the studio's embedded UI font into the current ImGui context at `size` [px]. False
-/// with `error` on failure.
-bool load_ui_font(float size, std::string& error);
 
 }  // namespace pagor::studio

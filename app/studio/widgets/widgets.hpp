@@ -91,6 +91,14 @@ bool small_button(const char* label, const char* tip = nullptr);
 bool arrow_button(const char* id, ImGuiDir dir, const char* tip = nullptr);
 bool checkbox(const char* label, bool* v, const char* tip = nullptr);
 bool radio(const char* label, int* v, int value, const char* tip = nullptr);
+/// A radio button of an enum: selects `value` into `*v`.
+template <class E>
+bool radio(const char* label, E* v, E value, const char* tip = nullptr) {
+  int i = static_cast<int>(*v);
+  const bool r = radio(label, &i, static_cast<int>(value), tip);
+  *v = static_cast<E>(i);
+  return r;
+}
 bool slider_float(const char* label, float* v, float lo, float hi, const char* fmt,
                   bool log = false, const char* tip = nullptr);
 bool slider_int(const char* label, int* v, int lo, int hi, bool log = false,

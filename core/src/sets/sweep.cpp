@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "pagor/errors.hpp"
+#include "pagor/graph/trim.hpp"
 
 namespace pagor {
 namespace {
@@ -55,7 +56,7 @@ std::vector<SweepSetting> sweep_settings(const Config& base, const SweepGrid& gr
             if (grid.trims.size() > 1) add(std::string("trim=") + to_string(trim));
             // Units as everywhere: difference TRIM thresholds and mu in metres.
             if (grid.threshold_sets.size() > 1)
-              add("eps=" + thresholds_text(eps) + (trim == TrimKind::difference ? " m" : ""));
+              add("eps=" + thresholds_text(eps) + trim_unit_suffix(trim));
             if (grid.solvers.size() > 1) add(std::string("solver=") + to_string(solver));
             if (grid.models.size() > 1) add(std::string("model=") + to_string(model));
             if (grid.mus.size() > 1) add("mu=" + number(mu) + " m");

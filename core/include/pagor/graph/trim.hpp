@@ -28,6 +28,10 @@ inline const auto& enum_entries(TrimKind) {
 inline const char* trim_unit(TrimKind kind) {
   return kind == TrimKind::difference ? "m" : "";
 }
+/// The same to write after a value: " m" or "".
+inline const char* trim_unit_suffix(TrimKind kind) {
+  return kind == TrimKind::difference ? " m" : "";
+}
 
 /// TRIM of two lengths a, b [m]: `difference` |a - b| [m]; `ratio` max(a/b, b/a) - 1 [unitless].
 /// A ratio with a zero length is +infinity.

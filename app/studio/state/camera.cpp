@@ -1,4 +1,4 @@
-#include "scene/camera.hpp"
+#include "state/camera.hpp"
 
 #include <algorithm>
 #include <cmath>
