@@ -19,17 +19,6 @@
 namespace pagor::cli {
 namespace {
 
-PairSet pair_set_from_args(const Args& args) {
-  if (args.has("manifest")) {
-    if (args.has("kitti-root") || args.has("pairs"))
-      throw UsageError("choose --manifest FILE or --kitti-root DIR --pairs FILE, not both");
-    return read_pair_manifest(args.get("manifest"));
-  }
-  if (!args.has("kitti-root") || !args.has("pairs"))
-    throw UsageError("bench needs --manifest FILE, or --kitti-root DIR and --pairs FILE");
-  return kitti_pair_set(args.get("kitti-root"), args.get("sequence", "00"), args.get("pairs"));
-}
-
 void print_row(const PairOutcome& o) {
   const char* verdict = o.accepted ? "accept" : "reject";
   const char* truth = o.negative ? "neg" : (o.has_ground_truth ? (o.success ? "yes" : "no") : "-");
@@ -100,7 +89,7 @@ std::vector<Option> bench_options() {
 
 int run_bench(const Args& args) {
   const Config config = config_from_args(args);
-  const PairSet set = pair_set_from_args(args);
+  const PairSet set = pair_set_from_args(args, "bench");
   if (args.has("compare-thresholds")) return run_threshold_comparison(args, config, set);
   if (args.has("resume") && !args.has("out")) throw UsageError("--resume goes with --out FILE");
   std::optional<BenchJournal> journal;

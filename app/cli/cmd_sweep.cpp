@@ -43,17 +43,6 @@ SweepGrid grid_from_args(const Args& args) {
   return g;
 }
 
-PairSet sweep_pair_set(const Args& args) {
-  if (args.has("manifest")) {
-    if (args.has("kitti-root") || args.has("pairs"))
-      throw UsageError("choose --manifest FILE or --kitti-root DIR --pairs FILE, not both");
-    return read_pair_manifest(args.get("manifest"));
-  }
-  if (!args.has("kitti-root") || !args.has("pairs"))
-    throw UsageError("sweep needs --manifest FILE, or --kitti-root DIR and --pairs FILE");
-  return kitti_pair_set(args.get("kitti-root"), args.get("sequence", "00"), args.get("pairs"));
-}
-
 void print_table(const SweepResult& r, const Config& base) {
   std::size_t w = 7;
   for (const auto& s : r.settings) w = std::max(w, s.setting.label.size());
@@ -104,7 +93,7 @@ std::vector<Option> sweep_options() {
 
 int run_sweep_command(const Args& args) {
   const Config base = config_from_args(args);
-  const PairSet set = sweep_pair_set(args);
+  const PairSet set = pair_set_from_args(args, "sweep");
   std::vector<SweepSetting> settings;
   with_config_origin(args, [&] { settings = sweep_settings(base, grid_from_args(args)); });
 #ifndef PAGOR_CLI_PLOT

@@ -47,4 +47,15 @@ std::optional<PairSource> pair_source_from_args(const Args& args) {
   return src;
 }
 
+PairSet pair_set_from_args(const Args& args, const std::string& command) {
+  if (args.has("manifest")) {
+    if (args.has("kitti-root") || args.has("pairs"))
+      throw UsageError("choose --manifest FILE or --kitti-root DIR --pairs FILE, not both");
+    return read_pair_manifest(args.get("manifest"));
+  }
+  if (!args.has("kitti-root") || !args.has("pairs"))
+    throw UsageError(command + " needs --manifest FILE, or --kitti-root DIR and --pairs FILE");
+  return kitti_pair_set(args.get("kitti-root"), args.get("sequence", "00"), args.get("pairs"));
+}
+
 }  // namespace pagor::cli

@@ -7,6 +7,7 @@
 
 #include "common/args.hpp"
 #include "pagor/sets/dataset.hpp"
+#include "pagor/sets/pair_set.hpp"
 
 namespace pagor::cli {
 
@@ -16,5 +17,9 @@ std::vector<Option> pair_options();
 /// The pair those options select; nullopt when none is given. Throws UsageError for two inputs at
 /// once or an incomplete one.
 std::optional<PairSource> pair_source_from_args(const Args& args);
+
+/// `--manifest FILE`, or `--kitti-root DIR --pairs FILE [--sequence SEQ]`: the set of pairs a
+/// `command` runs. Throws UsageError for both or neither.
+PairSet pair_set_from_args(const Args& args, const std::string& command);
 
 }  // namespace pagor::cli
