@@ -3,11 +3,11 @@
 
 #include <cstdio>
 
-#include "association_problem.hpp"
 #include "bench_sections.hpp"
 #include "bench_util.hpp"
-#include "pagor/pipeline.hpp"
 #include "pagor/graph/pyramid_graph.hpp"
+#include "pagor/pipeline.hpp"
+#include "pagor/sets/association_problem.hpp"
 
 namespace pagor::bench {
 namespace {

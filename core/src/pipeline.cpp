@@ -6,6 +6,7 @@
 #include <thread>
 
 #include "pagor/errors.hpp"
+#include "pagor/verify/level_selection.hpp"
 
 namespace pagor {
 namespace {
@@ -56,9 +57,19 @@ bool Pipeline::up_to_date() const {
 void Pipeline::set_input(PointCloud source, PointCloud target) {
   source_ = std::move(source);
   target_ = std::move(target);
-  has_input_ = true;
+  has_clouds_ = true;
   mark_stale(Stage::landmarks);
   mark_stale(Stage::verification_prep);
+}
+
+void Pipeline::set_matches(std::vector<Correspondence> matches) {
+  const bool mode_changes = matches.empty() != matches_.empty();
+  matches_ = std::move(matches);
+  mark_stale(mode_changes ? Stage::landmarks : Stage::correspondences);
+}
+
+bool Pipeline::uses_landmarks() const {
+  return has_clouds_ && (matches_.empty() || config_.correspondences.fuse_matches);
 }
 
 void Pipeline::set_ground_truth(std::optional<Transform> T) {
@@ -115,14 +126,18 @@ void Pipeline::set_config(const Config& config) {
     const std::optional<Stage> stage = first_stage(config.*member);
     if (stage && section_json(config, f.key) != section_json(config_, f.key)) mark_stale(*stage);
   });
-  // The one field that feeds a stage outside its section's chain.
+  // The fields that feed a stage outside their section's chain.
   if (config.verification.voxel_size != config_.verification.voxel_size)
     mark_stale(Stage::verification_prep);
+  if (config.correspondences.fuse_matches != config_.correspondences.fuse_matches &&
+      !matches_.empty())
+    mark_stale(Stage::landmarks);  // whether they take part
   config_ = config;
 }
 
 void Pipeline::run(const ProgressFn& progress, const std::atomic<bool>* cancel) {
-  if (!has_input_) throw InputError("the pipeline has no input clouds");
+  if (!has_input())
+    throw InputError("the pipeline has no input: neither clouds nor a matcher's correspondences");
   for (int i = 0; i < kStageCount; ++i) {
     if (!stale_[static_cast<std::size_t>(i)]) continue;
     if (cancel && cancel->load()) throw Cancelled();
@@ -166,6 +181,9 @@ void Pipeline::both_clouds(const F& f) {
 void Pipeline::run_stage(Stage stage) {
   switch (stage) {
     case Stage::landmarks: {
+      source_landmarks_ = LandmarkSet{};
+      target_landmarks_ = LandmarkSet{};
+      if (!uses_landmarks()) break;
       const auto extract = [this](const PointCloud& cloud, LandmarkSet& out) {
         out = extract_landmarks(cloud, config_.label_scheme, config_.landmarks);
       };
@@ -181,8 +199,7 @@ void Pipeline::run_stage(Stage stage) {
       break;
     }
     case Stage::correspondences:
-      correspondences_ =
-          match_landmarks(source_landmarks_, target_landmarks_, config_.correspondences);
+      run_correspondences();
       break;
     case Stage::graph:
       graph_ = build_pyramid_graph(correspondences_.items, config_.graph, threads_);
@@ -207,10 +224,13 @@ void Pipeline::run_stage(Stage stage) {
     }
     case Stage::verification_prep:
       refiner_.reset();  // it refers to the verifier
-      verifier_.emplace(source_, target_, config_.verification.voxel_size);
+      verifier_.reset();
+      if (has_clouds_) verifier_.emplace(source_, target_, config_.verification.voxel_size);
       break;
     case Stage::verification:
-      verification_ = verify_candidates(*verifier_, poses_, config_.verification, threads_);
+      verification_ = verifier_
+                          ? verify_candidates(*verifier_, poses_, config_.verification, threads_)
+                          : select_without_clouds(poses_);
       break;
     case Stage::refinement:
       run_refinement();
@@ -230,10 +250,24 @@ void Pipeline::run_stage(Stage stage) {
   }
 }
 
+void Pipeline::run_correspondences() {
+  if (matches_.empty()) {
+    correspondences_ =
+        match_landmarks(source_landmarks_, target_landmarks_, config_.correspondences);
+    return;
+  }
+  CorrespondenceSet landmark_ones;
+  if (uses_landmarks())
+    landmark_ones = match_landmarks(source_landmarks_, target_landmarks_, config_.correspondences);
+  correspondences_ = with_matches(matches_, std::move(landmark_ones),
+                                  static_cast<int>(source_landmarks_.landmarks.size()),
+                                  static_cast<int>(target_landmarks_.landmarks.size()));
+}
+
 void Pipeline::run_refinement() {
   refinement_ = RefinementResult{};
   const RefinementParams& params = config_.refinement;
-  if (!params.enabled || verification_.selected < 0) return;
+  if (!params.enabled || verification_.selected < 0 || !verifier_) return;
   if (!refiner_ || refiner_->normal_radius() != params.normal_radius)
     refiner_.emplace(*verifier_, params.normal_radius);
   const auto sel = static_cast<std::size_t>(verification_.selected);
@@ -242,6 +276,16 @@ void Pipeline::run_refinement() {
 }
 
 void Pipeline::judge_acceptance() {
+  if (!verifier_) {
+    acceptance_ = Acceptance{};
+    acceptance_.verified = false;
+    if (verification_.selected >= 0)
+      acceptance_.inliers =
+          static_cast<int>(poses_[static_cast<std::size_t>(verification_.selected)].inliers.size());
+    acceptance_.reason = verification_.selected < 0 ? "no valid candidate"
+                                                    : "nothing to verify on: no clouds were given";
+    return;
+  }
   if (!refinement_.applied) {
     acceptance_ = judge_selection(*verifier_, poses_, verification_, config_.verification,
                                   config_.evaluation, config_.acceptance, config_.gnc.model);

@@ -66,12 +66,9 @@ double residual_scale(const Snapshot& s) {
 
 bool diagnosis_keeps(const Snapshot& s, const DiagnosisView& view, std::size_t i) {
   const Correspondence& c = s.correspondences[i];
-  if (!view.class_name.empty()) {
-    const auto k = static_cast<std::size_t>(c.class_index);
-    if (k >= s.source_landmarks.classes.size() ||
-        s.source_landmarks.classes[k].name != view.class_name)
-      return false;
-  }
+  if (!view.class_name.empty() &&
+      correspondence_class_name(c, s.source_landmarks) != view.class_name)
+    return false;
   if (view.truth == TruthFilter::all || !s.diagnosis) return true;
   return s.diagnosis->is_true(i) == (view.truth == TruthFilter::inliers);
 }

@@ -167,7 +167,7 @@ int draw_correspondence_lines(ImDrawList* dl, const ViewRect& r, const Snapshot&
     for (std::size_t i = 0; i < s.correspondences.size(); ++i) {
       if (in_clique[i] || !diagnosis_keeps(s, dv, i)) continue;
       const Correspondence& c = s.correspondences[i];
-      const auto& name = s.source_landmarks.classes[static_cast<std::size_t>(c.class_index)].name;
+      const std::string name = correspondence_class_name(c, s.source_landmarks);
       line(c, diagnosis_line_color(s, dv, i, col(colors.of(name), 70), 110),
            std::max(1.0f, view.line_width * 0.4f), false);
     }
@@ -192,19 +192,19 @@ void draw_legend(ImDrawList* dl, ImVec2 at, const Snapshot& s, const ViewState& 
     points = {{col(Palette::source), "source"}, {col(Palette::target), "target"}};
   } else {
     // Clouds without labels have no point of any configured class: only what the run added.
-    const bool labelled = (s.source && !s.source->labels.empty()) ||
-                          (s.target && !s.target->labels.empty());
+    const bool labelled =
+        (s.source && !s.source->labels.empty()) || (s.target && !s.target->labels.empty());
     if (labelled)
       for (const auto& c : s.config.landmarks.classes)
         points.push_back({col(colors.of(c.name)), c.name});
     // With labels: classes the run added, such as the class-agnostic `structure` keypoints of a
     // class-poor pair. Without: every class that made landmarks.
     for (const auto& c : s.source_landmarks.classes)
-      if (c.landmarks > 0 &&
-          std::none_of(points.begin(), points.end(),
-                       [&](const auto& p) { return p.second == c.name; }))
+      if (c.landmarks > 0 && std::none_of(points.begin(), points.end(),
+                                          [&](const auto& p) { return p.second == c.name; }))
         points.push_back({col(colors.of(c.name)), c.name + " (landmarks only)"});
-    points.push_back({IM_COL32(120, 120, 120, 255), labelled ? "other labels" : "unlabelled points"});
+    points.push_back(
+        {IM_COL32(120, 120, 120, 255), labelled ? "other labels" : "unlabelled points"});
   }
   const bool by_residual = view.diagnosis.color_by_residual && s.diagnosis;  // its own legend
   const bool plan = s.plan && view.layers.plan;

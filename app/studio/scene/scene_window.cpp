@@ -43,7 +43,7 @@ void landmark_tooltip(const LandmarkSet& set, int index, bool source) {
 void correspondence_tooltip(const Snapshot& s, int index, int level) {
   const Correspondence& c = s.correspondences[static_cast<std::size_t>(index)];
   ImGui::Text("correspondence %d: %s", index,
-              s.source_landmarks.classes[static_cast<std::size_t>(c.class_index)].name.c_str());
+              correspondence_class_name(c, s.source_landmarks).c_str());
   ImGui::Text("source landmark %d -> target landmark %d, rank score %.2f", c.source, c.target,
               c.score);
   if (s.ground_truth) {

@@ -36,6 +36,7 @@
 #include "pagor/verify/acceptance.hpp"
 #include "pagor/verify/diagnosis.hpp"
 #include "pagor/verify/evaluation.hpp"
+#include "pagor/verify/level_selection.hpp"
 #include "pagor/verify/refinement.hpp"
 #include "pagor/verify/verification.hpp"
 
@@ -44,6 +45,7 @@
 #include "pagor/indoor/floor_projection.hpp"
 #include "pagor/indoor/indoor_synthetic.hpp"
 
+#include "pagor/sets/association_problem.hpp"
 #include "pagor/sets/benchmark.hpp"
 #include "pagor/sets/dataset.hpp"
 #include "pagor/sets/pair_set.hpp"

@@ -5,6 +5,12 @@
 /// graph and what follows; a new clustering parameter re-runs everything). Each stage reports its
 /// wall time and how often it ran. One thread at a time may use a Pipeline; `run` can report
 /// progress and be cancelled from another thread through an atomic flag.
+///
+/// Inputs: two clouds (set_input), a matcher's correspondences (set_matches), or both. With
+/// matches and no clouds only the back end runs (graph, clique, pose), the level is selected
+/// without clouds (level_selection.hpp) and the acceptance says there was nothing to verify on.
+/// With both, the matches replace the landmark correspondences (or join them when
+/// `correspondences.fuse_matches`) and verification, refinement and acceptance run as usual.
 
 #include <array>
 #include <atomic>
@@ -55,6 +61,12 @@ class Pipeline {
 
   /// Sets both clouds; every stage becomes stale.
   void set_input(PointCloud source, PointCloud target);
+  /// Sets a matcher's correspondences (source point p, target point q [m], weight in `score`), or
+  /// clears them with an empty vector. The pipeline tags each CorrespondenceOrigin::matcher with
+  /// class_index -1; a negative source or target id becomes the correspondence's position (ids
+  /// name keypoints: two correspondences sharing one are never consistent). The stages from the
+  /// correspondences on become stale (from the landmarks on when the mode changes).
+  void set_matches(std::vector<Correspondence> matches);
   /// Sets or clears the ground truth; only the evaluation becomes stale.
   void set_ground_truth(std::optional<Transform> T_target_source);
   /// Validates and applies a configuration; the stages it affects become stale.
@@ -63,13 +75,20 @@ class Pipeline {
   void set_threads(int threads) { threads_ = threads < 1 ? 1 : threads; }
 
   const Config& config() const { return config_; }
-  bool has_input() const { return has_input_; }
+  /// Whether there is something to run on: clouds, matches or both.
+  bool has_input() const { return has_clouds_ || !matches_.empty(); }
+  /// Whether clouds were given (set_input): landmarks and verification need them.
+  bool has_clouds() const { return has_clouds_; }
+  /// The matcher's correspondences as given to set_matches (empty: none).
+  const std::vector<Correspondence>& matches() const { return matches_; }
   /// Whether a stage's output is out of date.
   bool stale(Stage stage) const { return stale_[static_cast<std::size_t>(stage)]; }
   /// Whether every stage is up to date.
   bool up_to_date() const;
 
-  /// Runs the stale stages in order. Throws InputError without input, Cancelled when `cancel`
+  /// Runs the stale stages in order; the stages the inputs make moot (landmarks without clouds or
+  /// with unfused matches, verification and refinement without clouds) leave empty results.
+  /// Throws InputError without input, Cancelled when `cancel`
   /// becomes true (stages finished so far keep their results).
   void run(const ProgressFn& progress = {}, const std::atomic<bool>* cancel = nullptr);
 
@@ -114,6 +133,9 @@ class Pipeline {
   void mark_stale(Stage stage);
   void run_stage(Stage stage);
   void run_refinement();
+  void run_correspondences();
+  /// Whether the landmarks take part: clouds, and no matches or fused ones.
+  bool uses_landmarks() const;
   void judge_acceptance();
   /// Calls f(cloud, landmarks) for the source and the target, in parallel with threads > 1.
   template <class F>
@@ -121,8 +143,9 @@ class Pipeline {
 
   Config config_;
   int threads_ = 1;
-  bool has_input_ = false;
+  bool has_clouds_ = false;
   PointCloud source_, target_;
+  std::vector<Correspondence> matches_;
   std::optional<Transform> ground_truth_;
 
   LandmarkSet source_landmarks_, target_landmarks_;

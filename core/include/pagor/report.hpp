@@ -6,10 +6,13 @@
 ///   levels[]          epsilon, vertices, edges, clique (correspondence indices), clique_size,
 ///                     pose_valid, T_target_source, inliers, score_D (null if invalid),
 ///                     and with ground truth translation_error_m, rotation_error_deg, success
-///   acceptance        accepted, overlap, inliers, margin, reason (see acceptance.hpp)
+///   selected_by       "score_D" (verified on the clouds) or "without_clouds" (level_selection.hpp)
+///   acceptance        accepted, verified (false: no clouds to verify on), overlap, inliers,
+///                     margin, reason (see acceptance.hpp)
 ///   ground_truth      T_target_source, translation_error_m, rotation_error_deg, success,
 ///                     upper_bound (null without ground truth)
-///   correspondences   count, candidates, capped, per_class {name: count}
+///   correspondences   count, candidates, capped, per_class {name: count} (landmark ones),
+///                     origin {landmark: count, matcher: count}
 ///   landmarks         source / target: {class name: count}
 ///   timings_ms        landmarks, correspondences, graph, clique, gnc, verification, evaluation,
 ///   total warnings[], config (the full configuration used)

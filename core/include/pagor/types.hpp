@@ -44,14 +44,27 @@ struct Landmark {
   std::vector<int> point_indices;  ///< those points' indices in the input cloud
 };
 
-/// A putative association of a source landmark with a target landmark of the same class.
+/// Where a correspondence comes from.
+enum class CorrespondenceOrigin : std::uint8_t {
+  landmark,  ///< the front end's: two semantic landmarks of one class
+  matcher,   ///< a matcher's (FPFH, FCGF, GeDi, ...), given to the pipeline (set_matches)
+};
+
+/// A putative association of a source point with a target point: two landmarks of the same class,
+/// or a matcher's pair of keypoints.
 struct Correspondence {
-  int class_index = -1;                         ///< configured class both landmarks belong to
-  int source = -1;                              ///< index into the source landmark list
-  int target = -1;                              ///< index into the target landmark list
-  Eigen::Vector3d p = Eigen::Vector3d::Zero();  ///< source landmark position [m]
-  Eigen::Vector3d q = Eigen::Vector3d::Zero();  ///< target landmark position [m]
-  double score = 0.0;  ///< how promising, in [0, 1]; used only to rank when capping
+  /// configured class both landmarks belong to; -1 for a matcher's correspondence (no class)
+  int class_index = -1;
+  /// index into the source landmark list (a matcher's: its source keypoint's id); two
+  /// correspondences sharing a source or a target id are never consistent
+  int source = -1;
+  int target = -1;                              ///< index into the target landmark list, likewise
+  Eigen::Vector3d p = Eigen::Vector3d::Zero();  ///< source position [m]
+  Eigen::Vector3d q = Eigen::Vector3d::Zero();  ///< target position [m]
+  /// how promising: landmarks' in [0, 1], used only to rank when capping; a matcher's weight
+  /// (non-negative) as given
+  double score = 0.0;
+  CorrespondenceOrigin origin = CorrespondenceOrigin::landmark;  ///< who made it
 };
 
 /// A rigid transform as a 4x4 homogeneous matrix.

@@ -174,3 +174,37 @@ CorrespondenceSet match_landmarks(const LandmarkSet& source, const LandmarkSet& 
 }
 
 }  // namespace pagor
+
+namespace pagor {
+
+std::string correspondence_class_name(const Correspondence& c, const LandmarkSet& source) {
+  if (c.origin == CorrespondenceOrigin::matcher) return "matcher";
+  const auto k = static_cast<std::size_t>(c.class_index);
+  return c.class_index >= 0 && k < source.classes.size() ? source.classes[k].name : "?";
+}
+
+CorrespondenceSet with_matches(std::vector<Correspondence> matches, CorrespondenceSet out,
+                               int source_ids, int target_ids) {
+  const auto t0 = Clock::now();
+  const std::size_t total = out.items.size() + matches.size();
+  if (total > kMaxGraphCorrespondences)
+    throw InputError(std::to_string(total) +
+                     " correspondences are more than the consistency graph's budget of " +
+                     std::to_string(kMaxGraphCorrespondences));
+  for (std::size_t i = 0; i < matches.size(); ++i) {
+    Correspondence& c = matches[i];
+    c.class_index = -1;
+    c.origin = CorrespondenceOrigin::matcher;
+    if (c.source < 0) c.source = static_cast<int>(i);
+    if (c.target < 0) c.target = static_cast<int>(i);
+    c.source += source_ids;
+    c.target += target_ids;
+  }
+  out.candidates += matches.size();
+  out.matches = matches.size();
+  out.items.insert(out.items.end(), matches.begin(), matches.end());
+  out.time_ms += std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+  return out;
+}
+
+}  // namespace pagor

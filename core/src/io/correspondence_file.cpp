@@ -67,7 +67,8 @@ CorrespondenceFile parse_correspondence_file(const std::string& text, const std:
     double v[6];
     for (int k = 0; k < 6; ++k) v[k] = number(f[static_cast<std::size_t>(k)], where, names[k]);
     Correspondence c;
-    c.class_index = 0;
+    c.class_index = -1;
+    c.origin = CorrespondenceOrigin::matcher;
     c.source = c.target = static_cast<int>(out.items.size());
     c.p = Eigen::Vector3d(v[0], v[1], v[2]);
     c.q = Eigen::Vector3d(v[3], v[4], v[5]);

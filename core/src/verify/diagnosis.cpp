@@ -47,15 +47,33 @@ void diagnose_front_end(const DiagnosisInput& in, Diagnosis& d) {
   const auto& items = in.correspondences->items;
   const auto& sc = in.source_landmarks->classes;
   const auto& tc = in.target_landmarks->classes;
-  std::vector<std::vector<const Correspondence*>> true_by_class(sc.size());
-  d.classes.resize(sc.size());
+  // A matcher's correspondences (no class) are one more entry, "matcher", whose landmarks are
+  // the keypoints they use.
+  const std::size_t matcher = sc.size();
+  std::vector<std::vector<const Correspondence*>> true_by_class(sc.size() + 1);
+  d.classes.resize(sc.size() + 1);
   for (std::size_t c = 0; c < sc.size(); ++c) {
     d.classes[c].name = sc[c].name;
     d.classes[c].source_landmarks = sc[c].landmarks;
     d.classes[c].target_landmarks = c < tc.size() ? tc[c].landmarks : 0;
   }
+  d.classes[matcher].name = "matcher";
+  std::vector<int> sources, targets;
+  for (const Correspondence& c : items)
+    if (c.origin == CorrespondenceOrigin::matcher) {
+      sources.push_back(c.source);
+      targets.push_back(c.target);
+    }
+  for (auto* ids : {&sources, &targets}) {
+    std::sort(ids->begin(), ids->end());
+    ids->erase(std::unique(ids->begin(), ids->end()), ids->end());
+  }
+  d.classes[matcher].source_landmarks = sources.size();
+  d.classes[matcher].target_landmarks = targets.size();
   for (std::size_t i = 0; i < items.size(); ++i) {
-    const auto c = static_cast<std::size_t>(items[i].class_index);
+    const auto c = items[i].origin == CorrespondenceOrigin::matcher
+                       ? matcher
+                       : static_cast<std::size_t>(items[i].class_index);
     if (c >= d.classes.size()) continue;
     ++d.classes[c].correspondences;
     if (!d.is_true(i)) continue;
@@ -67,6 +85,7 @@ void diagnose_front_end(const DiagnosisInput& in, Diagnosis& d) {
     d.true_correspondences += d.classes[c].true_correspondences;
     d.best_achievable += d.classes[c].best_achievable;
   }
+  if (d.classes[matcher].correspondences == 0) d.classes.pop_back();  // landmarks only
 }
 
 // Per level: true vertices, the largest consistent set of true ones, clique precision / recall,
@@ -152,6 +171,11 @@ void judge(const DiagnosisParams& params, Diagnosis& d) {
     d.verdict = V::verification_wrong;
     d.at_fault_level = best_right;
     const double selected_D = sel >= 0 ? at(sel).score : HUGE_VAL;
+    if (!std::isfinite(at(best_right).score)) {  // selected without clouds: there is no D
+      d.explanation =
+          format("level %d was right, level %d was selected (without clouds)", best_right, sel);
+      return;
+    }
     d.explanation = format("level %d was right with D %.1f m, the selected one had D %.1f m",
                            best_right, at(best_right).score, selected_D) +
                     format("; the ground truth scores D %.1f m", d.gt_score) +

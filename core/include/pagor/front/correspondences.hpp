@@ -18,6 +18,9 @@ struct CorrespondenceParams {
   int fpfh_max_per_class = 300;    ///< fpfh classes: at most this many matches (best first)
   double shape_scale = 0.5;        ///< ranking of cluster pairs: extents differing by this much [m]
                                    ///< score e^-1
+  /// with a matcher's correspondences (Pipeline::set_matches) and clouds: use the landmark
+  /// correspondences too, both in one pyramid (false: the matcher's replace them)
+  bool fuse_matches = false;
 
   template <class V>
   static void fields(V&& v) {
@@ -34,6 +37,10 @@ struct CorrespondenceParams {
       {"shape_scale",
        "Ranking of cluster pairs: extents differing by this much score e^-1 of alike ones.", "m",
        Range::above(0, 100)});
+    v(&CorrespondenceParams::fuse_matches,
+      {"fuse_matches",
+       "With a matcher's correspondences and clouds: keep the landmark correspondences too, both "
+       "in one pyramid (false: the matcher's replace them)."});
   }
 };
 
@@ -42,10 +49,25 @@ struct CorrespondenceSet {
   std::vector<Correspondence> items;   ///< kept correspondences, best score first within a class
   std::size_t candidates = 0;          ///< how many there were before the cap
   bool capped = false;                 ///< whether the cap removed some
-  std::vector<std::size_t> per_class;  ///< kept per configured class
+  std::vector<std::size_t> per_class;  ///< kept landmark correspondences per configured class
+  std::size_t matches = 0;             ///< of `items`, a matcher's (origin matcher, class_index -1)
   std::vector<std::string> warnings;
   double time_ms = 0.0;  ///< wall time [ms]
 };
+
+/// Name of the class a correspondence is shown and counted under: its landmarks' class in
+/// `source` (the landmark set it was made from), "matcher" for a matcher's correspondence, "?" for
+/// a class index `source` does not have.
+std::string correspondence_class_name(const Correspondence& c, const LandmarkSet& source);
+
+/// The correspondences of a matcher, tagged CorrespondenceOrigin::matcher with class_index -1
+/// (their `score` is the matcher's weight), after `landmark_correspondences` when given (fused: the
+/// matcher's source and target ids are moved past the landmarks' `source_ids` and `target_ids`,
+/// so that no two correspondences share an id by accident). A matcher's id below 0 becomes its
+/// position in `matches`.
+CorrespondenceSet with_matches(std::vector<Correspondence> matches,
+                               CorrespondenceSet landmark_correspondences = {}, int source_ids = 0,
+                               int target_ids = 0);
 
 /// Matches two landmark sets made with the same class list. Cluster classes: every source
 /// landmark with every target landmark of the class, scored by how alike their extents are.

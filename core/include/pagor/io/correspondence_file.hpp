@@ -17,8 +17,8 @@ namespace pagor {
 
 /// What a correspondences file holds.
 struct CorrespondenceFile {
-  /// One per data line, in file order. Each has its own source and target landmark index (its
-  /// position), class 0, and `score` = its weight (1 without a weight column).
+  /// One per data line, in file order. Each has its own source and target id (its position),
+  /// origin `matcher`, class_index -1, and `score` = its weight (1 without a weight column).
   std::vector<Correspondence> items;
   std::vector<double> weights;  ///< per item; empty without a weight column
   std::vector<char> inlier;     ///< ground-truth flag per item; empty without a flag column

@@ -66,10 +66,13 @@ struct AcceptanceParams {
 /// The verdict and the measures behind it.
 struct Acceptance {
   bool accepted = false;  ///< trust the selected pose
-  double overlap = 0.0;   ///< fraction of source points within inlier_distance, in [0, 1]
-  int inliers = 0;        ///< GNC inliers of the selected candidate
-  double margin = 0.0;    ///< D margin to the best distinct candidate, fraction of mu * points
-  std::string reason;     ///< which measure failed, e.g. "overlap 0.08 < 0.25"; empty if accepted
+  /// false when there was nothing to verify on (a matcher's correspondences without clouds):
+  /// the pose is then neither accepted nor rejected on evidence, and `reason` says so
+  bool verified = true;
+  double overlap = 0.0;  ///< fraction of source points within inlier_distance, in [0, 1]
+  int inliers = 0;       ///< GNC inliers of the selected candidate
+  double margin = 0.0;   ///< D margin to the best distinct candidate, fraction of mu * points
+  std::string reason;    ///< which measure failed, e.g. "overlap 0.08 < 0.25"; empty if accepted
 };
 
 /// Judges the selection of `verification` among `candidates`. No selection: not accepted.

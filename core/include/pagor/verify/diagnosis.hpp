@@ -52,7 +52,8 @@ const char* verdict_name(DiagnosisVerdict verdict);
 /// One sentence for a user, e.g. "verification picked a wrong candidate although one was right".
 const char* verdict_sentence(DiagnosisVerdict verdict);
 
-/// Front end, one configured class (plus `structure` when the fallback ran).
+/// Front end, one configured class (plus `structure` when the fallback ran, and `matcher` for a
+/// matcher's correspondences, whose landmarks are the keypoints they use).
 struct ClassDiagnosis {
   std::string name;
   std::size_t source_landmarks = 0, target_landmarks = 0;

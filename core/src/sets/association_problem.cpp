@@ -1,4 +1,5 @@
-#include "association_problem.hpp"
+#include "pagor/sets/association_problem.hpp"
+
 #include "util/random_draw.hpp"
 
 #include <Eigen/Geometry>
@@ -7,7 +8,7 @@
 #include <cstdio>
 #include <random>
 
-namespace pagor::bench {
+namespace pagor {
 
 AssociationProblem association_problem(const AssociationParams& a) {
   std::mt19937_64 rng(a.seed);
@@ -15,8 +16,7 @@ AssociationProblem association_problem(const AssociationParams& a) {
   AssociationProblem out;
   const Eigen::Vector3d axis = draw3(unit, rng).normalized();
   out.T_target_source.block<3, 3>(0, 0) = Eigen::AngleAxisd(angle(rng), axis).toRotationMatrix();
-  out.T_target_source.block<3, 1>(0, 3) =
-      draw3(unit, rng) * a.extent;
+  out.T_target_source.block<3, 1>(0, 3) = draw3(unit, rng) * a.extent;
   const auto R = out.T_target_source.block<3, 3>(0, 0);
   const auto t = out.T_target_source.block<3, 1>(0, 3);
   const int inliers = static_cast<int>(std::lround(a.inlier_ratio * a.m));
@@ -25,7 +25,8 @@ AssociationProblem association_problem(const AssociationParams& a) {
   std::shuffle(flags.begin(), flags.end(), rng);
   for (int i = 0; i < a.m; ++i) {
     Correspondence c;
-    c.class_index = 0;
+    c.class_index = -1;
+    c.origin = CorrespondenceOrigin::matcher;
     c.source = c.target = i;
     c.p = draw3(coord, rng);
     if (flags[static_cast<std::size_t>(i)]) {
@@ -70,4 +71,4 @@ bool write_association_problem(const std::string& path, const AssociationProblem
   return std::fclose(f) == 0;
 }
 
-}  // namespace pagor::bench
+}  // namespace pagor

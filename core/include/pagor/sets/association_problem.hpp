@@ -1,8 +1,11 @@
 #pragma once
-// The association problems of issue 11, as CLIPPER's benchmarks pose them: random 3-D points, a
-// fraction of the correspondences inliers (the source point moved by a known transform, plus
-// bounded noise), the rest pairing two unrelated random points. Every correspondence has its own
-// source and target point, so no pair is excluded for sharing a landmark.
+/// \file association_problem.hpp
+/// Generated association problems, as CLIPPER's benchmarks pose them: random 3-D points, a
+/// fraction of the correspondences inliers (the source point moved by a known transform with a
+/// random rotation about any axis, plus bounded noise), the rest pairing two unrelated random
+/// points. Every correspondence has its own source and target point, so no pair is excluded for
+/// sharing a landmark. They stand for a matcher's correspondences (origin `matcher`): the
+/// benchmark's dense problems and the tests of the correspondence input.
 
 #include <cstdint>
 #include <string>
@@ -11,7 +14,7 @@
 #include "pagor/config.hpp"
 #include "pagor/types.hpp"
 
-namespace pagor::bench {
+namespace pagor {
 
 /// Parameters of one problem.
 struct AssociationParams {
@@ -24,11 +27,12 @@ struct AssociationParams {
 
 /// A problem with its ground truth.
 struct AssociationProblem {
-  std::vector<Correspondence> correspondences;
-  std::vector<char> inlier;  ///< ground-truth flag per correspondence
+  std::vector<Correspondence> correspondences;  ///< origin matcher, class_index -1, weight 1
+  std::vector<char> inlier;                     ///< ground-truth flag per correspondence
   Transform T_target_source = Transform::Identity();
 };
 
+/// The problem `params` describe; the same parameters give the same problem.
 AssociationProblem association_problem(const AssociationParams& params);
 
 /// The graph parameters of the problem set: difference TRIM ("point distance"), epsilon =
@@ -40,4 +44,4 @@ GraphParams association_graph_params();
 bool write_association_problem(const std::string& path, const AssociationProblem& problem,
                                const std::string& comment);
 
-}  // namespace pagor::bench
+}  // namespace pagor

@@ -1,0 +1,201 @@
+// The pipeline on a matcher's correspondences (Pipeline::set_matches): without clouds (the back
+// end alone), with clouds (verification as usual), fused with the landmarks, and on the real
+// gedi-dev problems when the shared data is there.
+
+#include <Eigen/Geometry>
+#include <array>
+#include <catch2/catch.hpp>
+#include <filesystem>
+
+#include "pagor/errors.hpp"
+#include "pagor/io/correspondence_file.hpp"
+#include "pagor/pipeline.hpp"
+#include "pagor/report.hpp"
+#include "pagor/sets/association_problem.hpp"
+#include "pagor/sets/pair_set.hpp"
+#include "pagor/sets/synthetic.hpp"
+#include "pagor/verify/diagnosis.hpp"
+
+using namespace pagor;
+
+namespace {
+
+constexpr double kTranslationTolerance = 0.05;  // [m], inlier noise is 0.02 m
+constexpr double kRotationTolerance = 0.5;      // [deg]
+
+// A dense generated problem: 1000 correspondences, 10 % inliers, a rotation about a tilted axis.
+AssociationProblem dense_problem() {
+  AssociationParams a;
+  a.m = 1000;
+  a.seed = 5;
+  return association_problem(a);
+}
+
+Config se3_config() {
+  Config c = default_config();
+  c.gnc.model = PoseModel::se3;
+  return c;
+}
+
+std::array<int, kStageCount> runs(const Pipeline& p) {
+  std::array<int, kStageCount> r{};
+  for (int s = 0; s < kStageCount; ++s)
+    r[static_cast<std::size_t>(s)] = p.runs(static_cast<Stage>(s));
+  return r;
+}
+
+}  // namespace
+
+TEST_CASE("a matcher's correspondences register without clouds") {
+  const AssociationProblem problem = dense_problem();
+  Pipeline p(se3_config());
+  p.set_matches(problem.correspondences);
+  p.set_ground_truth(problem.T_target_source);
+  CHECK(p.has_input());
+  CHECK_FALSE(p.has_clouds());
+  p.run();
+  CHECK(p.source_landmarks().landmarks.empty());
+  CHECK(p.verifier() == nullptr);
+  REQUIRE(p.correspondences().items.size() == problem.correspondences.size());
+  CHECK(p.correspondences().matches == problem.correspondences.size());
+  for (const Correspondence& c : p.correspondences().items) {
+    CHECK(c.origin == CorrespondenceOrigin::matcher);
+    CHECK(c.class_index == -1);
+  }
+  REQUIRE(p.selected_level() >= 0);
+  const auto e = p.selected_error();
+  REQUIRE(e);
+  CHECK(e->translation < kTranslationTolerance);
+  CHECK(e->rotation_deg < kRotationTolerance);
+  // Nothing to verify on: neither accepted nor rejected on evidence, and it says so.
+  CHECK_FALSE(p.acceptance().verified);
+  CHECK_FALSE(p.acceptance().accepted);
+  CHECK(p.acceptance().reason.find("nothing to verify on") != std::string::npos);
+  CHECK(p.level_errors().size() == p.cliques().size());
+  // Every level's clique is a clique, and the planted inliers dominate it.
+  for (const CliqueResult& c : p.cliques()) {
+    CHECK(is_clique(p.graph(), c.level, c.vertices));
+    const InlierQuality q = inlier_quality(c.vertices, problem.inlier);
+    CHECK(q.precision > 0.9);
+  }
+  const std::string report = registration_report_json(p, "matches", "matches");
+  CHECK(report.find("\"matcher\": 1000") != std::string::npos);
+  CHECK(report.find("\"selected_by\": \"without_clouds\"") != std::string::npos);
+  // The diagnosis counts the matcher's correspondences as a class of their own.
+  const auto d = diagnose(p);
+  REQUIRE(d);
+  REQUIRE(d->classes.size() == 1);
+  CHECK(d->classes[0].name == "matcher");
+  CHECK(d->classes[0].correspondences == 1000);
+  CHECK(d->verdict == DiagnosisVerdict::success);
+}
+
+TEST_CASE("negative matcher ids become their positions; shared ids are never consistent") {
+  std::vector<Correspondence> m(4);
+  const Eigen::Vector3d t(1, 2, 3);
+  const Eigen::Vector3d pts[] = {{0, 0, 0}, {5, 0, 0}, {0, 5, 0}, {0, 0, 5}};
+  for (std::size_t i = 0; i < 4; ++i) {
+    m[i].p = pts[i];
+    m[i].q = pts[i] + t;
+    m[i].score = 0.5;
+  }
+  Pipeline p(se3_config());
+  p.set_matches(m);
+  p.run();
+  for (std::size_t i = 0; i < 4; ++i) {
+    CHECK(p.correspondences().items[i].source == static_cast<int>(i));
+    CHECK(p.correspondences().items[i].score == 0.5);  // the matcher's weight is kept
+  }
+  CHECK(p.graph().edges_at_level.back() == 6);
+  // Two matches of one source keypoint: the pair is not an edge.
+  m[1].source = 0;
+  p.set_matches(m);
+  p.run();
+  CHECK(p.graph().edges_at_level.back() == 5);
+  CHECK_FALSE(p.graph().adjacent(0, 1, p.graph().levels() - 1));
+}
+
+TEST_CASE("matches with clouds are verified on them; clearing them brings the landmarks back") {
+  SyntheticScene scene = make_synthetic_scene();
+  // The matcher's correspondences: source points and where the ground truth puts them, plus
+  // outliers pairing unrelated points.
+  std::vector<Correspondence> m;
+  const Transform& T = scene.T_target_source;
+  for (std::size_t i = 0; i < scene.source.size() && m.size() < 200; i += 97) {
+    Correspondence c;
+    c.p = scene.source.points[i].cast<double>();
+    const bool inlier = m.size() % 4 == 0;
+    const Eigen::Vector3d x =
+        inlier ? c.p : scene.source.points[(i * 7919) % scene.source.size()].cast<double>();
+    c.q = T.block<3, 3>(0, 0) * x + T.block<3, 1>(0, 3);
+    m.push_back(c);
+  }
+  Pipeline p(se3_config());
+  p.set_input(scene.source, scene.target);
+  p.set_ground_truth(scene.T_target_source);
+  p.set_matches(m);
+  p.run();
+  CHECK(p.source_landmarks().landmarks.empty());  // the matches replace the landmarks
+  REQUIRE(p.verifier() != nullptr);
+  CHECK(p.correspondences().items.size() == m.size());
+  REQUIRE(p.selected_level() >= 0);
+  CHECK(std::isfinite(p.verification().scores[static_cast<std::size_t>(p.selected_level())]));
+  CHECK(p.acceptance().verified);
+  CHECK(p.acceptance().accepted);
+  REQUIRE(p.selected_error());
+  CHECK(p.selected_error()->success);
+
+  SECTION("fused: landmark and matcher correspondences in one pyramid, ids apart") {
+    Config c = p.config();
+    c.correspondences.fuse_matches = true;
+    const auto before = runs(p);
+    p.set_config(c);
+    p.run();
+    CHECK(p.runs(Stage::landmarks) == before[0] + 1);
+    const CorrespondenceSet& set = p.correspondences();
+    CHECK(set.matches == m.size());
+    REQUIRE(set.items.size() > m.size());
+    const int source_landmarks = static_cast<int>(p.source_landmarks().landmarks.size());
+    for (const Correspondence& x : set.items) {
+      if (x.origin == CorrespondenceOrigin::matcher) {
+        CHECK(x.class_index == -1);
+        CHECK(x.source >= source_landmarks);
+      } else {
+        CHECK(x.class_index >= 0);
+        CHECK(x.source < source_landmarks);
+      }
+    }
+    CHECK(correspondence_class_name(set.items.back(), p.source_landmarks()) == "matcher");
+    REQUIRE(p.selected_error());
+    CHECK(p.selected_error()->success);
+  }
+  SECTION("cleared: the landmark correspondences again") {
+    p.set_matches({});
+    p.run();
+    CHECK_FALSE(p.source_landmarks().landmarks.empty());
+    CHECK(p.correspondences().matches == 0);
+    for (const Correspondence& x : p.correspondences().items)
+      CHECK(x.origin == CorrespondenceOrigin::landmark);
+  }
+}
+
+TEST_CASE("a pipeline without clouds or matches has no input") {
+  Pipeline p;
+  CHECK_FALSE(p.has_input());
+  CHECK_THROWS_AS(p.run(), InputError);
+}
+
+#ifdef PAGOR_GEDI_DIR
+TEST_CASE("gedi-dev: a learned matcher's correspondences of real KITTI pairs") {
+  const std::string dir = PAGOR_GEDI_DIR;
+  // Pair 03: 1131 correspondences, 17 % inliers; its selected pose is right with the defaults.
+  const CorrespondenceFile input = read_correspondence_file(dir + "/03.txt");
+  Pipeline p;
+  p.set_matches(input.items);
+  p.set_ground_truth(read_transform_file(dir + "/03.T.txt"));
+  p.run();
+  REQUIRE(p.selected_error());
+  CHECK(p.selected_error()->success);
+  for (const CliqueResult& c : p.cliques()) CHECK(is_clique(p.graph(), c.level, c.vertices));
+}
+#endif
