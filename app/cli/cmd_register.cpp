@@ -4,7 +4,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <nlohmann/json.hpp>
 
 #include "command.hpp"
 #include "pagor/errors.hpp"
@@ -158,11 +157,9 @@ int run_register(const Args& args) {
     std::printf("diagnosis: %s: %s\n", verdict_sentence(diagnosis->verdict),
                 diagnosis->explanation.c_str());
   if (args.has("json")) {
-    auto report = nlohmann::json::parse(
-        registration_report_json(pipeline, pair.source_name, pair.target_name));
-    report["diagnosis"] =
-        diagnosis ? nlohmann::json::parse(diagnosis_json(*diagnosis)) : nlohmann::json();
-    write_text_file(args.get("json"), report.dump(2) + "\n");
+    write_text_file(
+        args.get("json"),
+        registration_report_json(pipeline, pair.source_name, pair.target_name, diagnosis) + "\n");
     std::printf("wrote %s\n", args.get("json").c_str());
   }
   return 0;

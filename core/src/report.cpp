@@ -40,10 +40,8 @@ json refinement_json(const Pipeline& p) {
   return j;
 }
 
-}  // namespace
-
-std::string registration_report_json(const Pipeline& p, const std::string& source_name,
-                                     const std::string& target_name, int indent) {
+json report_object(const Pipeline& p, const std::string& source_name,
+                   const std::string& target_name) {
   json levels = json::array();
   const auto& g = p.graph();
   for (std::size_t l = 0; l < p.cliques().size(); ++l) {
@@ -132,8 +130,27 @@ std::string registration_report_json(const Pipeline& p, const std::string& sourc
       {"timings_ms", timings},
       {"warnings", p.warnings()},
       {"config", json::parse(config_to_json(p.config()))}};
-  // Paths are bytes, not always UTF-8: replace what JSON cannot hold rather than throw.
-  return out.dump(indent, ' ', false, nlohmann::json::error_handler_t::replace);
+  return out;
+}
+
+// Paths are bytes, not always UTF-8: replace what JSON cannot hold rather than throw.
+std::string dump(const json& report, int indent) {
+  return report.dump(indent, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
+}  // namespace
+
+std::string registration_report_json(const Pipeline& p, const std::string& source_name,
+                                     const std::string& target_name, int indent) {
+  return dump(report_object(p, source_name, target_name), indent);
+}
+
+std::string registration_report_json(const Pipeline& p, const std::string& source_name,
+                                     const std::string& target_name,
+                                     const std::optional<Diagnosis>& diagnosis, int indent) {
+  json out = report_object(p, source_name, target_name);
+  out["diagnosis"] = diagnosis ? json::parse(diagnosis_json(*diagnosis)) : json();
+  return dump(out, indent);
 }
 
 }  // namespace pagor

@@ -16,15 +16,24 @@
 ///   landmarks         source / target: {class name: count}
 ///   timings_ms        landmarks, correspondences, graph, clique, gnc, verification, evaluation,
 ///   total warnings[], config (the full configuration used)
+///   diagnosis         the stage at fault (diagnosis.hpp; null without ground truth), when given
 
+#include <optional>
 #include <string>
 
 #include "pagor/pipeline.hpp"
+#include "pagor/verify/diagnosis.hpp"
 
 namespace pagor {
 
 /// Serialises the state of a pipeline that has run. `source_name`/`target_name` describe inputs.
 std::string registration_report_json(const Pipeline& pipeline, const std::string& source_name,
                                      const std::string& target_name, int indent = 2);
+
+/// The same with `diagnosis` as the member `diagnosis` (null when nullopt): what `pagor register
+/// --json` writes and what the Python module's Result.to_json() returns.
+std::string registration_report_json(const Pipeline& pipeline, const std::string& source_name,
+                                     const std::string& target_name,
+                                     const std::optional<Diagnosis>& diagnosis, int indent = 2);
 
 }  // namespace pagor

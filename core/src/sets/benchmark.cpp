@@ -77,12 +77,12 @@ PairOutcome pair_outcome(const Pipeline& pipeline, const PairEntry& entry,
     o.stage_ms[static_cast<std::size_t>(i)] = pipeline.time_ms(static_cast<Stage>(i));
     o.total_ms += o.stage_ms[static_cast<std::size_t>(i)];
   }
-  auto j = nlohmann::json::parse(registration_report_json(pipeline, source_name, target_name, -1));
-  j.erase("config");
-  j["trim"] = to_string(pipeline.config().graph.trim);  // the unit of the levels' epsilon
   const std::optional<Diagnosis> diagnosis = diagnose(pipeline);
   if (diagnosis) o.diagnosis = verdict_name(diagnosis->verdict);
-  j["diagnosis"] = diagnosis ? nlohmann::json::parse(diagnosis_json(*diagnosis)) : nlohmann::json();
+  auto j = nlohmann::json::parse(
+      registration_report_json(pipeline, source_name, target_name, diagnosis, -1));
+  j.erase("config");
+  j["trim"] = to_string(pipeline.config().graph.trim);  // the unit of the levels' epsilon
   j["pair"] = entry.name;
   if (entry.negative) j["negative"] = true;
   o.report_json = j.dump();

@@ -1,0 +1,48 @@
+// Registers two clouds with pagor as a library: register_clouds SOURCE TARGET [SOURCE_LABELS
+// TARGET_LABELS] (.bin, .pcd, .ply; .label files), or the generated scene without arguments.
+// Prints the selected T_target_source and the verdict. Exit status 1 on bad input.
+
+// README: "Use it as a library" (C++)
+#include <cstdio>
+#include <pagor/pagor.hpp>
+
+/// Registers `source` to `target` (clouds from pagor::load_cloud(path, labels_path).cloud, or
+/// filled by you: points [m], optional labels) and prints the transform and the verdict.
+void register_clouds(pagor::PointCloud source, pagor::PointCloud target) {
+  pagor::Config config = pagor::default_config();  // or pagor::load_config("my.json")
+  pagor::Pipeline pipeline(config);
+  pipeline.set_input(std::move(source), std::move(target));
+  pipeline.run();  // throws pagor::ConfigError, pagor::InputError
+  if (const auto T = pipeline.selected_transform()) {
+    std::printf("T_target_source (level %d):\n", pipeline.selected_level());
+    for (int r = 0; r < 4; ++r)
+      std::printf("  %10.4f %10.4f %10.4f %10.4f\n", (*T)(r, 0), (*T)(r, 1), (*T)(r, 2),
+                  (*T)(r, 3));
+  }
+  const pagor::Acceptance& verdict = pipeline.acceptance();
+  if (verdict.accepted)
+    std::printf("accepted: %.0f %% of the source aligned\n", 100.0 * verdict.overlap);
+  else
+    std::printf("rejected: %s\n", verdict.reason.c_str());
+}
+// end of snippet
+
+int main(int argc, char** argv) {
+  if (argc != 1 && argc != 3 && argc != 5) {
+    std::fprintf(stderr, "usage: register_clouds [SOURCE TARGET [SOURCE_LABELS TARGET_LABELS]]\n");
+    return 2;
+  }
+  try {
+    if (argc == 1) {
+      pagor::SyntheticScene scene = pagor::make_synthetic_scene();
+      register_clouds(std::move(scene.source), std::move(scene.target));
+    } else {
+      register_clouds(pagor::load_cloud(argv[1], argc == 5 ? argv[3] : "").cloud,
+                      pagor::load_cloud(argv[2], argc == 5 ? argv[4] : "").cloud);
+    }
+  } catch (const pagor::Error& e) {  // unreadable files, invalid parameters
+    std::fprintf(stderr, "register_clouds: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}
