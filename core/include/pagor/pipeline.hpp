@@ -53,8 +53,11 @@ class Pipeline {
   /// `threads` is used by the stages that parallelise (graph construction, verification).
   explicit Pipeline(Config config = default_config(), int threads = 1);
 
-  /// Sets both clouds; every stage becomes stale.
-  void set_input(PointCloud source, PointCloud target);
+  /// Sets both clouds; every stage becomes stale. `label_scheme`, when given, is the numbering of
+  /// these clouds' labels in place of the configuration's (a manifest's `scheme=`; `none`: labels
+  /// not used); it stays with the input.
+  void set_input(PointCloud source, PointCloud target,
+                 std::optional<LabelScheme> label_scheme = std::nullopt);
   /// Sets or clears the ground truth; only the evaluation becomes stale.
   void set_ground_truth(std::optional<Transform> T_target_source);
   /// Validates and applies a configuration; the stages it affects become stale.
@@ -64,6 +67,11 @@ class Pipeline {
 
   const Config& config() const { return config_; }
   bool has_input() const { return has_input_; }
+  /// The label scheme the landmarks read the clouds with: the input's, else the configuration's
+  /// (`auto` resolves per cloud: see source_landmarks().labels).
+  const LabelScheme& label_scheme() const {
+    return input_scheme_ ? *input_scheme_ : config_.label_scheme;
+  }
   /// Whether a stage's output is out of date.
   bool stale(Stage stage) const { return stale_[static_cast<std::size_t>(stage)]; }
   /// Whether every stage is up to date.
@@ -114,6 +122,7 @@ class Pipeline {
   void mark_stale(Stage stage);
   void run_stage(Stage stage);
   void run_refinement();
+  void warn_if_numberings_differ();
   void judge_acceptance();
   /// Calls f(cloud, landmarks) for the source and the target, in parallel with threads > 1.
   template <class F>
@@ -123,6 +132,7 @@ class Pipeline {
   int threads_ = 1;
   bool has_input_ = false;
   PointCloud source_, target_;
+  std::optional<LabelScheme> input_scheme_;
   std::optional<Transform> ground_truth_;
 
   LandmarkSet source_landmarks_, target_landmarks_;
