@@ -20,6 +20,17 @@ json counts_by_class(const LandmarkSet& set) {
   return j;
 }
 
+// How a cloud's labels were read: the scheme in use, whether detected, and what they look like.
+json labels_json(const LabelReading& r) {
+  json j = {{"scheme", r.scheme.name},
+            {"automatic", r.automatic},
+            {"looks_like", r.detection.scheme},
+            {"margin_nats", r.detection.margin}};
+  if (!r.detection.reason.empty()) j["reason"] = r.detection.reason;
+  j["mismatch"] = r.mismatch.empty() ? json() : json(r.mismatch);
+  return j;
+}
+
 // What refinement did; the errors before it when the ground truth is known.
 json refinement_json(const Pipeline& p) {
   const RefinementResult& r = p.refinement();
@@ -114,6 +125,7 @@ std::string registration_report_json(const Pipeline& p, const std::string& sourc
                 {"overlap", p.acceptance().overlap},
                 {"inliers", p.acceptance().inliers},
                 {"margin", p.acceptance().margin},
+                {"sharpness", p.acceptance().sharpness},
                 {"reason", p.acceptance().reason}}},
               {"refinement", refinement_json(p)},
               {"ground_truth", gt},
@@ -125,6 +137,9 @@ std::string registration_report_json(const Pipeline& p, const std::string& sourc
               {"landmarks",
                {{"source", counts_by_class(p.source_landmarks())},
                 {"target", counts_by_class(p.target_landmarks())}}},
+              {"labels",
+               {{"source", labels_json(p.source_landmarks().labels)},
+                {"target", labels_json(p.target_landmarks().labels)}}},
               {"timings_ms", timings},
               {"warnings", p.warnings()},
               {"config", json::parse(config_to_json(p.config()))}};
