@@ -26,9 +26,7 @@ std::string pose_text(const Transform& T) {
 
 }  // namespace
 
-// "semantickitti-learning (detected)", "none (no labels)", "semantickitti-train (configured;
-// they look like ...)".
-static std::string labels_text(const LabelReading& r) {
+std::string labels_text(const LabelReading& r) {
   std::string s = r.scheme.name;
   if (r.scheme.ignores_labels())
     return s + " (" + (r.detection.reason.empty() ? "not used" : r.detection.reason) + ")";
