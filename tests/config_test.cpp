@@ -58,7 +58,13 @@ TEST_CASE("label schemes: built-in by name, or custom") {
   CHECK(raw.label_scheme.ids_of("car") == std::vector<std::uint32_t>{10});
   CHECK(raw.label_scheme.ids_of("building") == std::vector<std::uint32_t>{50});
   CHECK(raw.label_scheme.ids_of("pole") == std::vector<std::uint32_t>{80});
-  const Config train = default_config();
+  CHECK(default_config().label_scheme.automatic());  // detected per cloud
+  CHECK(default_config().label_scheme.find("pole") >= 0);
+  CHECK(parse_config(config_to_json(default_config())).label_scheme.automatic());
+  CHECK(parse_config(R"({"label_scheme": "none"})").label_scheme.ignores_labels());
+  CHECK_THROWS_WITH(parse_config(R"({"label_scheme": {"name": "auto", "classes": {"car": [1]}}})"),
+                    Catch::Contains("label_scheme.name") && Catch::Contains("built-in"));
+  const Config train = parse_config(R"({"label_scheme": "semantickitti-train"})");
   CHECK(train.label_scheme.ids_of("car") == std::vector<std::uint32_t>{0});
   CHECK(train.label_scheme.ids_of("pole") == std::vector<std::uint32_t>{17});
   CHECK(train.label_scheme.ids_of("trunk") == std::vector<std::uint32_t>{15});

@@ -71,6 +71,7 @@ int run_landmarks(const Args& args) {
       add_fallback_landmarks(loaded.cloud, config.label_scheme, config.landmarks, set);
   });
   for (const auto& w : set.warnings) warn(name + ": " + w);
+  std::printf("labels: %s\n", labels_text(set.labels).c_str());
   std::printf("\n%-14s %-8s %9s %11s %9s %9s %10s %10s\n", "class", "method", "points",
               "spacing [m]", "voxel [m]", "voxels", "landmarks", "time [ms]");
   for (const auto& c : set.classes)

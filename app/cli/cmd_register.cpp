@@ -25,9 +25,24 @@ std::string pose_text(const Transform& T) {
 
 }  // namespace
 
+std::string labels_text(const LabelReading& r) {
+  std::string s = r.scheme.name;
+  if (r.scheme.ignores_labels())
+    return s + " (" + (r.detection.reason.empty() ? "not used" : r.detection.reason) + ")";
+  if (r.automatic) {
+    char buf[64];
+    std::snprintf(buf, sizeof(buf), " (detected; %.1f nats a point over %s)", r.detection.margin,
+                  r.detection.runner_up.c_str());
+    return s + buf;
+  }
+  return s + (r.mismatch.empty() ? " (configured)" : " (configured; does not fit)");
+}
+
 void print_registration(const Pipeline& p) {
   const auto& sl = p.source_landmarks();
   const auto& tl = p.target_landmarks();
+  std::printf("labels: source %s, target %s\n", labels_text(sl.labels).c_str(),
+              labels_text(tl.labels).c_str());
   std::printf("landmarks:");
   for (std::size_t c = 0; c < sl.classes.size(); ++c)
     std::printf(" %s %zu/%zu", sl.classes[c].name.c_str(), sl.classes[c].landmarks,
@@ -78,10 +93,11 @@ void print_registration(const Pipeline& p) {
   const Acceptance& a = p.acceptance();
   if (p.selected_level() >= 0)
     std::printf(
-        "verdict: %s (aligned %.0f %% of points within %.2f m, %d inliers, D margin %.3f)%s%s\n",
+        "verdict: %s (aligned %.0f %% of points within %.2f m, %d inliers, D margin %.3f, "
+        "sharpness %.2f)%s%s\n",
         a.accepted ? "ACCEPTED" : "REJECTED", 100.0 * a.overlap,
-        p.config().acceptance.inlier_distance, a.inliers, a.margin, a.accepted ? "" : ": ",
-        a.reason.c_str());
+        p.config().acceptance.inlier_distance, a.inliers, a.margin, a.sharpness,
+        a.accepted ? "" : ": ", a.reason.c_str());
   if (gt) {
     if (const auto before = p.unrefined_error(); before && r.applied)
       std::printf(

@@ -65,6 +65,10 @@ void with_config_origin(const Args& args, const std::function<void()>& stage);
 /// Prints a warning line on stderr.
 void warn(const std::string& message);
 
+/// How a cloud's labels were read, in words: "semantickitti-learning (detected; 3.2 nats a point
+/// over semantickitti-train)", "none (no labels)", "semantickitti (configured; does not fit)".
+std::string labels_text(const LabelReading& reading);
+
 /// Writes text to a file, throwing InputError naming it on failure.
 void write_text_file(const std::string& path, const std::string& text);
 

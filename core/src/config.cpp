@@ -29,7 +29,7 @@ ClassParams default_structure_keypoints() {
 
 Config default_config() {
   Config c;
-  c.label_scheme = builtin_label_scheme("semantickitti-train");
+  c.label_scheme = builtin_label_scheme("auto");
   ClassParams car{"car", LandmarkMethod::cluster};
   car.voxel_size = 0.2;
   car.cluster_tolerance = 0.5;

@@ -106,6 +106,8 @@ void decode_scheme(const std::string& origin, const json& j, const std::string& 
     }
   }
   if (s.name.empty()) fail(origin, path + ".name", "missing");
+  if (s.automatic() || s.ignores_labels())
+    fail(origin, path + ".name", "'" + s.name + "' is a built-in scheme; give it by name alone");
   if (s.classes.empty()) fail(origin, path + ".classes", "missing or empty");
 }
 

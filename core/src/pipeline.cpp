@@ -54,9 +54,11 @@ bool Pipeline::up_to_date() const {
   return true;
 }
 
-void Pipeline::set_input(PointCloud source, PointCloud target) {
+void Pipeline::set_input(PointCloud source, PointCloud target,
+                         std::optional<LabelScheme> label_scheme) {
   source_ = std::move(source);
   target_ = std::move(target);
+  input_scheme_ = std::move(label_scheme);
   has_clouds_ = true;
   mark_stale(Stage::landmarks);
   mark_stale(Stage::verification_prep);
@@ -185,12 +187,13 @@ void Pipeline::run_stage(Stage stage) {
       target_landmarks_ = LandmarkSet{};
       if (!uses_landmarks()) break;
       const auto extract = [this](const PointCloud& cloud, LandmarkSet& out) {
-        out = extract_landmarks(cloud, config_.label_scheme, config_.landmarks);
+        out = extract_landmarks(cloud, label_scheme(), config_.landmarks);
       };
       const auto fallback = [this](const PointCloud& cloud, LandmarkSet& out) {
-        add_fallback_landmarks(cloud, config_.label_scheme, config_.landmarks, out);
+        add_fallback_landmarks(cloud, label_scheme(), config_.landmarks, out);
       };
       both_clouds(extract);
+      warn_if_numberings_differ();
       // Class-agnostic landmarks when the pair is unlabelled or class-poor; both clouds get
       // them, so the class lists stay aligned for matching.
       if (needs_fallback(source_, target_, source_landmarks_, target_landmarks_,
@@ -262,6 +265,18 @@ void Pipeline::run_correspondences() {
   correspondences_ = with_matches(matches_, std::move(landmark_ones),
                                   static_cast<int>(source_landmarks_.landmarks.size()),
                                   static_cast<int>(target_landmarks_.landmarks.size()));
+}
+
+// Clouds of one pair read in two numberings (each detected on its own) are worth a word: each is
+// read in its own, but the user's data may be mixed up.
+void Pipeline::warn_if_numberings_differ() {
+  const LabelReading& s = source_landmarks_.labels;
+  const LabelReading& t = target_landmarks_.labels;
+  if (s.scheme.ignores_labels() || t.scheme.ignores_labels() || s.scheme.name == t.scheme.name)
+    return;
+  target_landmarks_.warnings.push_back("labels in numbering '" + t.scheme.name +
+                                       "', the source's in '" + s.scheme.name +
+                                       "' (each cloud is read in its own)");
 }
 
 void Pipeline::run_refinement() {

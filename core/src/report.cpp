@@ -20,6 +20,17 @@ json counts_by_class(const LandmarkSet& set) {
   return j;
 }
 
+// How a cloud's labels were read: the scheme in use, whether detected, and what they look like.
+json labels_json(const LabelReading& r) {
+  json j = {{"scheme", r.scheme.name},
+            {"automatic", r.automatic},
+            {"looks_like", r.detection.scheme},
+            {"margin_nats", r.detection.margin}};
+  if (!r.detection.reason.empty()) j["reason"] = r.detection.reason;
+  j["mismatch"] = r.mismatch.empty() ? json() : json(r.mismatch);
+  return j;
+}
+
 // What refinement did; the errors before it when the ground truth is known.
 json refinement_json(const Pipeline& p) {
   const RefinementResult& r = p.refinement();
@@ -115,6 +126,7 @@ json report_object(const Pipeline& p, const std::string& source_name,
         {"overlap", p.acceptance().overlap},
         {"inliers", p.acceptance().inliers},
         {"margin", p.acceptance().margin},
+        {"sharpness", p.acceptance().sharpness},
         {"reason", p.acceptance().reason}}},
       {"refinement", refinement_json(p)},
       {"ground_truth", gt},
@@ -127,6 +139,9 @@ json report_object(const Pipeline& p, const std::string& source_name,
       {"landmarks",
        {{"source", counts_by_class(p.source_landmarks())},
         {"target", counts_by_class(p.target_landmarks())}}},
+      {"labels",
+       {{"source", labels_json(p.source_landmarks().labels)},
+        {"target", labels_json(p.target_landmarks().labels)}}},
       {"timings_ms", timings},
       {"warnings", p.warnings()},
       {"config", json::parse(config_to_json(p.config()))}};

@@ -42,7 +42,7 @@ TEST_CASE("clusters of a synthetic scene are its objects, at their known centroi
       CHECK(lm->point_count == lm->point_indices.size());
       for (int idx : lm->point_indices)
         REQUIRE(semantic_id(scene.source.labels[static_cast<std::size_t>(idx)]) ==
-                config.label_scheme.ids_of(name)[0]);
+                set.labels.scheme.ids_of(name)[0]);
     }
   }
   // Buildings become FPFH keypoints with a descriptor each.
@@ -66,7 +66,9 @@ TEST_CASE("a cluster's covariance describes its shape") {
 }
 
 TEST_CASE("a class with no points warns, a cloud without labels gives no semantic landmarks") {
-  const Config config = default_config();
+  Config config = default_config();
+  // One label value for every point says nothing of its numbering (auto reads it as unlabelled).
+  config.label_scheme = builtin_label_scheme("semantickitti-train");
   PointCloud cloud;
   for (int i = 0; i < 100; ++i) {
     cloud.points.emplace_back(0.05f * i, 0.0f, 0.0f);
@@ -106,15 +108,26 @@ TEST_CASE(
   cloud.labels.push_back(9999);
   const LandmarkSet set = extract_landmarks(cloud, config.label_scheme, config.landmarks);
   CHECK(set.landmarks.empty());
-  REQUIRE(set.warnings.size() == config.landmarks.classes.size() + 1);
-  CHECK(set.warnings[0].find("labels do not fit scheme 'semantickitti-train'") !=
+  REQUIRE(set.warnings.size() == 1);  // auto: not used, one warning for the cloud
+  CHECK(set.warnings[0].find("labels not used: every point carries label 9999") !=
+        std::string::npos);
+  CHECK(set.labels.scheme.name == "none");
+  // Configured by hand, the scheme is used and the warning says the labels do not fit it.
+  const LabelScheme train = builtin_label_scheme("semantickitti-train");
+  const LandmarkSet misread = extract_landmarks(cloud, train, config.landmarks);
+  REQUIRE(misread.warnings.size() == config.landmarks.classes.size() + 1);
+  CHECK(misread.warnings[0].find("labels do not fit scheme 'semantickitti-train'") !=
         std::string::npos);
 }
 
 TEST_CASE("labels numbered by another scheme are detected and that scheme is named") {
   const SyntheticScene scene = make_synthetic_scene();  // semantickitti-train labels
   const Config config = default_config();
-  CHECK(label_scheme_mismatch(scene.source, config.label_scheme, config.landmarks).empty());
+  const LabelScheme train = builtin_label_scheme("semantickitti-train");
+  const auto mismatch = [](const PointCloud& c, const LabelScheme& s) {
+    return read_labels(c, s).mismatch;
+  };
+  CHECK(mismatch(scene.source, train).empty());
 
   // A class-poor street in the training numbering, as a segmentation network labels it:
   // vegetation 14, terrain 16, road 8, sidewalk 10, building 12, a few trunks 15 and poles 17.
@@ -125,20 +138,20 @@ TEST_CASE("labels numbered by another scheme are detected and that scheme is nam
       street.points.emplace_back(0.1f * i, static_cast<float>(id), 0.0f);
       street.labels.push_back(id);
     }
-  CHECK(label_scheme_mismatch(street, config.label_scheme, config.landmarks).empty());
+  CHECK(mismatch(street, train).empty());
   PointCloud shifted = street;  // the learning map: the same classes, numbered from 1
   for (auto& l : shifted.labels) l = semantic_id(l) + 1;
-  const std::string m = label_scheme_mismatch(shifted, config.label_scheme, config.landmarks);
+  const std::string m = mismatch(shifted, train);
   CHECK_THAT(m, Catch::Contains("do not fit scheme 'semantickitti-train'") &&
                     Catch::Contains("look like 'semantickitti-learning'"));
   const LabelScheme learning = builtin_label_scheme("semantickitti-learning");
-  CHECK(label_scheme_mismatch(shifted, learning, config.landmarks).empty());
+  CHECK(mismatch(shifted, learning).empty());
   CHECK(learning.ids_of("car") == std::vector<std::uint32_t>{1});
   CHECK(learning.ids_of("traffic-sign") == std::vector<std::uint32_t>{19});
 
   PointCloud instances = scene.source;  // raw labels carry an instance id in the upper 16 bits
   for (auto& l : instances.labels) l |= 7u << 16;
-  CHECK(label_scheme_mismatch(instances, config.label_scheme, config.landmarks).empty());
+  CHECK(mismatch(instances, train).empty());
 }
 
 TEST_CASE("point spacing is estimated and class parameters follow it") {
@@ -179,7 +192,10 @@ TEST_CASE("an unlabelled cloud gets class-agnostic keypoints above the ground") 
   REQUIRE(set.classes.size() == config.landmarks.classes.size() + 1);
   CHECK(set.classes.back().name == "structure");
   CHECK(set.classes.back().landmarks > 100);
-  CHECK(set.classes.back().landmarks <= 1000u);  // the keypoint budget
+  // the keypoint budget of a cloud without labels
+  CHECK(set.classes.back().landmarks <=
+        static_cast<std::size_t>(config.landmarks.fallback.unlabelled_keypoints));
+  CHECK(set.classes.back().one_way_matches == config.landmarks.fallback.unlabelled_matches);
   const float ground = ground_layer_top(cloud.points, 0.0f);
   for (const auto& lm : set.landmarks) {
     CHECK(lm.class_index == static_cast<int>(set.classes.size()) - 1);
@@ -202,7 +218,7 @@ TEST_CASE("classes whose ids are large or shared pick the same points as small d
   const Config config = default_config();
   const LandmarkSet plain = extract_landmarks(scene.source, config.label_scheme, config.landmarks);
   // The same labels moved to ids above 4000 (the upper 16 bits, the instance, kept).
-  LabelScheme big = config.label_scheme;
+  LabelScheme big = builtin_label_scheme("semantickitti-train");
   for (auto& c : big.classes)
     for (auto& id : c.ids) id += 4000;
   PointCloud moved = scene.source;

@@ -59,9 +59,15 @@ TEST_CASE("a pairs manifest resolves paths against its directory and reads every
   write(dir.file("m.txt"),
         "# comment\n\n"
         "a.pcd b.pcd gt=gt.txt name=first source_labels=a.label\n"
-        "a.pcd b.pcd overlap=no   # trailing comment\n");
+        "a.pcd b.pcd overlap=no   # trailing comment\n"
+        "a.pcd b.pcd scheme=semantickitti\n"
+        "a.pcd b.pcd scheme=none\n");
   const PairSet set = read_pair_manifest(dir.file("m.txt"));
-  REQUIRE(set.pairs.size() == 2);
+  REQUIRE(set.pairs.size() == 4);
+  CHECK(set.pairs[0].source.label_scheme.empty());  // the configuration's
+  CHECK_FALSE(pair_label_scheme(set.pairs[0].source));
+  CHECK(pair_label_scheme(set.pairs[2].source)->ids_of("car") == std::vector<std::uint32_t>{10});
+  CHECK(pair_label_scheme(set.pairs[3].source)->ignores_labels());
   CHECK(set.pairs[0].name == "first");
   CHECK(set.pairs[0].source.kind == PairSource::Kind::files);
   CHECK(set.pairs[0].source.source == dir.file("a.pcd"));
@@ -84,6 +90,8 @@ TEST_CASE("manifest errors name the manifest and the line") {
   fails_with("\na.pcd missing.pcd\n", "m.txt:2: " + dir.file("missing.pcd") + " does not exist");
   fails_with("a.pcd a.pcd colour=red\n", "m.txt:1: unknown key 'colour'");
   fails_with("a.pcd a.pcd gt\n", "'gt' is not a key=value option");
+  fails_with("a.pcd a.pcd scheme=nuscenes\n",
+             "m.txt:1: scheme: unknown label scheme 'nuscenes' (built-in: auto, none,");
   fails_with("a.pcd a.pcd overlap=maybe\n", "overlap must be 'yes' or 'no'");
   fails_with("a.pcd a.pcd overlap=no gt=a.pcd\n", "cannot have a ground truth");
   fails_with("# nothing\n", "m.txt: no pairs");

@@ -1,9 +1,9 @@
 #include <catch2/catch.hpp>
 
-#include "pagor/verify/acceptance.hpp"
 #include "pagor/front/landmarks.hpp"
 #include "pagor/pipeline.hpp"
 #include "pagor/sets/synthetic.hpp"
+#include "pagor/verify/acceptance.hpp"
 
 using namespace pagor;
 
@@ -102,4 +102,40 @@ TEST_CASE("no valid candidate is never accepted") {
   const Acceptance a = judge_selection(verifier, candidates, none, {}, {}, {}, PoseModel::se3);
   CHECK_FALSE(a.accepted);
   CHECK(a.reason == "no valid candidate");
+}
+
+TEST_CASE("a pose that aligns only the ground of a sloped street is not trusted") {
+  // Two scans that share nothing but a street climbing at 8 % (boards on opposite sides of it):
+  // the identity lays the road onto itself and aligns nothing else. With a single height layer
+  // half of the climbing road counted as structure, and a scene of little structure was judged on
+  // all its points: either made such a pose look aligned.
+  PointCloud source, target;
+  const auto road = [](double x) { return static_cast<float>(0.08 * x - 1.7); };
+  for (double x = -40; x < 40; x += 0.3)
+    for (double y = -8; y < 8; y += 0.3) {
+      source.points.emplace_back(x, y, road(x));
+      target.points.emplace_back(x, y, road(x));
+    }
+  for (int k = 0; k < 12; ++k)  // 2 m boards: the source's along one side, the target's the other
+    for (double u = 0; u < 2.0; u += 0.1)
+      for (double z = 0.5; z < 3.0; z += 0.1) {
+        const double xs = -33.0 + 6.0 * k + u, xt = xs + 3.0;
+        source.points.emplace_back(xs, 7.0, road(xs) + z);
+        target.points.emplace_back(xt, -7.0, road(xt) + z);
+      }
+  const Verifier verifier(source, target, 0.3);
+  std::vector<PoseEstimate> candidates(1);
+  candidates[0].valid = true;
+  candidates[0].T_target_source = Transform::Identity();  // the road aligned onto itself
+  candidates[0].inliers = {0, 1, 2, 3, 4};
+  VerificationResult v;
+  v.selected = 0;
+  v.scores = {verifier.score(Transform::Identity(), 1.0, ScoreKind::truncated)};
+  const Config c = default_config();
+  const Acceptance a = judge_selection(verifier, candidates, v, c.verification, c.evaluation,
+                                       c.acceptance, c.gnc.model);
+  INFO("overlap " << a.overlap << ": " << a.reason);
+  CHECK(a.overlap < 0.05);  // of the boards, none aligned
+  CHECK_FALSE(a.accepted);
+  CHECK_THAT(a.reason, Catch::StartsWith("overlap"));
 }

@@ -7,9 +7,9 @@
 #include <nlohmann/json.hpp>
 #include <random>
 
-#include "pagor/verify/diagnosis.hpp"
 #include "pagor/pipeline.hpp"
 #include "pagor/sets/synthetic.hpp"
+#include "pagor/verify/diagnosis.hpp"
 #include "util/random_draw.hpp"
 
 using namespace pagor;
@@ -17,7 +17,7 @@ using namespace pagor;
 namespace {
 
 // semantickitti-train ids
-constexpr std::uint32_t kFence = 13, kTrunk = 15, kPole = 17;
+constexpr std::uint32_t kRoad = 8, kFence = 13, kTrunk = 15, kPole = 17;
 
 // A vertical cylinder (trunk, pole) or a vertical wall from `a` to `b`, in the world (= source)
 // frame, seen by the source and/or the target sensor.
@@ -64,9 +64,28 @@ Transform pose(double yaw_deg, double roll_deg, Eigen::Vector3d t) {
   return T;
 }
 
+// The scenes' configuration: their numbering named. A scene of trunks, poles and fences alone would
+// read as the learning map's vegetation, terrain and buildings (the likelier scan), so each cloud
+// also holds a patch of road, as a street scan does: 60 m x 60 m every 0.5 m, a kilometre away
+// from everything (the source's at x = +1000 m, the target's at -1000 m in its own frame), where no
+// candidate aligns it, so every candidate's D grows by the same amount.
+Config scene_config() {
+  Config c = default_config();
+  c.label_scheme = builtin_label_scheme("semantickitti-train");
+  return c;
+}
+
+void add_road_patch(double x0, PointCloud& cloud) {
+  for (int x = 0; x < 120; ++x)
+    for (int y = 0; y < 120; ++y) {
+      cloud.points.emplace_back(x0 + 0.5 * x, -30.0 + 0.5 * y, 0.0);
+      cloud.labels.push_back(kRoad);
+    }
+}
+
 // Runs the pipeline (semantic landmarks only) on the objects seen by each sensor.
 std::optional<Diagnosis> run(const std::vector<Object>& objects, const Transform& T_gt,
-                             Config config = default_config()) {
+                             Config config = scene_config()) {
   config.landmarks.fallback.mode = FallbackMode::never;
   std::mt19937 rng_s(11), rng_t(23);
   PointCloud source, target;
@@ -74,6 +93,8 @@ std::optional<Diagnosis> run(const std::vector<Object>& objects, const Transform
     if (o.in_source) sample(o, rng_s, Transform::Identity(), source);
     if (o.in_target) sample(o, rng_t, T_gt, target);
   }
+  add_road_patch(1000.0, source);
+  add_road_patch(-1060.0, target);
   Pipeline p(config);
   p.set_input(std::move(source), std::move(target));
   p.set_ground_truth(T_gt);
@@ -149,7 +170,7 @@ TEST_CASE("diagnosis: clouds that share no landmark have too few true correspond
 }
 
 TEST_CASE("diagnosis: thresholds far below the landmark noise are not consistent at any level") {
-  Config config = default_config();
+  Config config = scene_config();
   config.graph.thresholds = {1e-7, 1e-6};
   config.gnc.model = PoseModel::se3;
   const auto d = run(shared_scene(3), pose(30, 0, {5, 2, 0}), config);
@@ -240,10 +261,32 @@ TEST_CASE("diagnosis: true correspondences sharing a landmark count once in the 
   CHECK(j["verification"]["gt_score_D"].is_null());
 }
 
+TEST_CASE("diagnosis: labels in another numbering than the scheme set are the cause, named") {
+  Config raw = scene_config();
+  raw.label_scheme = builtin_label_scheme("semantickitti");  // the scene is in the training ids
+  const auto d = run(shared_scene(3), pose(30, 0, {5, 2, 0}), raw);
+  REQUIRE(d);
+  CHECK(d->verdict == DiagnosisVerdict::label_scheme);
+  CHECK(d->labels_look_like == "semantickitti-train");
+  CHECK_THAT(d->explanation, Catch::StartsWith("source labels do not fit scheme 'semantickitti'") &&
+                                 Catch::Contains("look like 'semantickitti-train'"));
+  const auto j = nlohmann::json::parse(diagnosis_json(*d));
+  CHECK(j["verdict"] == "label-scheme");
+  CHECK(j["labels_look_like"] == "semantickitti-train");
+  // Read in their own numbering (set, or detected), the same scene succeeds.
+  const auto right = run(shared_scene(3), pose(30, 0, {5, 2, 0}));
+  REQUIRE(right);
+  CHECK(right->verdict == DiagnosisVerdict::success);
+  const auto automatic = run(shared_scene(3), pose(30, 0, {5, 2, 0}), default_config());
+  CHECK(automatic->verdict == DiagnosisVerdict::success);
+  CHECK(nlohmann::json::parse(diagnosis_json(*automatic))["labels_look_like"].is_null());
+}
+
 TEST_CASE("diagnosis: every verdict has a name and a sentence") {
-  for (auto v : {DiagnosisVerdict::success, DiagnosisVerdict::too_few_true,
-                 DiagnosisVerdict::not_consistent, DiagnosisVerdict::clique_missed,
-                 DiagnosisVerdict::pose_wrong, DiagnosisVerdict::verification_wrong}) {
+  for (auto v :
+       {DiagnosisVerdict::success, DiagnosisVerdict::label_scheme, DiagnosisVerdict::too_few_true,
+        DiagnosisVerdict::not_consistent, DiagnosisVerdict::clique_missed,
+        DiagnosisVerdict::pose_wrong, DiagnosisVerdict::verification_wrong}) {
     CHECK(std::string(verdict_name(v)).size() > 3);
     CHECK(std::string(verdict_sentence(v)).size() > 10);
   }

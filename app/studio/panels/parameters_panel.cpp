@@ -49,8 +49,9 @@ bool label_scheme_combo(Config& c) {
   bool changed = false;
   if (ui::begin_combo(
           "labels", c.label_scheme.name.c_str(),
-          "Numbering of the clouds' labels: raw SemanticKITTI ids, the 0-based training "
-          "numbering, or the learning map that segmentation networks output.")) {
+          "Numbering of the clouds' labels: auto (detected per cloud), none (labels not used), "
+          "raw SemanticKITTI ids, the 0-based training numbering, or the learning map that "
+          "segmentation networks output.")) {
     for (const std::string& name : builtin_label_scheme_names()) {
       const LabelScheme scheme = builtin_label_scheme(name);
       const bool fits = std::all_of(c.landmarks.classes.begin(), c.landmarks.classes.end(),

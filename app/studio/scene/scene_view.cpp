@@ -4,11 +4,12 @@
 #include <cstdint>
 #include <cstring>
 #include <nlohmann/json.hpp>
+#include <tuple>
 #include <unordered_map>
 
-#include "scene/diagnosis_overlay.hpp"
 #include "render/resources.hpp"
 #include "render/shader_program.hpp"
+#include "scene/diagnosis_overlay.hpp"
 
 namespace pagor::studio {
 namespace {
@@ -119,13 +120,18 @@ void SceneView::upload(Buffer& b, const std::vector<float>& v) {
 
 void SceneView::update(const Snapshot& s, const ViewState& view, const Transform& pose) {
   // Dense clouds: only when the data or the label scheme changes.
-  const std::string scheme = s.config.label_scheme.name + "/" + s.config.label_scheme.class_list();
+  // Each cloud in the scheme its labels were read with (`auto`: the one detected for it).
+  const LabelScheme& source_scheme = s.source_landmarks.labels.scheme;
+  const LabelScheme& target_scheme = s.target_landmarks.labels.scheme;
+  const std::string scheme = source_scheme.name + "/" + source_scheme.class_list() + "|" +
+                             target_scheme.name + "/" + target_scheme.class_list();
   if (s.data_generation != cloud_generation_ || scheme != cloud_scheme_) {
-    for (const auto& [cloud, buffer] :
-         {std::pair{s.source.get(), &source_}, std::pair{s.target.get(), &target_}}) {
+    for (const auto& [cloud, buffer, read_as] :
+         {std::tuple{s.source.get(), &source_, &source_scheme},
+          std::tuple{s.target.get(), &target_, &target_scheme}}) {
       std::vector<float> v;
       if (cloud) {
-        const std::vector<Rgba> colors = class_colors_.per_point(*cloud, s.config.label_scheme);
+        const std::vector<Rgba> colors = class_colors_.per_point(*cloud, *read_as);
         v.reserve(cloud->size() * kFloatsPerVertex);
         for (std::size_t i = 0; i < cloud->size(); ++i) push(v, cloud->points[i], colors[i]);
       }

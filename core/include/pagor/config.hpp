@@ -27,7 +27,7 @@ namespace pagor {
 
 /// The whole configuration.
 struct Config {
-  LabelScheme label_scheme;  ///< default: semantickitti-train
+  LabelScheme label_scheme;  ///< default: auto (detected per cloud)
   LandmarkParams landmarks;
   CorrespondenceParams correspondences;
   GraphParams graph;

@@ -59,8 +59,11 @@ class Pipeline {
   /// `threads` is used by the stages that parallelise (graph construction, verification).
   explicit Pipeline(Config config = default_config(), int threads = 1);
 
-  /// Sets both clouds; every stage becomes stale.
-  void set_input(PointCloud source, PointCloud target);
+  /// Sets both clouds; every stage becomes stale. `label_scheme`, when given, is the numbering of
+  /// these clouds' labels in place of the configuration's (a manifest's `scheme=`; `none`: labels
+  /// not used); it stays with the input.
+  void set_input(PointCloud source, PointCloud target,
+                 std::optional<LabelScheme> label_scheme = std::nullopt);
   /// Sets a matcher's correspondences (source point p, target point q [m], weight in `score`), or
   /// clears them with an empty vector. The pipeline tags each CorrespondenceOrigin::matcher with
   /// class_index -1; a negative source or target id becomes the correspondence's position (ids
@@ -81,6 +84,11 @@ class Pipeline {
   bool has_clouds() const { return has_clouds_; }
   /// The matcher's correspondences as given to set_matches (empty: none).
   const std::vector<Correspondence>& matches() const { return matches_; }
+  /// The label scheme the landmarks read the clouds with: the input's, else the configuration's
+  /// (`auto` resolves per cloud: see source_landmarks().labels).
+  const LabelScheme& label_scheme() const {
+    return input_scheme_ ? *input_scheme_ : config_.label_scheme;
+  }
   /// Whether a stage's output is out of date.
   bool stale(Stage stage) const { return stale_[static_cast<std::size_t>(stage)]; }
   /// Whether every stage is up to date.
@@ -136,6 +144,7 @@ class Pipeline {
   void run_correspondences();
   /// Whether the landmarks take part: clouds, and no matches or fused ones.
   bool uses_landmarks() const;
+  void warn_if_numberings_differ();
   void judge_acceptance();
   /// Calls f(cloud, landmarks) for the source and the target, in parallel with threads > 1.
   template <class F>
@@ -146,6 +155,7 @@ class Pipeline {
   bool has_clouds_ = false;
   PointCloud source_, target_;
   std::vector<Correspondence> matches_;
+  std::optional<LabelScheme> input_scheme_;
   std::optional<Transform> ground_truth_;
 
   LandmarkSet source_landmarks_, target_landmarks_;

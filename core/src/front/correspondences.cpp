@@ -70,6 +70,7 @@ std::vector<Padded, Eigen::aligned_allocator<Padded>> padded(const LandmarkSet& 
 // distances (identical descriptors) the first wins, where FLANN's tree order decides.
 struct NearestBothWays {
   std::vector<std::pair<int, float>> forward, backward;
+  std::vector<float> forward_second;  ///< each source's second-nearest squared distance
 };
 NearestBothWays nearest_both_ways(const LandmarkSet& s, const std::vector<int>& si,
                                   const LandmarkSet& t, const std::vector<int>& ti) {
@@ -77,11 +78,18 @@ NearestBothWays nearest_both_ways(const LandmarkSet& s, const std::vector<int>& 
   NearestBothWays out;
   out.forward.assign(a.size(), {-1, HUGE_VALF});
   out.backward.assign(b.size(), {-1, HUGE_VALF});
+  out.forward_second.assign(a.size(), HUGE_VALF);
   for (std::size_t i = 0; i < a.size(); ++i) {
     auto& f = out.forward[i];
+    float& second = out.forward_second[i];
     for (std::size_t j = 0; j < b.size(); ++j) {
       const float d2 = (a[i] - b[j]).squaredNorm();
-      if (d2 < f.second) f = {static_cast<int>(j), d2};
+      if (d2 < f.second) {
+        second = f.second;
+        f = {static_cast<int>(j), d2};
+      } else if (d2 < second) {
+        second = d2;
+      }
       auto& g = out.backward[j];
       if (d2 < g.second) g = {static_cast<int>(i), d2};
     }
@@ -90,16 +98,26 @@ NearestBothWays nearest_both_ways(const LandmarkSet& s, const std::vector<int>& 
 }
 
 void fpfh_matches(const LandmarkSet& s, const LandmarkSet& t, const std::vector<int>& si,
-                  const std::vector<int>& ti, const CorrespondenceParams& params,
+                  const std::vector<int>& ti, CorrespondenceParams params,
                   std::vector<Correspondence>& out) {
   if (si.empty() || ti.empty()) return;
-  const auto [forward, backward] = nearest_both_ways(s, si, t, ti);
+  // A cloud without labels asks for one-way matches of its class-agnostic keypoints.
+  const auto c = static_cast<std::size_t>(s.landmarks[static_cast<std::size_t>(si[0])].class_index);
+  const int one_way = std::max(c < s.classes.size() ? s.classes[c].one_way_matches : 0,
+                               c < t.classes.size() ? t.classes[c].one_way_matches : 0);
+  if (one_way > 0) {
+    params.fpfh_mutual = false;
+    params.fpfh_max_per_class = one_way;
+  }
+  const auto [forward, backward, second] = nearest_both_ways(s, si, t, ti);
+  const double ratio_sq = params.fpfh_ratio * params.fpfh_ratio;
   std::vector<std::pair<float, std::pair<int, int>>> matches;  // (distance, (source k, target k))
   for (std::size_t a = 0; a < forward.size(); ++a) {
     const int b = forward[a].first;
     if (b < 0) continue;
     if (params.fpfh_mutual && backward[static_cast<std::size_t>(b)].first != static_cast<int>(a))
       continue;
+    if (params.fpfh_ratio < 1.0 && forward[a].second > ratio_sq * second[a]) continue;
     matches.push_back({std::sqrt(forward[a].second), {static_cast<int>(a), b}});
   }
   std::sort(matches.begin(), matches.end());

@@ -24,11 +24,25 @@ const std::vector<std::uint32_t>& LabelScheme::ids_of(const std::string& class_n
   return classes[static_cast<std::size_t>(i)].ids;
 }
 
-std::vector<std::string> builtin_label_scheme_names() {
+std::vector<std::string> label_numbering_names() {
   return {"semantickitti", "semantickitti-train", "semantickitti-learning", "indoor"};
 }
 
+std::vector<std::string> builtin_label_scheme_names() {
+  std::vector<std::string> names{"auto", "none"};
+  for (const auto& n : label_numbering_names()) names.push_back(n);
+  return names;
+}
+
 LabelScheme builtin_label_scheme(const std::string& name) {
+  if (name == "auto" || name == "none") {
+    // Every class name of the numberings, so that any landmark class of theirs is valid.
+    LabelScheme s{name, {}};
+    for (const auto& numbering : label_numbering_names())
+      for (const auto& c : builtin_label_scheme(numbering).classes)
+        if (s.find(c.name) < 0) s.classes.push_back({c.name, {}});
+    return s;
+  }
   if (name == "semantickitti") {
     return {name,
             {{"car", {10}},

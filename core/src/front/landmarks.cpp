@@ -5,12 +5,11 @@
 #include <cmath>
 #include <map>
 #include <numeric>
-#include <unordered_set>
 
+#include "front/point_features.hpp"
 #include "pagor/errors.hpp"
 #include "pagor/util/voxel_grid.hpp"
 #include "pagor/util/work_budget.hpp"
-#include "front/point_features.hpp"
 
 namespace pagor {
 namespace {
@@ -79,8 +78,7 @@ struct VoxelMembers {
 VoxelMembers members_of_voxels(const VoxelDownsample& ds, const std::vector<int>& subset) {
   VoxelMembers m;
   m.start.assign(ds.points.size() + 1, 0);
-  for (std::size_t v = 0; v < ds.points.size(); ++v)
-    m.start[v + 1] = m.start[v] + ds.counts[v];
+  for (std::size_t v = 0; v < ds.points.size(); ++v) m.start[v + 1] = m.start[v] + ds.counts[v];
   m.point.resize(subset.size());
   std::vector<int> fill(m.start.begin(), m.start.end() - 1);
   for (std::size_t i = 0; i < subset.size(); ++i)
@@ -289,81 +287,27 @@ ClassParams params_for_spacing(const ClassParams& p, double spacing, const Landm
   return q;
 }
 
-std::string label_scheme_mismatch(const PointCloud& cloud, const LabelScheme& scheme,
-                                  const LandmarkParams& params) {
-  if (!cloud.has_labels() || cloud.empty()) return {};
-  std::vector<std::size_t> counts(1024, 0);  // the usual ids; others go to the map directly
-  std::map<std::uint32_t, std::size_t> histogram;
-  for (std::uint32_t l : cloud.labels) {
-    const std::uint32_t id = semantic_id(l);
-    if (id < counts.size())
-      ++counts[id];
-    else
-      ++histogram[id];
-  }
-  for (std::uint32_t id = 0; id < counts.size(); ++id)
-    if (counts[id]) histogram[id] = counts[id];
-  // Fraction of the points whose ids belong to the classes `wanted` accepts.
-  const auto share = [&](const LabelScheme& s, const auto& wanted) {
-    std::unordered_set<std::uint32_t> ids;
-    for (const auto& c : s.classes)
-      if (wanted(c.name)) ids.insert(c.ids.begin(), c.ids.end());
-    std::size_t n = 0;
-    for (const auto& [id, count] : histogram) n += ids.count(id) ? count : 0;
-    return static_cast<double>(n) / static_cast<double>(cloud.size());
-  };
-  const auto any = [](const std::string&) { return true; };
-  const auto landmark = [&](const std::string& name) {
-    return std::any_of(params.classes.begin(), params.classes.end(),
-                       [&](const ClassParams& p) { return p.name == name; });
-  };
-  // A driving scan is mostly ground, vegetation and buildings; a scheme that reads most points
-  // as trunks or poles (a numbering shifted by one does that) does not fit.
-  static const std::unordered_set<std::string> kBulk = {
-      "road", "parking", "sidewalk", "other-ground", "building", "fence", "vegetation", "terrain"};
-  const auto bulk = [&](const std::string& name) { return kBulk.count(name) > 0; };
-  const auto bulk_classes = [&](const LabelScheme& s) {
-    return std::count_if(s.classes.begin(), s.classes.end(),
-                         [&](const SemanticClass& c) { return bulk(c.name); });
-  };
-  const double known = share(scheme, any), in_landmarks = share(scheme, landmark);
-  const bool judge_bulk = bulk_classes(scheme) >= 3;
-  const double bulk_share = judge_bulk ? share(scheme, bulk) : 0.0;
-
-  std::string best;
-  double best_known = known, best_bulk = bulk_share;
-  for (const auto& name : builtin_label_scheme_names()) {
-    if (name == scheme.name) continue;
-    const LabelScheme b = builtin_label_scheme(name);
-    const double k = share(b, any), g = bulk_classes(b) >= 3 ? share(b, bulk) : 0.0;
-    if (judge_bulk ? (g > best_bulk + 0.3 && k >= 0.5) : (k > best_known + 0.1))
-      best = name, best_known = k, best_bulk = g;
-  }
-  if (in_landmarks > 0 && known >= 0.5 && best.empty()) return {};
-  char buf[240];
-  std::snprintf(buf, sizeof(buf),
-                "labels do not fit scheme '%s': %.0f %% of points carry its ids, %.1f %% those of "
-                "landmark classes, %.0f %% those of ground, vegetation and buildings",
-                scheme.name.c_str(), 100 * known, 100 * in_landmarks, 100 * bulk_share);
-  std::string msg = buf;
-  if (!best.empty()) msg += "; they look like '" + best + "' (set label_scheme)";
-  return msg;
-}
-
 LandmarkSet extract_landmarks(const PointCloud& cloud, const LabelScheme& scheme,
                               const LandmarkParams& params) {
   const auto t_all = Clock::now();
   LandmarkSet out;
+  out.labels = read_labels(cloud, scheme);
+  const bool labelled = !out.labels.scheme.ignores_labels();
   if (!cloud.has_labels())
     out.warnings.push_back("no semantic labels: no semantic landmarks");
-  else if (const std::string m = label_scheme_mismatch(cloud, scheme, params); !m.empty())
-    out.warnings.push_back(m);
+  else if (scheme.ignores_labels())
+    out.warnings.push_back("labels not used (label_scheme none): no semantic landmarks");
+  else if (!labelled)
+    out.warnings.push_back("labels not used: " + out.labels.detection.reason +
+                           ": no semantic landmarks");
+  else if (!out.labels.mismatch.empty())
+    out.warnings.push_back(out.labels.mismatch);
   const std::vector<std::vector<int>> subsets =
-      cloud.has_labels() ? points_of_classes(cloud, scheme, params)
-                         : std::vector<std::vector<int>>(params.classes.size());
+      labelled ? points_of_classes(cloud, out.labels.scheme, params)
+               : std::vector<std::vector<int>>(params.classes.size());
   for (std::size_t ci = 0; ci < params.classes.size(); ++ci)
     extract_class(cloud, subsets[ci], static_cast<int>(ci), params.classes[ci], params, out);
-  if (!cloud.has_labels())  // one warning for the cloud, not one per class
+  if (!labelled)  // one warning for the cloud, not one per class
     out.warnings.erase(out.warnings.begin() + 1, out.warnings.end());
   out.time_ms = ms_since(t_all);
   return out;
@@ -382,28 +326,38 @@ bool needs_fallback(const PointCloud& source, const PointCloud& target, const La
   const auto few = [&](const LandmarkSet& set) {
     return cluster_landmark_count(set) < static_cast<std::size_t>(params.class_poor_below);
   };
-  return !source.has_labels() || !target.has_labels() || few(s) || few(t);
+  const auto unlabelled = [](const PointCloud& cloud, const LandmarkSet& set) {
+    return !cloud.has_labels() || set.labels.scheme.ignores_labels();
+  };
+  return unlabelled(source, s) || unlabelled(target, t) || few(s) || few(t);
 }
 
 void add_fallback_landmarks(const PointCloud& cloud, const LabelScheme& scheme,
                             const LandmarkParams& params, LandmarkSet& set) {
   const auto t0 = Clock::now();
   const FallbackParams& fb = params.fallback;
+  const LabelScheme used =
+      set.labels.scheme.name.empty() ? read_labels(cloud, scheme).scheme : set.labels.scheme;
   std::vector<int> subset;
-  if (cloud.has_labels()) {
+  if (cloud.has_labels() && !used.ignores_labels()) {
     std::vector<char> ground(1u << 16, 0);  // over the 16-bit semantic ids
     for (const auto& name : fb.ground_classes)
-      if (scheme.find(name) >= 0)
-        for (std::uint32_t id : scheme.ids_of(name))
+      if (used.find(name) >= 0)
+        for (std::uint32_t id : used.ids_of(name))
           if (id < ground.size()) ground[id] = 1;
     for (std::size_t i = 0; i < cloud.size(); ++i)
       if (!ground[semantic_id(cloud.labels[i])]) subset.push_back(static_cast<int>(i));
   } else if (!cloud.empty()) {
-    const float top = ground_layer_top(cloud.points, static_cast<float>(fb.ground_height));
+    const std::vector<char> ground =
+        ground_points(cloud.points, {fb.ground_height, fb.ground_cell, fb.ground_slope});
     for (std::size_t i = 0; i < cloud.size(); ++i)
-      if (cloud.points[i].z() > top) subset.push_back(static_cast<int>(i));
+      if (!ground[i]) subset.push_back(static_cast<int>(i));
   }
-  extract_class(cloud, subset, static_cast<int>(set.classes.size()), fb.keypoints, params, set);
+  ClassParams keypoints = fb.keypoints;
+  const bool unlabelled = !cloud.has_labels() || used.ignores_labels();
+  if (unlabelled) keypoints.max_keypoints = fb.unlabelled_keypoints;
+  extract_class(cloud, subset, static_cast<int>(set.classes.size()), keypoints, params, set);
+  if (unlabelled) set.classes.back().one_way_matches = fb.unlabelled_matches;
   set.time_ms += ms_since(t0);
 }
 

@@ -42,7 +42,8 @@ PairOutcome run_pair(Pipeline& pipeline, const PairEntry& entry, const std::atom
   }
   o.loaded = true;
   o.has_ground_truth = pair.T_target_source_gt.has_value();
-  pipeline.set_input(std::move(pair.source.cloud), std::move(pair.target.cloud));
+  pipeline.set_input(std::move(pair.source.cloud), std::move(pair.target.cloud),
+                     pair_label_scheme(entry.source));
   pipeline.set_ground_truth(pair.T_target_source_gt);
   pipeline.run(ProgressFn{}, cancel);
   return pair_outcome(pipeline, entry, pair.source_name, pair.target_name);

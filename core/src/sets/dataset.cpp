@@ -58,6 +58,11 @@ LoadedPair load_pair(const PairSource& src, const IndoorParams& indoor) {
   return out;
 }
 
+std::optional<LabelScheme> pair_label_scheme(const PairSource& src) {
+  if (src.label_scheme.empty()) return std::nullopt;
+  return builtin_label_scheme(src.label_scheme);
+}
+
 std::string describe(const PairSource& src) {
   switch (src.kind) {
     case PairSource::Kind::files:

@@ -111,7 +111,7 @@ PairSet read_pair_manifest(const std::string& path) {
         words[1].find('=') != std::string::npos)
       throw InputError(where +
                        ": expected 'SOURCE TARGET [gt=FILE] [source_labels=FILE] "
-                       "[target_labels=FILE] [name=TEXT] [overlap=no]'");
+                       "[target_labels=FILE] [scheme=NAME] [name=TEXT] [overlap=no]'");
     PairEntry e;
     e.origin = where;
     e.name = std::to_string(line_no);
@@ -131,13 +131,20 @@ PairSet read_pair_manifest(const std::string& path) {
         e.source.target_labels = resolve(path, value);
       else if (key == "name")
         e.name = value;
-      else if (key == "overlap") {
+      else if (key == "scheme") {
+        try {
+          builtin_label_scheme(value);
+        } catch (const ConfigError& error) {
+          throw InputError(where + ": scheme: " + error.what());
+        }
+        e.source.label_scheme = value;
+      } else if (key == "overlap") {
         if (value != "no" && value != "yes")
           throw InputError(where + ": overlap must be 'yes' or 'no', not '" + value + "'");
         e.negative = value == "no";
       } else
         throw InputError(where + ": unknown key '" + key +
-                         "' (known: gt, source_labels, target_labels, name, overlap)");
+                         "' (known: gt, source_labels, target_labels, scheme, name, overlap)");
     }
     if (e.negative && !e.source.ground_truth.empty())
       throw InputError(where + ": a pair with overlap=no cannot have a ground truth (gt=)");

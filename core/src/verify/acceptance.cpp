@@ -3,7 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "pagor/front/landmarks.hpp"
+#include "pagor/front/ground.hpp"
 #include "pagor/verify/evaluation.hpp"
 
 namespace pagor {
@@ -37,18 +37,39 @@ Acceptance judge_selection(const Verifier& verifier, const std::vector<PoseEstim
   std::vector<float> searched;
   if (!reuse) searched = verifier.distances(T, static_cast<float>(params.inlier_distance));
   const std::vector<float>& d = reuse ? verification.selected_distances : searched;
-  const float ground = ground_layer_top(points, static_cast<float>(params.ground_thickness));
-  std::size_t structure = 0, close = 0, close_all = 0;
-  for (std::size_t i = 0; i < d.size(); ++i) {
-    const bool aligned = d[i] <= params.inlier_distance;
-    close_all += aligned;
-    if (points[i].z() > ground) ++structure, close += aligned;
+  // The ground follows the terrain (ground.hpp): on a sloped street a height layer would leave the
+  // uphill road as structure, which a pose sliding along the street aligns.
+  GroundParams ground_params;
+  ground_params.thickness = params.ground_thickness;
+  const std::vector<char> ground = ground_points(points, ground_params);
+  std::size_t structure = 0;
+  for (char g : ground) structure += !g;
+  // A flat cloud (a floor projection: everything within the ground layer) is judged on all its
+  // points. A scan with little structure is still judged on it: judged on all its points, a street
+  // that is mostly road was "aligned" by any pose that lays road on road.
+  const bool use_all = structure < std::max<std::size_t>(10, d.size() / 100);
+  const auto overlap_of = [&](const std::vector<float>& dist) {
+    std::size_t close = 0, counted = 0;
+    for (std::size_t i = 0; i < dist.size(); ++i) {
+      if (!use_all && ground[i]) continue;
+      ++counted;
+      close += dist[i] <= params.inlier_distance;
+    }
+    return counted ? static_cast<double>(close) / static_cast<double>(counted) : 0.0;
+  };
+  a.overlap = overlap_of(d);
+  // The same pose moved by the success criterion's translation along each horizontal axis: a true
+  // alignment loses most of its overlap, one that aligns only what slides along itself (a facade,
+  // a hedge, the road) or what matches anything (vegetation) keeps it.
+  double shifted = 0.0;
+  for (const Eigen::Vector2d step : {Eigen::Vector2d(1, 0), Eigen::Vector2d(-1, 0),
+                                     Eigen::Vector2d(0, 1), Eigen::Vector2d(0, -1)}) {
+    Transform moved = T;
+    moved.block<2, 1>(0, 3) += distinct.max_translation_error * step;
+    shifted = std::max(
+        shifted, overlap_of(verifier.distances(moved, static_cast<float>(params.inlier_distance))));
   }
-  // A scene that is all ground (or not a ground vehicle's) is judged on all its points.
-  const bool use_all = structure < std::max<std::size_t>(10, d.size() / 10);
-  a.overlap = d.empty() ? 0.0
-              : use_all ? static_cast<double>(close_all) / static_cast<double>(d.size())
-                        : static_cast<double>(close) / static_cast<double>(structure);
+  a.sharpness = a.overlap > 0 ? 1.0 - shifted / a.overlap : 0.0;
   a.inliers = static_cast<int>(candidates[sel].inliers.size());
 
   // Margin to the best candidate that is a different answer, not the same pose found twice.
@@ -66,6 +87,8 @@ Acceptance judge_selection(const Verifier& verifier, const std::vector<PoseEstim
     a.reason = below("overlap", a.overlap, params.min_overlap);
   else if (a.inliers < params.min_inliers)
     a.reason = below("inliers", a.inliers, params.min_inliers);
+  else if (a.sharpness < params.min_sharpness)
+    a.reason = below("sharpness", a.sharpness, params.min_sharpness);
   else if (a.margin < params.min_margin)
     a.reason = below("D margin", a.margin, params.min_margin);
   else if (a.inliers <= minimal_sample_size(model) && a.overlap < params.minimal_support_overlap)

@@ -147,8 +147,23 @@ std::string format(const char* fmt, Args... args) {
   return buf;
 }
 
+// Labels that do not fit the scheme in use come before every stage: the landmarks were made of
+// the wrong points. True (with the verdict set) when a cloud's do not.
+bool judge_labels(const DiagnosisInput& in, Diagnosis& d) {
+  for (const auto& [side, set] :
+       {std::pair{"source", in.source_landmarks}, std::pair{"target", in.target_landmarks}}) {
+    const LabelReading& r = set->labels;
+    if (r.mismatch.empty()) continue;
+    d.verdict = DiagnosisVerdict::label_scheme;
+    d.labels_look_like = r.detection.scheme;
+    d.explanation = std::string(side) + " " + r.mismatch;
+    return true;
+  }
+  return false;
+}
+
 // The first stage at fault, in pipeline order, and the numbers behind it.
-void judge(const DiagnosisParams& params, Diagnosis& d) {
+void judge(const DiagnosisInput& in, const DiagnosisParams& params, Diagnosis& d) {
   using V = DiagnosisVerdict;
   const auto n = d.levels.size();
   const auto at = [&](int l) -> const LevelDiagnosis& {
@@ -167,6 +182,7 @@ void judge(const DiagnosisParams& params, Diagnosis& d) {
                            at(sel).error->translation, at(sel).error->rotation_deg);
     return;
   }
+  if (judge_labels(in, d)) return;
   if (best_right >= 0) {
     d.verdict = V::verification_wrong;
     d.at_fault_level = best_right;
@@ -230,6 +246,8 @@ const char* verdict_name(DiagnosisVerdict v) {
   switch (v) {
     case DiagnosisVerdict::success:
       return "success";
+    case DiagnosisVerdict::label_scheme:
+      return "label-scheme";
     case DiagnosisVerdict::too_few_true:
       return "too-few-true";
     case DiagnosisVerdict::not_consistent:
@@ -248,6 +266,8 @@ const char* verdict_sentence(DiagnosisVerdict v) {
   switch (v) {
     case DiagnosisVerdict::success:
       return "success: the selected pose is right";
+    case DiagnosisVerdict::label_scheme:
+      return "labels: they do not fit the label scheme in use";
     case DiagnosisVerdict::too_few_true:
       return "front end: too few true correspondences";
     case DiagnosisVerdict::not_consistent:
@@ -283,7 +303,7 @@ Diagnosis diagnose(const DiagnosisInput& in, const Transform& T_gt, const Diagno
     const auto& sel = d.levels[static_cast<std::size_t>(d.selected)];
     d.score_misled = !(sel.error && sel.error->success) && d.gt_score > sel.score;
   }
-  judge(params, d);
+  judge(in, params, d);
   d.time_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   return d;
@@ -356,22 +376,24 @@ std::string diagnosis_json(const Diagnosis& d, int indent) {
     levels.push_back(level_json(l));
     candidates.push_back(finite_or_null(l.score));
   }
-  const json out = {{"verdict", verdict_name(d.verdict)},
-                    {"stage_at_fault", verdict_sentence(d.verdict)},
-                    {"explanation", d.explanation},
-                    {"at_fault_level", d.at_fault_level >= 0 ? json(d.at_fault_level) : json()},
-                    {"residual_tolerance_m", d.residual_tolerance},
-                    {"min_true", d.min_true},
-                    {"true_correspondences", d.true_correspondences},
-                    {"best_achievable", d.best_achievable},
-                    {"classes", classes},
-                    {"levels", levels},
-                    {"verification",
-                     {{"gt_score_D", finite_or_null(d.gt_score)},
-                      {"candidates_D", candidates},
-                      {"selected", d.selected >= 0 ? json(d.selected) : json()},
-                      {"score_misled", d.score_misled}}},
-                    {"time_ms", d.time_ms}};
+  const json out = {
+      {"verdict", verdict_name(d.verdict)},
+      {"stage_at_fault", verdict_sentence(d.verdict)},
+      {"explanation", d.explanation},
+      {"at_fault_level", d.at_fault_level >= 0 ? json(d.at_fault_level) : json()},
+      {"labels_look_like", d.labels_look_like.empty() ? json() : json(d.labels_look_like)},
+      {"residual_tolerance_m", d.residual_tolerance},
+      {"min_true", d.min_true},
+      {"true_correspondences", d.true_correspondences},
+      {"best_achievable", d.best_achievable},
+      {"classes", classes},
+      {"levels", levels},
+      {"verification",
+       {{"gt_score_D", finite_or_null(d.gt_score)},
+        {"candidates_D", candidates},
+        {"selected", d.selected >= 0 ? json(d.selected) : json()},
+        {"score_misled", d.score_misled}}},
+      {"time_ms", d.time_ms}};
   return out.dump(indent, ' ', false, json::error_handler_t::replace);
 }
 

@@ -16,8 +16,11 @@ struct CorrespondenceParams {
   int max_correspondences = 1500;  ///< cap on the total; the most promising are kept; 0 = no cap
   bool fpfh_mutual = true;         ///< fpfh classes: keep only mutual nearest descriptors
   int fpfh_max_per_class = 300;    ///< fpfh classes: at most this many matches (best first)
-  double shape_scale = 0.5;        ///< ranking of cluster pairs: extents differing by this much [m]
-                                   ///< score e^-1
+  /// fpfh classes: keep a match only when its descriptor distance is at most this fraction of the
+  /// distance to the second nearest (Lowe's ratio test); 1: no test
+  double fpfh_ratio = 1.0;
+  double shape_scale = 0.5;  ///< ranking of cluster pairs: extents differing by this much [m]
+                             ///< score e^-1
   /// with a matcher's correspondences (Pipeline::set_matches) and clouds: use the landmark
   /// correspondences too, both in one pyramid (false: the matcher's replace them)
   bool fuse_matches = false;
@@ -33,6 +36,11 @@ struct CorrespondenceParams {
     v(&CorrespondenceParams::fpfh_max_per_class,
       {"fpfh_max_per_class", "FPFH classes: at most this many matches per class, best first.", "",
        Range::closed(1, 1e6)});
+    v(&CorrespondenceParams::fpfh_ratio,
+      {"fpfh_ratio",
+       "FPFH classes: keep a match only when its descriptor distance is at most this fraction of "
+       "the second nearest's (ratio test); 1: no test.",
+       "", Range::above(0, 1)});
     v(&CorrespondenceParams::shape_scale,
       {"shape_scale",
        "Ranking of cluster pairs: extents differing by this much score e^-1 of alike ones.", "m",

@@ -26,9 +26,17 @@ struct LabelScheme {
   const std::vector<std::uint32_t>& ids_of(const std::string& class_name) const;
   /// Comma-separated class names, for messages.
   std::string class_list() const;
+  /// `auto`: each cloud's numbering is detected from its labels (label_detection.hpp).
+  bool automatic() const { return name == "auto"; }
+  /// `none`: labels are not used; every cloud is read as unlabelled.
+  bool ignores_labels() const { return name == "none"; }
 };
 
 /// The built-in schemes:
+/// - `auto` (the default): each cloud's labels are read in the numbering detected from their
+///   values (label_detection.hpp), or not at all when none fits. Names every class of the
+///   numberings below, with no ids.
+/// - `none`: labels are ignored (the class-agnostic front end alone). Names the same classes.
 /// - `semantickitti`: raw SemanticKITTI ids (car 10, truck 18, building 50, vegetation 70,
 ///   trunk 71, pole 80, traffic-sign 81, ...). Moving-object ids (252-259) belong to no class.
 /// - `semantickitti-train`: the 19-class training numbering starting at 0 (car 0, ..., pole 17,
@@ -39,7 +47,10 @@ struct LabelScheme {
 /// 4). Throws ConfigError listing the built-in names for an unknown one.
 LabelScheme builtin_label_scheme(const std::string& name);
 
-/// Names of the built-in schemes.
+/// Names of the built-in schemes: `auto`, `none` and the numberings.
 std::vector<std::string> builtin_label_scheme_names();
+
+/// Names of the built-in numberings (the schemes with ids: all but `auto` and `none`).
+std::vector<std::string> label_numbering_names();
 
 }  // namespace pagor

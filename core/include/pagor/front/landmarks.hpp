@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "pagor/front/ground.hpp"
+#include "pagor/front/label_detection.hpp"
 #include "pagor/front/label_scheme.hpp"
 #include "pagor/types.hpp"
 #include "pagor/util/fields.hpp"
@@ -95,7 +97,18 @@ struct FallbackParams {
   /// Classes that count as ground and are left out (ignored when the scheme lacks them).
   std::vector<std::string> ground_classes{"road", "parking", "sidewalk", "other-ground", "terrain"};
   double ground_height = 0.4;  ///< unlabelled: thickness of the removed ground layer [m]
+  double ground_cell = 2.0;    ///< unlabelled: grid of the ground surface (ground.hpp) [m]
+  double ground_slope = 0.3;   ///< unlabelled: steepest rise of the ground surface [m per m]
   ClassParams keypoints = default_structure_keypoints();  ///< the class-agnostic FPFH class
+  /// A cloud whose labels are not used: descriptors at no more than this many keypoints (they are
+  /// all the evidence there is). Measured on semreg-dev without labels: 9/10 at 1500 and 2000,
+  /// 9/10 with one right pose rejected at 1000; with labels, 1500 loses a pair (08).
+  int unlabelled_keypoints = 1500;
+  /// A pair of which a cloud's labels are not used: the keypoints are matched one way (each source
+  /// keypoint's nearest target descriptor), at most this many; 0: as with labels (mutual nearest,
+  /// correspondences.fpfh_max_per_class). Without labels, mutual matching keeps 3-34 true of
+  /// 50-110 matches on semreg-dev, one way 18-123 of 650-1300, which the pyramid sorts out.
+  int unlabelled_matches = 1500;
 
   template <class V>
   static void fields(V&& v) {
@@ -110,9 +123,28 @@ struct FallbackParams {
        "Classes that count as ground and are left out (ignored when the scheme lacks them)."});
     v(&FallbackParams::ground_height,
       {"ground_height",
-       "Clouds without labels: points this far above the lowest dense height layer are ground.",
-       "m", Range::closed(0, 10)});
+       "Clouds without labels: points this far above the ground surface are not ground.", "m",
+       Range::closed(0, 10)});
+    v(&FallbackParams::ground_cell,
+      {"ground_cell",
+       "Clouds without labels: the horizontal grid of the ground surface, which follows each "
+       "cell's lowest points.",
+       "m", Range::closed(0.1, 100)});
+    v(&FallbackParams::ground_slope,
+      {"ground_slope",
+       "Clouds without labels: the steepest rise of the ground surface between cells; steeper is "
+       "an object (wall, car, bush).",
+       "m/m", Range::closed(0, 10)});
     v(&FallbackParams::keypoints, {"keypoints", "The class-agnostic FPFH class `structure`."});
+    v(&FallbackParams::unlabelled_keypoints,
+      {"unlabelled_keypoints",
+       "A cloud whose labels are not used: descriptors at no more than this many keypoints.", "",
+       Range::closed(1, 1e6)});
+    v(&FallbackParams::unlabelled_matches,
+      {"unlabelled_matches",
+       "A pair with a cloud whose labels are not used: keypoints matched one way (each source "
+       "keypoint's nearest descriptor), at most this many; 0: mutual, as with labels.",
+       "", Range::closed(1, 1e6), 0.0});
   }
   template <class C>
   static void check(const FallbackParams& p, C& c) {
@@ -166,7 +198,11 @@ struct ClassSummary {
   double voxel_size = 0.0;         ///< voxel used, after spacing adaptation [m]
   double cluster_tolerance = 0.0;  ///< cluster: tolerance used [m]
   int min_points = 0;              ///< cluster: minimum size used [voxels of `voxel_size`]
-  double time_ms = 0.0;            ///< wall time [ms]
+  /// fpfh: match one way (each source keypoint's nearest target descriptor), at most this many,
+  /// instead of mutual nearest; 0: as correspondences.fpfh_mutual says. Set on the class-agnostic
+  /// keypoints of a cloud whose labels are not used (FallbackParams::unlabelled_matches).
+  int one_way_matches = 0;
+  double time_ms = 0.0;  ///< wall time [ms]
 };
 
 /// The landmarks of one cloud.
@@ -175,6 +211,7 @@ struct LandmarkSet {
   /// FPFH descriptor (33 values) of each landmark; empty for cluster landmarks.
   std::vector<std::vector<float>> descriptors;
   std::vector<ClassSummary> classes;  ///< one per configured class, in configured order
+  LabelReading labels;  ///< the scheme the labels were read with (`auto` resolved), and why
   std::vector<std::string> warnings;  ///< e.g. a class with no points
   double time_ms = 0.0;               ///< total wall time [ms]
 };
@@ -191,16 +228,13 @@ double estimate_spacing(const std::vector<Eigen::Vector3f>& points,
 /// LandmarkParams::adapt_to_spacing); unchanged when adaptation is off or the data is finer.
 ClassParams params_for_spacing(const ClassParams& p, double spacing, const LandmarkParams& all);
 
-/// When the cloud's labels do not fit the scheme (no id of any configured class occurs, or most
-/// labelled points carry ids the scheme does not know), a message naming the built-in scheme whose
-/// ids fit best; empty when they fit.
-std::string label_scheme_mismatch(const PointCloud& cloud, const LabelScheme& scheme,
-                                  const LandmarkParams& params);
-
-/// Extracts the landmarks of every configured class. Centroids and covariances are computed over
-/// the voxel means of a cluster, so that the dense near side of an object does not dominate;
+/// Extracts the landmarks of every configured class. The labels are read as `read_labels` says
+/// (`auto`: in the numbering detected for this cloud; kept in `labels`), and a warning says when
+/// they do not fit a configured scheme. Centroids and covariances are computed over the voxel
+/// means of a cluster, so that the dense near side of an object does not dominate;
 /// `point_indices` lists every input point covered. A class with no points gives a warning and no
-/// landmarks. A cloud without labels gives no semantic landmarks and a warning (see the fallback).
+/// landmarks. A cloud whose labels are absent or not used gives no semantic landmarks and a
+/// warning (see the fallback).
 LandmarkSet extract_landmarks(const PointCloud& cloud, const LabelScheme& scheme,
                               const LandmarkParams& params);
 
@@ -211,13 +245,16 @@ std::size_t cluster_landmark_count(const LandmarkSet& set);
 /// bin among the lower half of the points, plus `thickness` [m]. Assumes z up (ground vehicles).
 float ground_layer_top(const std::vector<Eigen::Vector3f>& points, float thickness);
 
-/// Whether a pair needs the class-agnostic landmarks (LandmarkParams::fallback).
+/// Whether a pair needs the class-agnostic landmarks (LandmarkParams::fallback): in `automatic`
+/// mode when either cloud's labels are absent or not used (`s.labels`, `t.labels`) or either set
+/// is class-poor.
 bool needs_fallback(const PointCloud& source, const PointCloud& target, const LandmarkSet& s,
                     const LandmarkSet& t, const FallbackParams& params);
 
 /// Appends the class-agnostic `structure` keypoints of `cloud` to `set` as one more class (index
 /// = the number of classes in `set`): FPFH keypoints over every point except the ground (by the
-/// scheme's ground classes when the cloud has labels, else by height).
+/// ground classes of the scheme the labels were read with, `set.labels`, else by height). `scheme`
+/// is the configured one, used only when `set` has no reading (not made by extract_landmarks).
 void add_fallback_landmarks(const PointCloud& cloud, const LabelScheme& scheme,
                             const LandmarkParams& params, LandmarkSet& set);
 

@@ -45,10 +45,10 @@ struct PairOutcome {
                                        ///< results file written before the line named it)
 };
 
-/// Loads a pair and runs it through `pipeline` with the pipeline's configuration, and diagnoses it
-/// when it has ground truth (the report's `diagnosis`, null without). A pair whose files cannot
-/// be read comes back with `loaded == false` and the reason; other errors throw (Cancelled when
-/// `cancel` becomes true).
+/// Loads a pair and runs it through `pipeline` with the pipeline's configuration (and the pair's
+/// own label scheme, if its description sets one), and diagnoses it when it has ground truth (the
+/// report's `diagnosis`, null without). A pair whose files cannot be read comes back with `loaded
+/// == false` and the reason; other errors throw (Cancelled when `cancel` becomes true).
 PairOutcome run_pair(Pipeline& pipeline, const PairEntry& entry,
                      const std::atomic<bool>* cancel = nullptr);
 

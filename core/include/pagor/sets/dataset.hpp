@@ -7,8 +7,8 @@
 #include <optional>
 #include <string>
 
-#include "pagor/indoor/column_detector.hpp"
 #include "pagor/config.hpp"
+#include "pagor/indoor/column_detector.hpp"
 #include "pagor/indoor/floor_plan.hpp"
 #include "pagor/io/clouds.hpp"
 #include "pagor/types.hpp"
@@ -23,6 +23,9 @@ struct PairSource {
   std::string source, source_labels;  ///< source cloud and optional `.label` file
   std::string target, target_labels;  ///< target cloud and optional `.label` file
   std::string ground_truth;  ///< optional 4x4 `T_target_source` file; replaces any other truth
+  /// The numbering of both clouds' labels, a built-in scheme's name (`none`: read them without
+  /// labels); empty: the configuration's `label_scheme`.
+  std::string label_scheme;
   // kitti
   std::string kitti_root;       ///< directory holding `sequences/`
   std::string sequence = "00";  ///< sequence name
@@ -46,6 +49,9 @@ struct LoadedPair {
 /// an indoor pair: the plan is sampled into points and the scan projected to the floor with its
 /// columns found, both by `indoor` (floor_projection.hpp). Throws InputError naming the file.
 LoadedPair load_pair(const PairSource& src, const IndoorParams& indoor = {});
+
+/// The label scheme a pair's own description sets (PairSource::label_scheme), if any.
+std::optional<LabelScheme> pair_label_scheme(const PairSource& src);
 
 /// A one-line description, e.g. "KITTI 00: 20 -> 30".
 std::string describe(const PairSource& src);

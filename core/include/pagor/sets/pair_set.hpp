@@ -7,6 +7,8 @@
 /// manifest's directory, `#` starts a comment. Keys:
 /// - `gt=FILE`: the 4x4 ground truth `T_target_source` (row-major, whitespace-separated);
 /// - `source_labels=FILE`, `target_labels=FILE`: SemanticKITTI `.label` files for the clouds;
+/// - `scheme=NAME`: the numbering of this pair's labels, a built-in label scheme (`auto`, `none`:
+///   read the clouds without their labels, `semantickitti`, ...), in place of the configuration's;
 /// - `name=TEXT`: the pair's name in tables (default: the line number);
 /// - `overlap=no`: a known negative, two scans that share nothing (no `gt` then).
 /// A TARGET that is a floor plan (`.json` or `.svg`, floor_plan.hpp) makes the pair an indoor

@@ -1,15 +1,18 @@
 #pragma once
 /// \file acceptance.hpp
 /// Whether the selected pose should be trusted: the verdict a loop-closure user acts on. After
-/// verification has picked the lowest-D candidate, three measures are taken:
-/// - overlap: the fraction of verification source points above the ground layer that lie within
-///   `inlier_distance` of a target point under the selected pose. True overlaps leave a
-///   substantial part of the structure aligned; any level pose aligns the ground of two scans that
-///   share nothing, so the ground is left out (all points count when it would leave too few);
+/// verification has picked the lowest-D candidate, four measures are taken:
+/// - overlap: the fraction of verification source points above the ground surface (ground.hpp)
+///   that lie within `inlier_distance` of a target point under the selected pose. True overlaps
+///   leave a substantial part of the structure aligned; any level pose aligns the ground of two
+///   scans that share nothing, so the ground is left out, also when little else is left (all
+///   points count only for a flat cloud: under 1 % of them off the ground, a floor projection);
 /// - inliers: how many correspondences of the selected clique agree with the pose (GNC inliers);
 /// - margin: how much better the selected D is than the best *distinct* candidate (one that
 ///   differs from the selection by more than the success criterion), as a fraction of the largest
 ///   possible D (mu times the number of source points); 1 when there is no distinct candidate.
+/// - sharpness: how much of the overlap is lost when the pose is moved by the success criterion's
+///   translation along each horizontal axis (a true alignment is a sharp peak).
 /// The pose is accepted when every measure reaches its threshold; a pose resting on the minimal
 /// number of inliers for its model must reach the higher `minimal_support_overlap`.
 
@@ -37,6 +40,11 @@ struct AcceptanceParams {
   /// least D margin to a distinct candidate, fraction of mu * points; calibrated on the shared
   /// data: true pairs 0.18-1 (1: no distinct candidate), scans that share nothing 0.02-0.05
   double min_margin = 0.1;
+  /// least sharpness: the share of the overlap a shift of the success criterion's translation
+  /// along a horizontal axis loses (Acceptance::sharpness). Measured with refinement on: right
+  /// poses 0.17-0.55 (KITTI 0.36-0.43, semreg-dev with and without labels 0.17-0.55); wrong poses
+  /// that reach the overlap threshold 0.01-0.07 (a street that slides along itself, hedges)
+  double min_sharpness = 0.1;
 
   template <class V>
   static void fields(V&& v) {
@@ -56,6 +64,11 @@ struct AcceptanceParams {
       {"minimal_support_overlap",
        "The least overlap when the pose rests on the minimal number of inliers.", "",
        Range::closed(0, 1)});
+    v(&AcceptanceParams::min_sharpness,
+      {"min_sharpness",
+       "The least share of the overlap lost when the pose is moved by the success criterion's "
+       "translation along a horizontal axis.",
+       "", Range::closed(-1000, 1)});
     v(&AcceptanceParams::min_margin,
       {"min_margin",
        "The least D margin to the best distinct candidate, as a fraction of mu times the points.",
@@ -72,7 +85,11 @@ struct Acceptance {
   double overlap = 0.0;  ///< fraction of source points within inlier_distance, in [0, 1]
   int inliers = 0;       ///< GNC inliers of the selected candidate
   double margin = 0.0;   ///< D margin to the best distinct candidate, fraction of mu * points
-  std::string reason;    ///< which measure failed, e.g. "overlap 0.08 < 0.25"; empty if accepted
+  /// 1 - (best overlap of the pose moved by the success criterion's translation along +-x, +-y)
+  /// / overlap: near 1 for an alignment of distinct structure, near 0 (or below) for one that
+  /// slides along itself or aligns what matches anywhere
+  double sharpness = 0.0;
+  std::string reason;  ///< which measure failed, e.g. "overlap 0.08 < 0.25"; empty if accepted
 };
 
 /// Judges the selection of `verification` among `candidates`. No selection: not accepted.

@@ -11,7 +11,8 @@
 ///   mutually consistent at that epsilon (exact maximum clique of the graph restricted to them),
 ///   the clique's precision and recall against them, GNC's inliers and the candidate's errors;
 /// - verification: D of the ground-truth pose beside each candidate's D;
-/// - a verdict naming the first stage at fault.
+/// - a verdict naming the first stage at fault; before the front end, the labels: when a cloud's
+///   labels do not fit the configured scheme (LabelReading::mismatch), that is the cause named.
 
 #include <optional>
 #include <string>
@@ -39,6 +40,7 @@ struct DiagnosisParams {
 /// The stage at fault, in pipeline order; `success` when the selected pose is right.
 enum class DiagnosisVerdict {
   success,            ///< the selected pose is within the success criterion
+  label_scheme,       ///< labels: a cloud's labels do not fit the configured label scheme
   too_few_true,       ///< front end: too few true correspondences to fix a pose
   not_consistent,     ///< graph: the true correspondences are not consistent at any epsilon
   clique_missed,      ///< clique: they were consistent, but no level's clique holds them
@@ -46,7 +48,7 @@ enum class DiagnosisVerdict {
   verification_wrong  ///< verification: a candidate was right, a wrong one had the lowest D
 };
 
-/// Short name of a verdict, as in JSON and tables: `success`, `too-few-true`,
+/// Short name of a verdict, as in JSON and tables: `success`, `label-scheme`, `too-few-true`,
 /// `not-consistent`, `clique-missed`, `pose-wrong`, `verification-wrong`.
 const char* verdict_name(DiagnosisVerdict verdict);
 /// One sentence for a user, e.g. "verification picked a wrong candidate although one was right".
@@ -85,8 +87,10 @@ struct LevelDiagnosis {
 /// The whole diagnosis of one pair.
 struct Diagnosis {
   DiagnosisVerdict verdict = DiagnosisVerdict::success;
-  std::string explanation;          ///< the verdict with the numbers behind it, one line
-  int at_fault_level = -1;          ///< the level the verdict is about (pose/verification), else -1
+  std::string explanation;  ///< the verdict with the numbers behind it, one line
+  int at_fault_level = -1;  ///< the level the verdict is about (pose/verification), else -1
+  /// label_scheme: the built-in scheme the misread labels look like ("none" when none fits).
+  std::string labels_look_like;
   double residual_tolerance = 0.0;  ///< used [m]
   int min_true = 0;                 ///< used
   std::vector<ClassDiagnosis> classes;
