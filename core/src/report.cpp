@@ -3,6 +3,8 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+#include "pagor/io/clouds.hpp"
+
 namespace pagor {
 namespace {
 
@@ -44,6 +46,10 @@ json refinement_json(const Pipeline& p) {
 
 std::string registration_report_json(const Pipeline& p, const std::string& source_name,
                                      const std::string& target_name, int indent) {
+  // Poses as the user's files have them (the pipeline's are between the clouds' own frames).
+  const auto pose_json = [&](const Transform& T) {
+    return matrix_json(to_file_frames(T, p.source().origin, p.target().origin));
+  };
   json levels = json::array();
   const auto& g = p.graph();
   for (std::size_t l = 0; l < p.cliques().size(); ++l) {
@@ -61,7 +67,7 @@ std::string registration_report_json(const Pipeline& p, const std::string& sourc
                   {"clique_penalty_updates", c.penalty_updates},
                   {"pose_valid", pose.valid},
                   {"inliers", pose.inliers.size()},
-                  {"T_target_source", pose.valid ? matrix_json(pose.T_target_source) : json()},
+                  {"T_target_source", pose.valid ? pose_json(pose.T_target_source) : json()},
                   {"score_D", std::isfinite(D) ? json(D) : json()}};
     if (!pose.valid) level["failure"] = pose.failure;
     if (l < p.level_errors().size() && p.level_errors()[l]) {
@@ -75,7 +81,7 @@ std::string registration_report_json(const Pipeline& p, const std::string& sourc
   const auto selected = p.selected_transform();
   json gt = nullptr;
   if (p.ground_truth()) {
-    gt = {{"T_target_source", matrix_json(*p.ground_truth())},
+    gt = {{"T_target_source", pose_json(*p.ground_truth())},
           {"upper_bound", p.upper_bound_success()}};
     if (const auto e = p.selected_error()) {
       gt["translation_error_m"] = e->translation;
@@ -106,7 +112,7 @@ std::string registration_report_json(const Pipeline& p, const std::string& sourc
   json out = {{"schema", "pagor.register/1"},
               {"source", source_name},
               {"target", target_name},
-              {"T_target_source", selected ? matrix_json(*selected) : json()},
+              {"T_target_source", selected ? pose_json(*selected) : json()},
               {"selected_level", p.selected_level() >= 0 ? json(p.selected_level()) : json()},
               {"levels", levels},
               {"acceptance",
