@@ -202,7 +202,10 @@ int run_register_correspondences(const Args& args, const Config& config) {
     std::printf("\nno valid pose on any level\n");
   }
   if (args.has("json")) {
-    write_text_file(args.get("json"), run_json(r, file, config).dump(2) + "\n");
+    write_text_file(
+        args.get("json"),
+        run_json(r, file, config).dump(2, ' ', false, nlohmann::json::error_handler_t::replace) +
+            "\n");
     std::printf("wrote %s\n", args.get("json").c_str());
   }
   return 0;
