@@ -117,7 +117,7 @@ int run_sweep_command(const Args& args) {
   });
   std::fprintf(stderr, "\r%70s\r", "");
   for (const auto& o : result.settings.front().outcomes)
-    if (!o.loaded) warn("pair " + o.name + " skipped: " + o.load_error);
+    if (!o.loaded) warn("pair " + o.name + " failed: " + o.load_error);
   print_table(result, base);
   if (args.has("out")) write_file_atomic(args.get("out"), sweep_json_lines(result));
   if (args.has("csv")) write_file_atomic(args.get("csv"), sweep_csv(result));
