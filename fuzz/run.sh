@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Runs one libFuzzer target for a bounded time with its seed corpus (the committed seeds in
 # fuzz/corpus/<target> plus the matching files of ../shared/data), and prints its final stats.
-# usage: fuzz/run.sh BUILD_DIR TARGET SECONDS     (TARGET: pcd ply lzf config kitti_text floor_plan)
+# usage: fuzz/run.sh BUILD_DIR TARGET SECONDS
+#   (TARGET: pcd ply lzf config kitti_text floor_plan manifest session)
 # BUILD_DIR must be configured with clang and -DPAGOR_FUZZ=ON -DPAGOR_SANITIZE=ON (see README).
 # Exit status is non-zero when the fuzzer found a crash, a leak, a timeout or an out-of-memory;
 # the input is then in BUILD_DIR/fuzz-artifacts/.
@@ -21,6 +22,14 @@ if [ -d "$shared" ]; then
          [ -f "$f" ] && head -c $((153 + 64 * 16)) "$f" >"$corpus/semreg-03-head.pcd" ;;
     ply) cp -n "$shared"/bad-inputs/*.ply "$corpus/" 2>/dev/null || true ;;
     config) cp -n "$shared"/bad-inputs/cfg_*.json "$corpus/" 2>/dev/null || true ;;
+    session) cp -n "$shared"/bad-inputs/session_*.json "$here"/../tests/studio/*.json "$corpus/" \
+               2>/dev/null || true ;;
+    floor_plan) cp -n "$here"/../tests/data/indoor/plan.json "$here"/../tests/data/bad_plan.json \
+                  "$corpus/" 2>/dev/null || true ;;
+    manifest)
+      for f in "$here"/../bench/manifests/*.txt "$shared"/kitti/pairs_*.txt; do
+        [ -f "$f" ] && { printf '\000'; cat "$f"; } >"$corpus/$(basename "$f")"
+      done ;;
     kitti_text)
       for f in "$shared"/bad-inputs/pairs_*.txt "$shared"/kitti/pairs_*.txt; do
         [ -f "$f" ] && { printf '\000'; cat "$f"; } >"$corpus/$(basename "$f")"

@@ -1,41 +1,50 @@
 #pragma once
 /// \file bench_journal.hpp
-/// Where `pagor bench --out FILE` keeps its results so that nothing is lost: one complete JSON
-/// line per pair is appended (and flushed) to FILE.partial as each pair finishes; a finished run
-/// renames it over FILE. A killed run leaves FILE as it was and FILE.partial with every pair
-/// finished so far; `--resume` continues FILE.partial (or, when there is none, a copy of FILE),
-/// skipping the pairs it already holds for the same configuration.
+/// Where `pagor bench --out FILE` keeps its results so that nothing is lost or reused wrongly.
+/// Each result line is keyed by what determines it (`run_key`: the tool, the configuration and
+/// the pair's own fingerprint, pair_set.hpp: its name and the content of its files). As each pair
+/// finishes, its line is appended (and flushed) to FILE.partial; a finished run writes FILE
+/// atomically with the lines of this run's pairs, in set order. A killed run leaves FILE as it was
+/// and FILE.partial with every pair finished so far; `--resume` continues FILE.partial (or, when
+/// there is none, FILE), taking a line only for a pair whose key matches. One writer at a time:
+/// FILE is locked (file_lock.hpp) while the journal is open.
 
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
-#include <utility>
+#include <vector>
 
 #include "pagor/io/atomic_file.hpp"
+#include "pagor/io/file_lock.hpp"
 
 namespace pagor::cli {
 
 class BenchJournal {
  public:
-  /// Opens the journal of `out`. `run_key` identifies the configuration (lines with another key
-  /// are kept but not skipped). Throws InputError naming the file and line of a malformed line.
-  BenchJournal(const std::string& out, bool resume, std::string run_key);
+  /// Opens (and locks) the journal of `out`; `tool` names the tool and its build (written to
+  /// every line as `tool_version`). Throws InputError naming the file (and line of a malformed
+  /// line), or when another process writes to `out`.
+  BenchJournal(const std::string& out, bool resume, std::string tool);
 
-  /// The line already recorded for the pair named `pair` under this run key, or nullptr.
-  const nlohmann::json* find(const std::string& pair) const;
-  /// Number of pairs already recorded under this run key.
+  /// The line recorded under `key`, or nullptr.
+  const nlohmann::json* find(const std::string& key) const;
+  /// Number of lines recorded.
   std::size_t recorded() const { return done_.size(); }
+  /// Where the journal is kept (FILE.partial).
+  const std::string& partial() const { return partial_; }
 
-  /// Appends one result line, adding "pair" (the pair's name in its set) and "run_key".
-  /// Throws InputError.
-  void append(nlohmann::json line, const std::string& pair);
+  /// Appends one result line, adding "pair" (the pair's name in its set), "run_key" and
+  /// "tool_version". Throws InputError.
+  void append(nlohmann::json line, const std::string& pair, const std::string& key);
 
-  /// Renames the journal into place as `out`. Throws InputError.
-  void finish();
+  /// Writes `out` atomically with the lines recorded under `keys`, in that order (a key without a
+  /// line, a pair that failed, is left out), then removes the journal. Throws InputError.
+  void finish(const std::vector<std::string>& keys);
 
  private:
-  std::string out_, partial_, run_key_;
+  std::string out_, partial_, tool_;
+  std::unique_ptr<FileLock> lock_;
   std::map<std::string, nlohmann::json> done_;
   std::unique_ptr<LineAppender> appender_;
 };

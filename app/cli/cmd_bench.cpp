@@ -12,7 +12,10 @@
 
 #include "bench_journal.hpp"
 #include "command.hpp"
+#include "common/outputs.hpp"
 #include "pagor/errors.hpp"
+#include "pagor/io/atomic_file.hpp"
+#include "pagor/io/file_input.hpp"
 #include "pagor/sets/benchmark.hpp"
 #include "pagor/sets/runner.hpp"
 
@@ -20,6 +23,11 @@ namespace pagor::cli {
 namespace {
 
 void print_row(const PairOutcome& o) {
+  if (!o.loaded) {  // the pair failed: its row says why
+    std::printf("%-14s failed: %s\n", o.name.c_str(), o.load_error.c_str());
+    std::fflush(stdout);
+    return;
+  }
   const char* verdict = o.accepted ? "accept" : "reject";
   const char* truth = o.negative ? "neg" : (o.has_ground_truth ? (o.success ? "yes" : "no") : "-");
   char time[16] = "resumed";
@@ -39,7 +47,7 @@ void print_row(const PairOutcome& o) {
 
 void print_summary(const BenchmarkSummary& s, const Config& config) {
   std::printf("\npairs run: %d%s\n", s.pairs_run,
-              s.skipped ? (" (" + std::to_string(s.skipped) + " skipped)").c_str() : "");
+              s.skipped ? (" (" + std::to_string(s.skipped) + " more failed)").c_str() : "");
   if (s.with_truth > 0) {
     std::printf("success (selected pose, %.1f m / %.1f deg): %d/%d = %s\n",
                 config.evaluation.max_translation_error, config.evaluation.max_rotation_error,
@@ -47,14 +55,15 @@ void print_summary(const BenchmarkSummary& s, const Config& config) {
     std::printf("upper bound (any level succeeds):       %d/%d = %s\n", s.upper_bound, s.with_truth,
                 rate_text(s.upper_bound_rate()).c_str());
   }
+  // Every pair whose row says "accept" is counted here; the precision judges those that can be.
   std::printf(
       "verdict: %d accepted; precision %s (%d right, %d wrong), recall %s of the %d successful "
       "pairs; %d known negatives\n",
-      s.accepted, rate_text(s.precision()).c_str(), s.true_accepts, s.false_accepts,
+      s.accepted_total(), rate_text(s.precision()).c_str(), s.true_accepts, s.false_accepts,
       rate_text(s.recall()).c_str(), s.successes, s.negatives);
   if (s.accepted_unjudged > 0)
-    std::printf("         %d more accepted without a ground truth to judge them by\n",
-                s.accepted_unjudged);
+    std::printf("         of the %d accepted, %d without a ground truth to judge them by\n",
+                s.accepted_total(), s.accepted_unjudged);
   std::printf("\n%-18s %10s %12s\n", "stage", "mean [ms]", "median [ms]");
   for (int i = 0; i < kStageCount; ++i)
     std::printf("%-18s %10.2f %12.2f\n", stage_name(static_cast<Stage>(i)),
@@ -87,15 +96,50 @@ std::vector<Option> bench_options() {
            "clique (TEASER++-like), success rates"}};
 }
 
+namespace {
+
+// The tool and its build, which results are keyed by: the version and a fingerprint of this very
+// executable (a rebuild with other code gives other keys).
+std::string tool_version() {
+  std::string build = "unknown";
+  try {
+    build = fingerprint(file_fingerprint("/proc/self/exe", "executable", kMaxCloudFileBytes));
+  } catch (const InputError&) {  // no /proc: the version alone
+  }
+  return std::string("pagor ") + PAGOR_VERSION + " (build " + build + ")";
+}
+
+// Each pair's result key: the tool, the configuration and the pair's fingerprint (its name and
+// the content of its files). Empty for a pair whose files cannot be read (it fails when run).
+std::vector<std::string> run_keys(const PairSet& set, const Config& config) {
+  const std::string common = tool_version() + "\n" + config_to_json(config, -1) + "\n";
+  std::vector<std::string> keys;
+  for (const PairEntry& e : set.pairs) {
+    try {
+      keys.push_back(fingerprint(common + pair_fingerprint(e)));
+    } catch (const InputError&) {
+      keys.emplace_back();
+    }
+  }
+  return keys;
+}
+
+}  // namespace
+
 int run_bench(const Args& args) {
   const Config config = config_from_args(args);
   const PairSet set = pair_set_from_args(args, "bench");
   if (args.has("compare-thresholds")) return run_threshold_comparison(args, config, set);
   if (args.has("resume") && !args.has("out")) throw UsageError("--resume goes with --out FILE");
   std::optional<BenchJournal> journal;
-  if (args.has("out"))
-    journal.emplace(args.get("out"), args.has("resume"),
-                    fingerprint(set.origin + "\n" + config_to_json(config, -1)));
+  std::vector<std::string> keys;
+  if (args.has("out")) {
+    std::vector<NamedPath> inputs = option_inputs(args), pairs = set_inputs(set);
+    inputs.insert(inputs.end(), pairs.begin(), pairs.end());
+    check_outputs({{"--out", args.get("out")}}, inputs);
+    journal.emplace(args.get("out"), args.has("resume"), tool_version());
+    keys = run_keys(set, config);
+  }
 
   SetRunner runner(set, args.get_int("threads", 1));
   std::printf("%-14s %6s %10s %11s %8s %6s %8s %10s  %s\n", "pair", "level", "t err [m]",
@@ -108,36 +152,34 @@ int run_bench(const Args& args) {
       std::fprintf(stderr, "[%zu/%zu] %s ...\r", k + 1, set.pairs.size(), entry.name.c_str());
       std::fflush(stderr);
     }
-    const nlohmann::json* done = journal ? journal->find(entry.name) : nullptr;
+    const nlohmann::json* done = journal && !keys[k].empty() ? journal->find(keys[k]) : nullptr;
     if (!done) return std::nullopt;
-    PairOutcome o = outcome_from_json_line(done->dump(), args.get("out") + ".partial");
+    PairOutcome o = outcome_from_json_line(
+        done->dump(-1, ' ', false, nlohmann::json::error_handler_t::replace), journal->partial());
     o.timed = false;  // its times are not counted
     return o;
   };
   hooks.done = [&](std::size_t k, const PairOutcome& o) {
-    if (!o.loaded) {
-      warn("pair " + o.name + " skipped: " + o.load_error);
-      return;
-    }
+    for (const std::string& w : o.load_warnings) warn(w);
     print_row(o);
-    if (journal && o.timed)
-      journal->append(nlohmann::json::parse(o.report_json), set.pairs[k].name);
+    if (journal && o.loaded && o.timed && !keys[k].empty())
+      journal->append(nlohmann::json::parse(o.report_json), set.pairs[k].name, keys[k]);
   };
   std::vector<PairOutcome> outcomes;
   with_config_origin(args, [&] { outcomes = run_set(runner, config, hooks); });
   if (progress) std::fprintf(stderr, "%60s\r", "");
   const BenchmarkSummary s = summarize(outcomes);
   if (s.pairs_run == 0)
-    throw InputError(set.origin +
-                     ": no pair could be loaded (first: " + outcomes.front().load_error + ")");
+    throw InputError(set.origin + ": no pair could be run (first: " + outcomes.front().load_error +
+                     ")");
   print_summary(s, config);
   const auto resumed = std::count_if(outcomes.begin(), outcomes.end(),
-                                     [](const PairOutcome& o) { return !o.timed; });
+                                     [](const PairOutcome& o) { return o.loaded && !o.timed; });
   if (resumed > 0)
-    std::printf("of which %ld taken from %s.partial (--resume); stage times cover the others\n",
-                static_cast<long>(resumed), args.get("out").c_str());
+    std::printf("of which %ld taken from %s (--resume); stage times cover the others\n",
+                static_cast<long>(resumed), journal->partial().c_str());
   if (journal) {
-    journal->finish();
+    journal->finish(keys);
     std::printf("\nwrote %s\n", args.get("out").c_str());
   }
   return 0;

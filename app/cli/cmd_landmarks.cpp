@@ -5,13 +5,16 @@
 #include <nlohmann/json.hpp>
 
 #include "command.hpp"
+#include "common/outputs.hpp"
 #include "pagor/errors.hpp"
 #include "pagor/front/landmarks.hpp"
 
 namespace pagor::cli {
 namespace {
 
-nlohmann::json landmarks_json(const LandmarkSet& set, const std::string& name, bool with_indices) {
+// Centroids as the file has them: `origin` is the cloud's frame origin (types.hpp).
+nlohmann::json landmarks_json(const LandmarkSet& set, const std::string& name, bool with_indices,
+                              const Eigen::Vector3d& origin) {
   using nlohmann::json;
   json classes = json::array();
   for (const auto& c : set.classes)
@@ -26,9 +29,10 @@ nlohmann::json landmarks_json(const LandmarkSet& set, const std::string& name, b
     json cov = json::array();
     for (int r = 0; r < 3; ++r)
       cov.push_back({lm.covariance(r, 0), lm.covariance(r, 1), lm.covariance(r, 2)});
+    const Eigen::Vector3d c = origin.isZero() ? lm.centroid : Eigen::Vector3d(lm.centroid + origin);
     json item = {{"class", set.classes[static_cast<std::size_t>(lm.class_index)].name},
                  {"kind", lm.kind == LandmarkKind::cluster ? "cluster" : "keypoint"},
-                 {"centroid", {lm.centroid.x(), lm.centroid.y(), lm.centroid.z()}},
+                 {"centroid", {c.x(), c.y(), c.z()}},
                  {"covariance", cov},
                  {"point_count", lm.point_count}};
     if (with_indices) item["point_indices"] = lm.point_indices;
@@ -53,6 +57,7 @@ std::vector<Option> landmarks_options() {
 }
 
 int run_landmarks(const Args& args) {
+  if (args.has("json")) check_outputs({{"--json", args.get("json")}}, option_inputs(args));
   const Config config = config_from_args(args);
   std::string name;
   const auto t0 = std::chrono::steady_clock::now();
@@ -61,8 +66,8 @@ int run_landmarks(const Args& args) {
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   for (const auto& w : loaded.warnings) warn(w);
   std::printf("cloud: %s\n", name.c_str());
-  std::printf("loaded %zu points in %.1f ms (%zu dropped with NaN/Inf coordinates)\n",
-              loaded.cloud.size(), load_ms, loaded.dropped_nonfinite);
+  std::printf("loaded %zu points in %.1f ms (%zu dropped with NaN/Inf or corrupt coordinates)\n",
+              loaded.cloud.size(), load_ms, loaded.dropped_nonfinite + loaded.dropped_far);
   LandmarkSet set;
   with_config_origin(args, [&] {
     set = extract_landmarks(loaded.cloud, config.label_scheme, config.landmarks);
@@ -86,7 +91,7 @@ int run_landmarks(const Args& args) {
 
   if (args.has("json")) {
     write_text_file(args.get("json"),
-                    landmarks_json(set, name, args.has("with-indices"))
+                    landmarks_json(set, name, args.has("with-indices"), loaded.cloud.origin)
                             .dump(2, ' ', false, nlohmann::json::error_handler_t::replace) +
                         "\n");
     std::printf("wrote %s\n", args.get("json").c_str());

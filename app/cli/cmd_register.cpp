@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "command.hpp"
+#include "common/outputs.hpp"
 #include "pagor/errors.hpp"
 #include "pagor/pipeline.hpp"
 #include "pagor/report.hpp"
@@ -78,8 +79,9 @@ void print_registration(const Pipeline& p) {
   std::printf("  (* selected: lowest D; D = sum of min(distance, %.2f m) over %zu source points)\n",
               p.config().verification.mu, p.verifier() ? p.verifier()->source_points().size() : 0u);
 
-  if (const auto T = p.selected_transform()) {
-    std::printf("\nselected level %d: %s\n", p.selected_level(), pose_text(*T).c_str());
+  if (const auto T = p.selected_transform()) {  // as the files have it, like the JSON
+    std::printf("\nselected level %d: %s\n", p.selected_level(),
+                pose_text(to_file_frames(*T, p.source().origin, p.target().origin)).c_str());
   } else {
     std::printf("\nno valid candidate on any level\n");
   }
@@ -140,6 +142,7 @@ std::vector<Option> register_options() {
 }
 
 int run_register(const Args& args) {
+  if (args.has("json")) check_outputs({{"--json", args.get("json")}}, option_inputs(args));
   const Config config = config_from_args(args);
   if (args.has("correspondences")) return run_register_correspondences(args, config);
   const auto chosen = pair_source_from_args(args);

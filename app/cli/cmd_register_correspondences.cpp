@@ -144,7 +144,8 @@ int run_register_correspondences(const Args& args, const Config& config) {
                 diagnosis->explanation.c_str());
   if (args.has("json")) {
     const json report = report_json(pipeline, input, file, source_name, target_name, diagnosis);
-    write_text_file(args.get("json"), report.dump(2) + "\n");
+    write_text_file(args.get("json"),
+                    report.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
     std::printf("wrote %s\n", args.get("json").c_str());
   }
   return 0;

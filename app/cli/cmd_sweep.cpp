@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "command.hpp"
+#include "common/outputs.hpp"
 #include "pagor/errors.hpp"
 #include "pagor/io/atomic_file.hpp"
 #include "pagor/sets/sweep.hpp"
@@ -94,6 +95,11 @@ std::vector<Option> sweep_options() {
 int run_sweep_command(const Args& args) {
   const Config base = config_from_args(args);
   const PairSet set = pair_set_from_args(args, "sweep");
+  std::vector<NamedPath> outputs, inputs = option_inputs(args), pairs = set_inputs(set);
+  inputs.insert(inputs.end(), pairs.begin(), pairs.end());
+  for (const char* key : {"out", "csv", "plot", "plot-csv"})
+    if (args.has(key)) outputs.push_back({std::string("--") + key, args.get(key)});
+  check_outputs(outputs, inputs);
   std::vector<SweepSetting> settings;
   with_config_origin(args, [&] { settings = sweep_settings(base, grid_from_args(args)); });
 #ifndef PAGOR_CLI_PLOT
@@ -111,7 +117,7 @@ int run_sweep_command(const Args& args) {
   });
   std::fprintf(stderr, "\r%70s\r", "");
   for (const auto& o : result.settings.front().outcomes)
-    if (!o.loaded) warn("pair " + o.name + " skipped: " + o.load_error);
+    if (!o.loaded) warn("pair " + o.name + " failed: " + o.load_error);
   print_table(result, base);
   if (args.has("out")) write_file_atomic(args.get("out"), sweep_json_lines(result));
   if (args.has("csv")) write_file_atomic(args.get("csv"), sweep_csv(result));

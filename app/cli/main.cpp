@@ -2,6 +2,7 @@
 
 #include <csignal>
 #include <iostream>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -74,6 +75,9 @@ int main(int argc, char** argv) {
     return 2;
   } catch (const pagor::Error& e) {
     std::cerr << "pagor: error: " << e.what() << "\n";
+    return 1;
+  } catch (const std::bad_alloc&) {  // inputs too large for this machine: say so plainly
+    std::cerr << "pagor: error: out of memory\n";
     return 1;
   } catch (const std::exception& e) {
     std::cerr << "pagor: internal error: " << e.what() << "\n";

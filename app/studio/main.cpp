@@ -8,14 +8,16 @@
 #include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <vector>
 
 #include "common/args.hpp"
+#include "common/outputs.hpp"
 #include "common/pair_args.hpp"
-#include "render/headless.hpp"
 #include "pagor/errors.hpp"
 #include "pagor/io/kitti.hpp"
+#include "render/headless.hpp"
 #include "studio.hpp"
 
 namespace pagor::studio {
@@ -83,10 +85,29 @@ AppState state_from_args(const cli::Args& args) {
   return s;
 }
 
+// A stage cannot be interrupted midway, and the workers' destructors would wait for the one
+// running: on a timeout the headless run says why at once and exits without waiting for it.
+[[noreturn]] void give_up(const std::string& message) {
+  std::fprintf(stderr, "\r%-60s\rpagor-studio: error: %s\n", "", message.c_str());
+  std::fflush(stdout);
+  std::fflush(stderr);
+  std::_Exit(1);
+}
+
 int run_headless(const cli::Args& args, AppState state) {
   if (!args.has("screenshot") && !args.has("frames"))
     throw cli::UsageError("--headless needs --screenshot OUT.png (and/or --frames N)");
   if (!state.have_data) throw Error("nothing to show: the session and the arguments name no data");
+  if (args.has("screenshot")) {  // the picture never replaces an input
+    std::vector<cli::NamedPath> inputs = cli::option_inputs(args);
+    for (const auto& [what, path] : {std::pair{"the source", state.data.source},
+                                     {"the target", state.data.target},
+                                     {"the source labels", state.data.source_labels},
+                                     {"the target labels", state.data.target_labels},
+                                     {"the ground truth", state.data.ground_truth}})
+      if (!path.empty()) inputs.push_back({what, resolve_path(state, path)});
+    cli::check_outputs({{"--screenshot", args.get("screenshot")}}, inputs);
+  }
   const int w = state.width, h = state.height;
   HeadlessContext context(w, h);
   Gl gl;
@@ -109,13 +130,15 @@ int run_headless(const cli::Args& args, AppState state) {
     std::fprintf(stderr, "\r%-60s",
                  (st.activity + " " + std::to_string(int(st.fraction * 100)) + " %").c_str());
     if (std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() > timeout)
-      throw Error("the computation did not finish within " + std::to_string(int(timeout)) + " s");
+      give_up("the computation did not finish within " + std::to_string(int(timeout)) +
+              " s (--timeout)");
   }
   while (!studio.bench().wait_idle(0.5)) {  // the benchmark view's pairs, when one is open
     const BenchStatus st = studio.bench().status();
     std::fprintf(stderr, "\rbenchmark: %d / %d pairs%-30s", st.done, st.total, "");
     if (std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() > timeout)
-      throw Error("the benchmark did not finish within " + std::to_string(int(timeout)) + " s");
+      give_up("the benchmark did not finish within " + std::to_string(int(timeout)) +
+              " s (--timeout)");
   }
   std::fprintf(stderr, "\r%-60s\r", "");
   // A picture of a failed run is no result: say why and exit non-zero.

@@ -98,7 +98,7 @@ void Studio::submit_config() {
 void Studio::open_benchmark_now() {
   try {
     open_benchmark(state_, bench_);
-  } catch (const Error& e) {
+  } catch (const std::exception& e) {  // a file the studio cannot use: say so, keep running
     state_.bench.open = false;
     notify(Message::error(e.what()));
   }
@@ -140,7 +140,7 @@ void Studio::save_session_now() {
   try {
     save_session(state_, state_.session_path);
     notify(Message::info("saved " + state_.session_path));
-  } catch (const Error& e) {
+  } catch (const std::exception& e) {
     notify(Message::error(e.what()));
   }
 }
@@ -152,7 +152,7 @@ void Studio::load_session_now() {
     params_.reset(state_.config);
     if (state_.have_data) submit_data();
     if (state_.bench.open) open_benchmark_now();
-  } catch (const Error& e) {
+  } catch (const std::exception& e) {
     notify(Message::error(e.what()));
   }
 }

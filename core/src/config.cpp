@@ -5,11 +5,9 @@
 #include "pagor/config.hpp"
 
 #include <algorithm>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "pagor/errors.hpp"
+#include "pagor/io/file_input.hpp"
 
 namespace pagor {
 
@@ -112,14 +110,7 @@ Config preset_config(const std::string& name) {
 }
 
 Config load_config(const std::string& path, const std::string& base_preset) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))
-    throw InputError(path + ": is a directory, expected a config file");
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open config file");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return parse_config(ss.str(), path, base_preset);
+  return parse_config(read_file(path, "config file", kMaxTextFileBytes), path, base_preset);
 }
 
 }  // namespace pagor

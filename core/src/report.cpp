@@ -3,6 +3,8 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+#include "pagor/io/clouds.hpp"
+
 namespace pagor {
 namespace {
 
@@ -53,6 +55,10 @@ json refinement_json(const Pipeline& p) {
 
 json report_object(const Pipeline& p, const std::string& source_name,
                    const std::string& target_name) {
+  // Poses as the user's files have them (the pipeline's are between the clouds' own frames).
+  const auto pose_json = [&](const Transform& T) {
+    return matrix_json(to_file_frames(T, p.source().origin, p.target().origin));
+  };
   json levels = json::array();
   const auto& g = p.graph();
   for (std::size_t l = 0; l < p.cliques().size(); ++l) {
@@ -70,7 +76,7 @@ json report_object(const Pipeline& p, const std::string& source_name,
                   {"clique_penalty_updates", c.penalty_updates},
                   {"pose_valid", pose.valid},
                   {"inliers", pose.inliers.size()},
-                  {"T_target_source", pose.valid ? matrix_json(pose.T_target_source) : json()},
+                  {"T_target_source", pose.valid ? pose_json(pose.T_target_source) : json()},
                   {"score_D", std::isfinite(D) ? json(D) : json()}};
     if (!pose.valid) level["failure"] = pose.failure;
     if (l < p.level_errors().size() && p.level_errors()[l]) {
@@ -84,7 +90,7 @@ json report_object(const Pipeline& p, const std::string& source_name,
   const auto selected = p.selected_transform();
   json gt = nullptr;
   if (p.ground_truth()) {
-    gt = {{"T_target_source", matrix_json(*p.ground_truth())},
+    gt = {{"T_target_source", pose_json(*p.ground_truth())},
           {"upper_bound", p.upper_bound_success()}};
     if (const auto e = p.selected_error()) {
       gt["translation_error_m"] = e->translation;
@@ -116,7 +122,7 @@ json report_object(const Pipeline& p, const std::string& source_name,
       {"schema", "pagor.register/1"},
       {"source", source_name},
       {"target", target_name},
-      {"T_target_source", selected ? matrix_json(*selected) : json()},
+      {"T_target_source", selected ? pose_json(*selected) : json()},
       {"selected_level", p.selected_level() >= 0 ? json(p.selected_level()) : json()},
       {"levels", levels},
       {"selected_by", p.has_clouds() ? "score_D" : "without_clouds"},

@@ -136,7 +136,7 @@ TEST_CASE("read_floor_plan goes by extension and names the file") {
   std::ofstream(dir.file("p.json")) << kPlan;
   CHECK(read_floor_plan(dir.file("p.json")).columns.size() == 2);
   CHECK_THROWS_WITH(read_floor_plan(dir.file("missing.svg")),
-                    Catch::Contains("missing.svg: cannot open floor plan"));
+                    Catch::Contains("missing.svg: floor plan does not exist"));
   CHECK_THROWS_WITH(read_floor_plan(dir.file("p.txt")), Catch::Contains("must be a .json or .svg"));
   CHECK(is_floor_plan_path("a/b.SVG"));
   CHECK_FALSE(is_floor_plan_path("a/b.pcd"));

@@ -80,7 +80,7 @@ TEST_CASE("reading a file, and a missing file names its path") {
   std::ofstream(path) << "0 0 0 1 1 1 1 3\n";
   CHECK_THROWS_WITH(read_correspondence_file(path), path + ":1: inlier flag '3' is not 0 or 1");
   CHECK_THROWS_WITH(read_correspondence_file(dir.file("nope.txt")),
-                    dir.file("nope.txt") + ": cannot open correspondences file");
+                    dir.file("nope.txt") + ": correspondences file does not exist");
 }
 
 TEST_CASE("precision and recall against the flags") {
@@ -96,4 +96,26 @@ TEST_CASE("precision and recall against the flags") {
   CHECK(none.recall == 0.0);
   CHECK(inlier_quality({2}, {0, 0, 0}).recall == 0.0);
   CHECK_THROWS_AS(inlier_quality({7}, flags), std::out_of_range);
+}
+
+TEST_CASE("a correspondences file holds at most what the consistency graph takes") {
+  // 100 000 lines once made the graph ask for 4.2 GB; the reader stops at the budget, naming the
+  // file, the line and the budget.
+  std::string text = "# header\n";
+  for (std::size_t i = 0; i < kMaxFileCorrespondences; ++i) text += "0 0 0 1 1 1\n";
+  CHECK(parse_correspondence_file(text, "c.txt").items.size() == kMaxFileCorrespondences);
+  text += "0 0 0 1 1 1\n";
+  CHECK_THAT(
+      error_of(text),
+      Catch::Contains("c.txt:" + std::to_string(kMaxFileCorrespondences + 2) + ": more than " +
+                      std::to_string(kMaxFileCorrespondences) + " correspondences") &&
+          Catch::Contains("kMaxGraphCorrespondences"));
+  test::TempDir dir;
+  const std::string path = dir.file("huge.txt");
+  std::ofstream(path) << std::string(kMaxCorrespondenceFileBytes + 1, '#');
+  CHECK_THROWS_WITH(
+      read_correspondence_file(path),
+      Catch::Contains("huge.txt: correspondences file is ") && Catch::Contains("more than the"));
+  CHECK_THROWS_WITH(read_correspondence_file("/dev/zero"),
+                    Catch::Contains("/dev/zero: correspondences file is a character device"));
 }

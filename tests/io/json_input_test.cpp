@@ -22,6 +22,11 @@ TEST_CASE("JSON nesting is limited while parsing, even 100000 levels deep") {
   CHECK(parse_json_limited(ok, "ok.json").is_array());
   const std::string over = std::string(65, '[') + std::string(65, ']');
   CHECK_THROWS_AS(parse_json_limited(over, "x"), ConfigError);
+  // Brackets inside strings (escaped quotes too) are no nesting.
+  const std::string text = "{\"a\": \"" + std::string(100, '[') + "\\\"[{\"}";
+  CHECK(parse_json_limited(text, "s.json")["a"].get<std::string>().size() == 103);
+  CHECK_THROWS_WITH(parse_json_limited("{\n\"a\":\n" + over + "}", "l.json"),
+                    Catch::Contains("(line 3)"));
 }
 
 TEST_CASE("JSON numbers beyond a double and malformed text name the origin") {

@@ -1,4 +1,5 @@
 #include <catch2/catch.hpp>
+#include <filesystem>
 #include <fstream>
 
 #include "pagor/errors.hpp"
@@ -47,7 +48,7 @@ TEST_CASE("a 4x4 ground-truth file is read and checked to be rigid") {
   write(dir.file("nan.txt"), "1 0 0 nan\n0 1 0 0\n0 0 1 0\n");
   CHECK_THROWS_WITH(read_transform_file(dir.file("nan.txt")), Catch::Contains("nan.txt:1"));
   CHECK_THROWS_WITH(read_transform_file(dir.file("none.txt")),
-                    Catch::Contains("none.txt: does not exist"));
+                    Catch::Contains("none.txt: transform file does not exist"));
 }
 
 TEST_CASE("a pairs manifest resolves paths against its directory and reads every key") {
@@ -111,4 +112,72 @@ TEST_CASE("the shipped semreg-dev manifest names every pair and its negatives") 
   }
   CHECK(positives == 10);
   CHECK(negatives == 5);
+}
+
+TEST_CASE("manifest paths with blanks are quoted") {
+  test::TempDir dir;
+  std::filesystem::create_directories(dir.file("my scans"));
+  write(dir.file("my scans/a b.pcd"), "x");
+  write(dir.file("b.pcd"), "x");
+  write(dir.file("gt \"1\".txt"), kRigid);
+  write(dir.file("m.txt"),
+        "\"my scans/a b.pcd\" b.pcd gt=\"gt \\\"1\\\".txt\" name=\"pair one\"\n");
+  const PairSet set = read_pair_manifest(dir.file("m.txt"));
+  REQUIRE(set.pairs.size() == 1);
+  CHECK(set.pairs[0].source.source == dir.file("my scans/a b.pcd"));
+  CHECK(set.pairs[0].source.ground_truth == dir.file("gt \"1\".txt"));
+  CHECK(set.pairs[0].name == "pair one");
+  write(dir.file("m.txt"), "\"my scans/a b.pcd b.pcd\n");
+  CHECK_THROWS_WITH(read_pair_manifest(dir.file("m.txt")),
+                    Catch::Contains("m.txt:1: a quoted path is not closed"));
+  write(dir.file("m.txt"), "my scans/a b.pcd b.pcd\n");  // unquoted: three words
+  CHECK_THROWS_WITH(read_pair_manifest(dir.file("m.txt")),
+                    Catch::Contains("m.txt:1: 'b.pcd' is not a key=value option"));
+}
+
+TEST_CASE("every pair of a manifest has its own name and its own files") {
+  test::TempDir dir;
+  for (const char* f : {"a.pcd", "b.pcd", "c.pcd"}) write(dir.file(f), "x");
+  std::filesystem::create_symlink(dir.file("a.pcd"), dir.file("link.pcd"));
+  const auto fails_with = [&](const std::string& text, const std::string& what) {
+    write(dir.file("m.txt"), text);
+    CHECK_THROWS_WITH(read_pair_manifest(dir.file("m.txt")), Catch::Contains(what));
+  };
+  // Two pairs sharing a name: the second once got the first's result line.
+  fails_with("a.pcd b.pcd name=x\nc.pcd b.pcd name=x\n",
+             "m.txt:2: the name 'x' is already used by line 1");
+  fails_with("a.pcd b.pcd name=2\nc.pcd b.pcd\n", "m.txt:2: the name '2' is already used");
+  // The same files spelled another way are the same pair.
+  fails_with("a.pcd b.pcd\n./a.pcd b.pcd\n", "m.txt:2: the same pair as line 1");
+  fails_with("a.pcd b.pcd\nlink.pcd ./b.pcd\n", "m.txt:2: the same pair as line 1");
+  write(dir.file("m.txt"), "a.pcd b.pcd\na.pcd c.pcd\nc.pcd b.pcd\n");
+  CHECK(read_pair_manifest(dir.file("m.txt")).pairs.size() == 3);
+}
+
+TEST_CASE("a pair's fingerprint follows its files' content, not their names") {
+  test::TempDir dir;
+  write(dir.file("a.pcd"), "source bytes");
+  write(dir.file("b.pcd"), "target bytes");
+  std::filesystem::create_directories(dir.file("copy"));
+  std::filesystem::copy_file(dir.file("a.pcd"), dir.file("copy/a.pcd"));
+  PairEntry e;
+  e.name = "03";
+  e.source.kind = PairSource::Kind::files;
+  e.source.source = dir.file("a.pcd");
+  e.source.target = dir.file("b.pcd");
+  const std::string f = pair_fingerprint(e);
+  PairEntry moved = e;
+  moved.source.source = dir.file("copy/./a.pcd");
+  CHECK(pair_fingerprint(moved) == f);
+  PairEntry renamed = e;
+  renamed.name = "04";
+  CHECK(pair_fingerprint(renamed) != f);
+  PairEntry negative = e;
+  negative.negative = true;
+  CHECK(pair_fingerprint(negative) != f);
+  write(dir.file("copy/a.pcd"), "other bytes!");
+  CHECK(pair_fingerprint(moved) != f);
+  PairEntry missing = e;
+  missing.source.target = dir.file("none.pcd");
+  CHECK_THROWS_WITH(pair_fingerprint(missing), Catch::Contains("none.pcd"));
 }

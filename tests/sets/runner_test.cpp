@@ -1,11 +1,14 @@
 // The one runner over many pairs and the rates of a set: runs equal fresh ones, kept pipelines
 // re-run only what a change invalidates, and a rate of nothing is undefined.
 
+#include <algorithm>
 #include <catch2/catch.hpp>
+#include <fstream>
 
 #include "pagor/errors.hpp"
 #include "pagor/sets/runner.hpp"
 #include "pagor/sets/sweep.hpp"
+#include "support/test_util.hpp"
 
 using namespace pagor;
 
@@ -175,4 +178,60 @@ TEST_CASE("the summary counts what the rows say: picks per level, unjudged accep
   CHECK(s.precision() == 0.5);
   CHECK(s.diagnoses ==
         std::vector<std::pair<std::string, int>>{{"success", 1}, {"clique-missed", 1}});
+}
+
+TEST_CASE("a pair's own failure fails that pair, named, and the set goes on") {
+  test::TempDir dir;
+  // A truncated PCD: its pair fails while the others run (a 1e30 point used to stop the run).
+  std::ofstream(dir.file("cut.pcd")) << "VERSION .7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\n"
+                                        "WIDTH 100\nHEIGHT 1\nPOINTS 100\nDATA binary\n0123";
+  PairSet set = synthetic_set();
+  set.pairs[1].source.kind = PairSource::Kind::files;
+  set.pairs[1].source.source = dir.file("cut.pcd");
+  set.pairs[1].source.target = dir.file("cut.pcd");
+  SetRunner runner(set);
+  const std::vector<PairOutcome> out = run_set(runner, synthetic_config());
+  REQUIRE(out.size() == 4);
+  CHECK(out[0].loaded);
+  CHECK_FALSE(out[1].loaded);
+  CHECK_THAT(out[1].load_error, Catch::Contains("cut.pcd: truncated PCD body"));
+  CHECK(out[2].loaded);
+  CHECK_FALSE(out[3].loaded);
+  const BenchmarkSummary s = summarize(out);
+  CHECK(s.pairs_run == 2);
+  CHECK(s.skipped == 2);
+}
+
+TEST_CASE("a configuration error, the same for every pair, stops the set with its key") {
+  Config c = synthetic_config();
+  c.refinement.enabled = true;
+  c.refinement.normal_radius = 100;  // every target point a neighbour of every other
+  c.verification.voxel_size = 0.05;
+  SetRunner runner(synthetic_set());
+  CHECK_THROWS_WITH(run_set(runner, c), Catch::Contains("refinement.normal_radius"));
+}
+
+TEST_CASE("the rows and the summary agree: every accept is counted, failed pairs are not") {
+  // Each kind of row: accepted with truth (right, wrong), without truth, a negative accepted and
+  // one rejected, a failed pair.
+  std::vector<PairOutcome> rows(6);
+  for (auto& o : rows) o.loaded = true;
+  rows[0].has_ground_truth = rows[0].success = rows[0].accepted = true;
+  rows[1].has_ground_truth = rows[1].accepted = true;
+  rows[2].accepted = true;  // no ground truth
+  rows[3].negative = rows[3].accepted = true;
+  rows[4].negative = true;
+  rows[5].loaded = false;
+  rows[5].load_error = "x.pcd: cannot read";
+  const BenchmarkSummary s = summarize(rows);
+  const auto accepts = std::count_if(rows.begin(), rows.end(),
+                                     [](const PairOutcome& o) { return o.loaded && o.accepted; });
+  CHECK(s.accepted_total() == accepts);
+  CHECK(s.accepted_total() == 4);
+  CHECK(s.accepted_unjudged == 1);
+  CHECK(s.accepted == 3);  // the judged ones: the precision's denominator
+  CHECK(s.precision() == Approx(1.0 / 3));
+  CHECK(s.pairs_run == 5);
+  CHECK(s.skipped == 1);
+  CHECK(s.negatives == 2);
 }

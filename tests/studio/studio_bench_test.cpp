@@ -305,9 +305,11 @@ TEST_CASE("rates of nothing are n/a, not 0 % or 100 %") {
   const studio::Plot q = studio::rates_plot(some);
   CHECK(q.series[0].y == std::vector<double>{75, 100, 100, 100.0 * (2.0 / 3.0)});
   CHECK(studio::summary_text(none) ==
-        "success 0/0 (n/a), upper bound 0/0 (n/a); verdict: 0 accepted, precision n/a, recall n/a; "
-        "mean time 0 ms per pair");
+        "success 0/0 (n/a), upper bound 0/0 (n/a); verdict: 0 accepted (0 without truth), "
+        "precision n/a, recall n/a; mean time 0 ms per pair");
   CHECK_THAT(studio::summary_text(some),
              Catch::StartsWith("success 3/4 (75.0 %), upper bound 4/4 (100.0 %); verdict: 2 "
-                               "accepted, precision 100.0 %, recall 66.7 %"));
+                               "accepted (0 without truth), precision 100.0 %, recall 66.7 %"));
+  some.accepted_unjudged = 1;  // a row that says "accept" without a truth is counted too
+  CHECK_THAT(studio::summary_text(some), Catch::Contains("verdict: 3 accepted (1 without truth)"));
 }

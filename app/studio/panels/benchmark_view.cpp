@@ -30,7 +30,7 @@ const std::pair<RowFilter, const char*> kShow[] = {{RowFilter::all, "all pairs"}
 constexpr float kTrajectoryHeight = 420.0f;  // [px]
 
 const char* truth_text(const PairOutcome& o) {
-  if (!o.loaded) return "skipped";
+  if (!o.loaded) return "failed";
   if (o.negative) return "negative";
   if (!o.has_ground_truth) return "-";
   return o.success ? "yes" : "no";
@@ -174,7 +174,7 @@ void table_controls(BenchViewState& v) {
 void row_cells(const BenchRow& r) {
   const PairOutcome& o = r.outcome;
   ImGui::TableNextColumn();
-  ImGui::TextUnformatted(!o.loaded ? "skipped" : o.accepted ? "accept" : "reject");
+  ImGui::TextUnformatted(!o.loaded ? "failed" : o.accepted ? "accept" : "reject");
   if (!o.loaded) ui::tooltip(o.load_error.c_str());
   ImGui::TableNextColumn();
   ImGui::TextUnformatted(truth_text(o));

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
+#include <new>
 #include <numeric>
 
 #include "pagor/errors.hpp"
@@ -32,6 +33,13 @@ std::string beside(const std::string& path, const std::string& file) {
   std::error_code ec;
   if (p.is_absolute() || std::filesystem::exists(p, ec)) return path;
   return (std::filesystem::path(file).parent_path() / p).string();
+}
+
+// Why a pair or a sweep stopped, in words; nothing the core throws ends the studio.
+std::string reason(const std::exception& e) {
+  if (dynamic_cast<const std::bad_alloc*>(&e)) return "out of memory";
+  if (dynamic_cast<const Error*>(&e)) return e.what();
+  return std::string("internal error: ") + e.what();
 }
 
 }  // namespace
@@ -169,6 +177,8 @@ void BenchWorker::load_pending_plan() {
   std::string error;
   try {
     plan = std::make_shared<const FloorPlan>(read_floor_plan(path));
+  } catch (const std::bad_alloc&) {
+    error = path + ": out of memory while reading the floor plan";
   } catch (const Error& e) {
     error = e.what();
   }
@@ -295,8 +305,8 @@ void BenchWorker::run_pending_sweep() {
         &cancel_));
   } catch (const Cancelled&) {
     error = "the sweep was cancelled by a parameter change";
-  } catch (const Error& e) {
-    error = e.what();
+  } catch (const std::exception& e) {
+    error = reason(e);
   }
   std::lock_guard<std::mutex> lock(mutex_);
   if (result) sweep_result_ = std::move(result);
@@ -314,13 +324,13 @@ bool BenchWorker::evaluate(std::size_t i, const Config& config, std::uint64_t ge
     o = runner_->run(i, config, &cancel_);
   } catch (const Cancelled&) {
     return false;
-  } catch (const Error& e) {  // a work budget exceeded, unreadable data: the row says why
+  } catch (const std::exception& e) {  // a work budget exceeded, out of memory: the row says why
     const PairEntry& entry = set_.pairs[i];
     o = PairOutcome{};
     o.name = entry.name;
     o.negative = entry.negative;
-    o.load_error = e.what();
-    error = entry.name + ": " + e.what();
+    o.load_error = reason(e);
+    error = entry.name + ": " + o.load_error;
   }
   const double ms = ms_since(t0);
   std::lock_guard<std::mutex> lock(mutex_);

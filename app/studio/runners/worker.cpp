@@ -1,6 +1,7 @@
 #include "runners/worker.hpp"
 
 #include <chrono>
+#include <new>
 
 #include "pagor/errors.hpp"
 
@@ -61,7 +62,16 @@ void Worker::loop() {
       status_.busy = true;
       status_.error.clear();
     }
-    handle(std::move(request));
+    try {
+      handle(request);
+    } catch (const std::bad_alloc&) {  // the studio keeps running and says so
+      std::lock_guard<std::mutex> lock(mutex_);
+      status_.error = "out of memory while computing " + describe_request(request) +
+                      "; the last result is kept";
+    } catch (const std::exception& e) {
+      std::lock_guard<std::mutex> lock(mutex_);
+      status_.error = std::string("internal error: ") + e.what();
+    }
     {
       std::lock_guard<std::mutex> lock(mutex_);
       status_.busy = pending_.has_value();
@@ -72,7 +82,11 @@ void Worker::loop() {
   }
 }
 
-void Worker::handle(Request request) {
+std::string Worker::describe_request(const Request& request) const {
+  return request.data ? describe(*request.data) : "the current data";
+}
+
+void Worker::handle(const Request& request) {
   const auto fail = [this](const std::string& message) {
     std::lock_guard<std::mutex> lock(mutex_);
     status_.error = message;

@@ -97,7 +97,10 @@ class Worker {
     Config config;
   };
   void loop();
-  void handle(Request request);
+  /// Runs one request. Throws only what the pipeline cannot recover from (std::bad_alloc, ...),
+  /// which the loop turns into the status's error: the worker never ends the studio.
+  void handle(const Request& request);
+  std::string describe_request(const Request& request) const;
   std::shared_ptr<Snapshot> make_snapshot(std::uint64_t request) const;
 
   mutable std::mutex mutex_;

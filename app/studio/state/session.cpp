@@ -1,13 +1,12 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
 #include "io/json_input.hpp"
 #include "pagor/errors.hpp"
 #include "pagor/io/atomic_file.hpp"
+#include "pagor/io/file_input.hpp"
 #include "pagor/io/kitti.hpp"
 #include "render/headless.hpp"
 #include "state/app_state.hpp"
@@ -399,18 +398,21 @@ void save_session(const AppState& s, const std::string& path) {
               {"scene_share", number(s.layout.scene_share)}}},
             {"window", {{"width", s.width}, {"height", s.height}}},
             {"benchmark", bench_json(s)}};
+  std::string text;
+  try {
+    text = j.dump(2) + "\n";
+  } catch (const json::type_error&) {  // JSON holds UTF-8 only
+    throw InputError(path + ": a path in the session is not valid UTF-8; it cannot be saved");
+  }
   // A failed write (disk full, a size limit) leaves the previous session file intact.
-  write_file_atomic(path, j.dump(2) + "\n");
+  write_file_atomic(path, text);
 }
 
 void load_session(const std::string& path, AppState& s) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot open session file");
-  std::ostringstream text;
-  text << in.rdbuf();
+  const std::string text = read_file(path, "session file", kMaxTextFileBytes);
   json j;
   try {  // nesting limited while parsing; numbers beyond a double rejected
-    j = parse_json_limited(text.str(), path);
+    j = parse_json_limited(text, path);
   } catch (const ConfigError& e) {
     throw InputError(std::string(e.what()) + " (not a valid session file)");
   }

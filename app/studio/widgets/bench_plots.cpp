@@ -229,11 +229,12 @@ Plot trajectory_plot(const std::vector<PairOutcome>& outcomes, const FloorPlan* 
 std::string summary_text(const BenchmarkSummary& s) {
   char line[320];
   std::snprintf(line, sizeof(line),
-                "success %d/%d (%s), upper bound %d/%d (%s); verdict: %d accepted, precision %s, "
-                "recall %s; mean time %.0f ms per pair",
+                "success %d/%d (%s), upper bound %d/%d (%s); verdict: %d accepted (%d without "
+                "truth), precision %s, recall %s; mean time %.0f ms per pair",
                 s.successes, s.with_truth, rate_text(s.success_rate()).c_str(), s.upper_bound,
-                s.with_truth, rate_text(s.upper_bound_rate()).c_str(), s.accepted,
-                rate_text(s.precision()).c_str(), rate_text(s.recall()).c_str(), s.mean_total_ms);
+                s.with_truth, rate_text(s.upper_bound_rate()).c_str(), s.accepted_total(),
+                s.accepted_unjudged, rate_text(s.precision()).c_str(),
+                rate_text(s.recall()).c_str(), s.mean_total_ms);
   return line;
 }
 

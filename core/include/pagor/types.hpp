@@ -12,10 +12,15 @@ namespace pagor {
 /// A point cloud with optional per-point reflectance and semantic labels.
 /// `intensities` and `labels` are either empty or as long as `points`.
 /// A label keeps the SemanticKITTI layout: lower 16 bits class id, upper 16 bits instance id.
+/// The points are in the cloud's own frame, whose origin lies at `origin` in the frame of its file:
+/// a file coordinate is `point + origin`. The origin is zero but for clouds far from their file's
+/// origin (georeferenced data: load_cloud, clouds.hpp), whose float32 points would otherwise lose
+/// their precision and whose poses would be judged with a lever arm of kilometres.
 struct PointCloud {
-  std::vector<Eigen::Vector3f> points;  ///< coordinates [m]
+  std::vector<Eigen::Vector3f> points;  ///< coordinates in the cloud's frame [m]
   std::vector<float> intensities;       ///< reflectance, unitless (empty if absent)
   std::vector<std::uint32_t> labels;    ///< raw labels (empty if absent)
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();  ///< the frame's origin in the file's [m]
 
   std::size_t size() const { return points.size(); }
   bool empty() const { return points.empty(); }

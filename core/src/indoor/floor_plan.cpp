@@ -1,14 +1,15 @@
 #include "pagor/indoor/floor_plan.hpp"
 
+#include <algorithm>
 #include <cmath>
-#include <fstream>
+#include <cstdio>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
-#include "pagor/io/atomic_file.hpp"
-#include "pagor/errors.hpp"
-#include "pagor/io/clouds.hpp"
 #include "io/json_input.hpp"
+#include "pagor/errors.hpp"
+#include "pagor/io/atomic_file.hpp"
+#include "pagor/io/clouds.hpp"
+#include "pagor/io/file_input.hpp"
 
 namespace pagor {
 namespace {
@@ -29,7 +30,10 @@ double finite_number(const json& j, const std::string& where) {
 Eigen::Vector2d point_of(const json& j, const std::string& where) {
   if (!j.is_array() || j.size() != 2)
     fail(where, "expected a point [x, y] in metres, got " + json_excerpt(j));
-  return {finite_number(j[0], where + "[0]"), finite_number(j[1], where + "[1]")};
+  const Eigen::Vector2d p(finite_number(j[0], where + "[0]"), finite_number(j[1], where + "[1]"));
+  if (!(p.cwiseAbs().maxCoeff() <= kMaxPlanCoordinate))
+    fail(where, "lies more than 1e7 m from the origin");
+  return p;
 }
 
 const json& member(const json& obj, const char* key, const std::string& where) {
@@ -64,7 +68,8 @@ PlanColumn column_of(const json& j, const std::string& where) {
   PlanColumn c;
   c.center = point_of(member(j, "center", where), where + ".center");
   c.radius = finite_number(member(j, "radius", where), where + ".radius");
-  if (c.radius <= 0 || c.radius > 100) fail(where + ".radius", "must be in (0, 100] [m]");
+  if (c.radius <= 0 || c.radius > kMaxColumnRadius)
+    fail(where + ".radius", "must be in (0, 100] [m]");
   return c;
 }
 
@@ -112,12 +117,7 @@ bool is_floor_plan_path(const std::string& path) {
 FloorPlan read_floor_plan(const std::string& path) {
   if (!is_floor_plan_path(path))
     fail(path, "a floor plan must be a .json or .svg file (format: floor_plan.hpp, README)");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) fail(path, "cannot open floor plan");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  if (!in.good() && !in.eof()) fail(path, "cannot read floor plan");
-  const std::string text = ss.str();
+  const std::string text = read_file(path, "floor plan", kMaxTextFileBytes);
   return file_extension(path) == ".svg" ? parse_floor_plan_svg(text, path)
                                         : parse_floor_plan_json(text, path);
 }
@@ -139,10 +139,53 @@ void write_floor_plan(const FloorPlan& plan, const std::string& path) {
   write_file_atomic(path, floor_plan_to_json(plan));
 }
 
+namespace {
+
+// Points sample_circle makes for a column, as a double (no overflow whatever the input).
+double circle_samples(double radius, double spacing) {
+  return std::max(8.0, std::ceil(2.0 * M_PI * radius / spacing));
+}
+
+// Steps sample_floor_plan makes along a segment [a, b], as a double.
+double segment_steps(const Eigen::Vector2d& a, const Eigen::Vector2d& b, double spacing) {
+  return std::max(1.0, std::ceil((b - a).norm() / spacing));
+}
+
+// Throws, naming the element, when sampling would make more than kMaxPlanSamples points.
+void check_samples(const FloorPlan& plan, double spacing) {
+  double total = 0;
+  const auto over = [&](const std::string& element) {
+    char buf[200];
+    std::snprintf(buf, sizeof(buf),
+                  "%s: sampling the plan every %g m would make more than %zu points (the budget, "
+                  "kMaxPlanSamples); is a coordinate in the wrong unit?",
+                  element.c_str(), spacing, kMaxPlanSamples);
+    throw InputError(buf);
+  };
+  for (std::size_t i = 0; i < plan.walls.size(); ++i) {
+    const PlanWall& w = plan.walls[i];
+    const std::size_t n = w.points.size(), segments = w.closed ? n : n - 1;
+    for (std::size_t k = 0; k < segments; ++k)
+      total += segment_steps(w.points[k], w.points[(k + 1) % n], spacing);
+    total += w.closed ? 0 : 1;
+    if (!(total <= static_cast<double>(kMaxPlanSamples))) over("walls[" + std::to_string(i) + "]");
+  }
+  for (std::size_t i = 0; i < plan.columns.size(); ++i) {
+    total += circle_samples(plan.columns[i].radius, spacing);
+    if (!(total <= static_cast<double>(kMaxPlanSamples)))
+      over("columns[" + std::to_string(i) + "]");
+  }
+}
+
+}  // namespace
+
 void sample_circle(const Eigen::Vector2d& center, double radius, double spacing,
                    std::uint32_t label, PointCloud& out) {
-  const double circumference = 2.0 * M_PI * radius;
-  const int n = std::max(8, static_cast<int>(std::ceil(circumference / spacing)));
+  const double samples = circle_samples(radius, spacing);
+  if (!(samples <= static_cast<double>(kMaxPlanSamples)))
+    throw InputError("a column of radius " + std::to_string(radius) + " m sampled every " +
+                     std::to_string(spacing) + " m would make more than 10^7 points");
+  const int n = static_cast<int>(samples);
   for (int i = 0; i < n; ++i) {
     const double a = 2.0 * M_PI * i / n;
     out.points.emplace_back(static_cast<float>(center.x() + radius * std::cos(a)),
@@ -153,14 +196,14 @@ void sample_circle(const Eigen::Vector2d& center, double radius, double spacing,
 
 PointCloud sample_floor_plan(const FloorPlan& plan, double spacing) {
   if (!(spacing > 0)) throw InputError("floor plan sampling: spacing must be > 0 [m]");
+  check_samples(plan, spacing);
   PointCloud out;
   for (const PlanWall& w : plan.walls) {
     const std::size_t n = w.points.size();
     const std::size_t segments = w.closed ? n : n - 1;
     for (std::size_t i = 0; i < segments; ++i) {
       const Eigen::Vector2d a = w.points[i], b = w.points[(i + 1) % n];
-      const double len = (b - a).norm();
-      const int steps = std::max(1, static_cast<int>(std::ceil(len / spacing)));
+      const int steps = static_cast<int>(segment_steps(a, b, spacing));  // <= kMaxPlanSamples
       // The end vertex belongs to the next segment (or is added below for an open polyline).
       for (int k = 0; k < steps; ++k) {
         const Eigen::Vector2d p = a + (b - a) * (static_cast<double>(k) / steps);

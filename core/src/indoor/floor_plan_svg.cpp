@@ -1,9 +1,11 @@
 // The SVG floor-plan reader: a small tag scanner (no external XML library), enough for the flat
 // drawings CAD tools export. Every failure names the file, the element (tag, number, line).
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <map>
+#include <vector>
 
 #include "pagor/errors.hpp"
 #include "pagor/indoor/floor_plan.hpp"
@@ -16,7 +18,10 @@ struct Tag {
   std::string name;
   std::map<std::string, std::string> attributes;
   int line = 1;
-  int number = 0;  ///< 1-based count of this tag name in the file
+  int number = 0;             ///< 1-based count of this tag name in the file
+  bool closing = false;       ///< an end tag, </name>
+  bool self_closing = false;  ///< <name ... />: no content, no end tag
+  std::size_t end = 0;        ///< offset just after the tag's '>'
 };
 
 struct Scanner {
@@ -56,9 +61,19 @@ struct Scanner {
         if (!skip_past("-->")) fail(lt, "unterminated comment");
         continue;
       }
-      if (rest.substr(0, 1) == "?" || rest.substr(0, 1) == "!" || rest.substr(0, 1) == "/") {
+      if (rest.substr(0, 1) == "?" || rest.substr(0, 1) == "!") {
         if (!skip_past(">")) fail(lt, "unterminated markup");
         continue;
+      }
+      if (rest.substr(0, 1) == "/") {  // an end tag: its name, for the nesting
+        tag = Tag{};
+        tag.closing = true;
+        for (++pos; pos < text.size() && text[pos] != '>' &&
+                    !std::isspace(static_cast<unsigned char>(text[pos]));)
+          tag.name += text[pos++];
+        if (!skip_past(">")) fail(lt, "unterminated markup");
+        tag.end = pos;
+        return true;
       }
       read_tag(lt, tag);
       return true;
@@ -77,7 +92,9 @@ struct Scanner {
       while (pos < text.size() && std::isspace(static_cast<unsigned char>(text[pos]))) ++pos;
       if (pos >= text.size()) fail(lt, "<" + tag.name + "> is not closed");
       if (text[pos] == '>' || text[pos] == '/') {
+        tag.self_closing = text[pos] == '/';
         if (!skip_past(">")) fail(lt, "<" + tag.name + "> is not closed");
+        tag.end = pos;
         return;
       }
       std::string key;
@@ -227,12 +244,19 @@ void path_walls(const Context& ctx, const Tag& t, std::vector<PlanWall>& out) {
   flush();
 }
 
+// Metres per SVG unit that make sense for a plan: a micrometre to ten kilometres.
+constexpr double kMinScale = 1e-6, kMaxScale = 1e4;
+
+double checked_scale(const Context& ctx, const Tag& svg, double s, const std::string& from) {
+  if (!(s >= kMinScale && s <= kMaxScale))
+    ctx.fail(svg,
+             from + " gives " + std::to_string(s) + " metres per SVG unit, outside [1e-06, 10000]");
+  return s;
+}
+
 double svg_scale(const Context& ctx, const Tag& svg) {
-  if (svg.attributes.count("data-scale")) {
-    const double s = ctx.number(svg, "data-scale");
-    if (!(s > 0)) ctx.fail(svg, "data-scale must be > 0 (metres per SVG unit)");
-    return s;
-  }
+  if (svg.attributes.count("data-scale"))
+    return checked_scale(ctx, svg, ctx.number(svg, "data-scale"), "data-scale");
   const auto w = svg.attributes.find("width");
   const auto vb = svg.attributes.find("viewBox");
   if (w != svg.attributes.end() && vb != svg.attributes.end()) {
@@ -251,11 +275,78 @@ double svg_scale(const Context& ctx, const Tag& svg) {
     const auto width = parse::to_double(num);
     const auto box = tokens(vb->second);
     const auto box_w = box.size() == 4 ? parse::to_double(box[2]) : std::nullopt;
-    if (unit > 0 && width && box_w && *width > 0 && *box_w > 0) return *width * unit / *box_w;
+    if (unit > 0 && width && box_w && *width > 0 && *box_w > 0)
+      return checked_scale(ctx, svg, *width * unit / *box_w, "width / viewBox width");
   }
   ctx.fail(svg,
            "no scale: add data-scale=\"S\" (metres per SVG unit) to <svg>, or give width in m, "
            "cm or mm with a viewBox");
+}
+
+// Containers whose content is not drawn where it stands (definitions, clip paths, masks, ...).
+bool hides_content(const std::string& name) {
+  return name == "defs" || name == "symbol" || name == "clipPath" || name == "mask" ||
+         name == "pattern" || name == "marker";
+}
+
+// Anything that would move or scale drawn geometry is refused rather than ignored: a plan read
+// without its transform would be silently off.
+void reject_placement(const Context& ctx, const Tag& t, bool root) {
+  if (t.attributes.count("transform"))
+    ctx.fail(t, "transform attributes are not supported; apply transforms on export");
+  if (const auto style = t.attributes.find("style");
+      style != t.attributes.end() && style->second.find("transform") != std::string::npos)
+    ctx.fail(t, "a CSS transform in style is not supported; apply transforms on export");
+  if (t.name == "svg" && !root)
+    ctx.fail(t,
+             "nested <svg> elements are not supported (their x, y and viewBox place their "
+             "content); flatten the drawing on export");
+  if (t.name == "use")
+    ctx.fail(t,
+             "<use> is not supported (it places copies of other elements); expand it on "
+             "export");
+}
+
+bool is_shape(const std::string& name) {
+  return name == "line" || name == "polyline" || name == "polygon" || name == "rect" ||
+         name == "path" || name == "circle" || name == "ellipse";
+}
+
+void add_shape(const Context& ctx, const Tag& t, FloorPlan& plan) {
+  const std::size_t walls_before = plan.walls.size(), columns_before = plan.columns.size();
+  if (t.name == "line") {
+    PlanWall w;
+    w.points = {ctx.metric(ctx.number(t, "x1"), ctx.number(t, "y1")),
+                ctx.metric(ctx.number(t, "x2"), ctx.number(t, "y2"))};
+    plan.walls.push_back(w);
+  } else if (t.name == "polyline" || t.name == "polygon") {
+    plan.walls.push_back(polyline_of(ctx, t, t.name == "polygon"));
+  } else if (t.name == "rect") {
+    const double x = ctx.number(t, "x", 0.0), y = ctx.number(t, "y", 0.0);
+    const double w = ctx.number(t, "width"), h = ctx.number(t, "height");
+    if (!(w > 0) || !(h > 0)) ctx.fail(t, "width and height must be > 0");
+    plan.walls.push_back(
+        {{ctx.metric(x, y), ctx.metric(x + w, y), ctx.metric(x + w, y + h), ctx.metric(x, y + h)},
+         true});
+  } else if (t.name == "path") {
+    path_walls(ctx, t, plan.walls);
+  } else {
+    const double r = t.name == "circle" ? ctx.number(t, "r") : ctx.number(t, "rx");
+    if (t.name == "ellipse" && std::abs(ctx.number(t, "ry") - r) > 1e-9 * std::abs(r))
+      ctx.fail(t, "an ellipse with rx != ry is not a circular column");
+    const double radius = r * ctx.scale;
+    if (!(radius > 0) || radius > kMaxColumnRadius)
+      ctx.fail(t, "radius " + std::to_string(radius) + " m is outside (0, 100] m");
+    plan.columns.push_back(
+        {ctx.metric(ctx.number(t, "cx", 0.0), ctx.number(t, "cy", 0.0)), radius});
+  }
+  for (std::size_t w = walls_before; w < plan.walls.size(); ++w)
+    for (const Eigen::Vector2d& p : plan.walls[w].points)
+      if (!(p.cwiseAbs().maxCoeff() <= kMaxPlanCoordinate))
+        ctx.fail(t, "a point lies more than 1e7 m from the origin");
+  for (std::size_t c = columns_before; c < plan.columns.size(); ++c)
+    if (!(plan.columns[c].center.cwiseAbs().maxCoeff() <= kMaxPlanCoordinate))
+      ctx.fail(t, "the centre lies more than 1e7 m from the origin");
 }
 
 }  // namespace
@@ -265,46 +356,41 @@ FloorPlan parse_floor_plan_svg(std::string_view text, const std::string& origin)
   Context ctx{origin};
   FloorPlan plan;
   std::map<std::string, int> counts;
+  std::vector<std::string> open;  // the elements the scan is inside, outermost first
+  int hidden = 0;                 // how many of them hide their content
   Tag t;
   bool seen_svg = false;
   while (sc.next(t)) {
+    if (t.closing) {  // close up to the matching start tag (lenient about unclosed ones)
+      const auto it = std::find(open.rbegin(), open.rend(), t.name);
+      if (it != open.rend())
+        for (std::size_t n = static_cast<std::size_t>(it - open.rbegin()) + 1; n > 0; --n) {
+          hidden -= hides_content(open.back());
+          open.pop_back();
+        }
+      continue;
+    }
     t.number = ++counts[t.name];
-    if (t.name == "svg") {
-      if (!seen_svg) ctx.scale = svg_scale(ctx, t);
+    reject_placement(ctx, t, !seen_svg);
+    if (t.name == "style" && !t.self_closing) {  // a style sheet: refuse CSS transforms
+      const std::size_t end = text.find("</style", t.end);
+      if (text.substr(t.end, end - t.end).find("transform") != std::string_view::npos)
+        ctx.fail(t,
+                 "a CSS transform in a style sheet is not supported; apply transforms on "
+                 "export");
+    }
+    if (!t.self_closing) {
+      open.push_back(t.name);
+      hidden += hides_content(t.name);
+    }
+    if (t.name == "svg" && !seen_svg) {
+      ctx.scale = svg_scale(ctx, t);
       seen_svg = true;
       continue;
     }
-    const bool shape = t.name == "line" || t.name == "polyline" || t.name == "polygon" ||
-                       t.name == "rect" || t.name == "path" || t.name == "circle" ||
-                       t.name == "ellipse";
-    if (!shape) continue;
+    if (!is_shape(t.name) || hidden > 0) continue;
     if (!seen_svg) ctx.fail(t, "appears before the <svg> element");
-    if (t.attributes.count("transform"))
-      ctx.fail(t, "transform attributes are not supported; apply transforms on export");
-    if (t.name == "line") {
-      PlanWall w;
-      w.points = {ctx.metric(ctx.number(t, "x1"), ctx.number(t, "y1")),
-                  ctx.metric(ctx.number(t, "x2"), ctx.number(t, "y2"))};
-      plan.walls.push_back(w);
-    } else if (t.name == "polyline" || t.name == "polygon") {
-      plan.walls.push_back(polyline_of(ctx, t, t.name == "polygon"));
-    } else if (t.name == "rect") {
-      const double x = ctx.number(t, "x", 0.0), y = ctx.number(t, "y", 0.0);
-      const double w = ctx.number(t, "width"), h = ctx.number(t, "height");
-      if (!(w > 0) || !(h > 0)) ctx.fail(t, "width and height must be > 0");
-      plan.walls.push_back(
-          {{ctx.metric(x, y), ctx.metric(x + w, y), ctx.metric(x + w, y + h), ctx.metric(x, y + h)},
-           true});
-    } else if (t.name == "path") {
-      path_walls(ctx, t, plan.walls);
-    } else {
-      const double r = t.name == "circle" ? ctx.number(t, "r") : ctx.number(t, "rx");
-      if (t.name == "ellipse" && std::abs(ctx.number(t, "ry") - r) > 1e-9 * std::abs(r))
-        ctx.fail(t, "an ellipse with rx != ry is not a circular column");
-      if (!(r > 0)) ctx.fail(t, "radius must be > 0");
-      plan.columns.push_back(
-          {ctx.metric(ctx.number(t, "cx", 0.0), ctx.number(t, "cy", 0.0)), r * ctx.scale});
-    }
+    add_shape(ctx, t, plan);
   }
   if (!seen_svg) throw InputError(origin + ": not an SVG file (no <svg> element)");
   if (plan.walls.empty() && plan.columns.empty())

@@ -321,6 +321,12 @@ void write_indoor_sequence(const std::string& dir, const IndoorSceneParams& para
     fs::create_directories(fs::path(dir) / sub, ec);
     if (ec) throw InputError(dir + ": cannot create directory " + sub + " (" + ec.message() + ")");
   }
+  // The manifest goes first and comes back last: an interrupted run leaves no manifest that
+  // would pair the files of two runs (every file itself is written whole, atomic_file.hpp).
+  const fs::path manifest = fs::path(dir) / "pairs.txt";
+  fs::remove(manifest, ec);
+  if (ec)
+    throw InputError(manifest.string() + ": cannot remove the old manifest (" + ec.message() + ")");
   const IndoorWorld w = make_indoor_world(params, scans);
   write_floor_plan(w.plan, (fs::path(dir) / "plan.json").string());
   write_floor_plan(w.built, (fs::path(dir) / "built.json").string());
@@ -347,7 +353,7 @@ void write_indoor_sequence(const std::string& dir, const IndoorSceneParams& para
     pairs += "scans/" + name + ".bin plan.json gt=gt/" + name + ".txt name=" + name + "\n";
   }
   write_file_atomic((fs::path(dir) / "poses.txt").string(), poses);
-  write_file_atomic((fs::path(dir) / "pairs.txt").string(), pairs);
+  write_file_atomic(manifest.string(), pairs);
 }
 
 }  // namespace pagor

@@ -43,13 +43,27 @@ mode_t new_file_mode(const std::string& path) {
   return 0666 & ~mask;
 }
 
+// Longest file name (not path) the file systems in use take [bytes].
+constexpr std::size_t kMaxNameBytes = 255;
+
 }  // namespace
+
+std::string sibling_path(const std::string& path, const std::string& suffix) {
+  const std::filesystem::path p(path);
+  const std::string name = p.filename().string();
+  if (name.size() + suffix.size() <= kMaxNameBytes) return path + suffix;
+  const std::string hash = "~" + fingerprint(name);
+  const std::size_t keep = kMaxNameBytes - suffix.size() - hash.size();
+  return (p.parent_path() / (name.substr(0, keep) + hash + suffix)).string();
+}
 
 void write_file_atomic(const std::string& path, std::string_view bytes) {
   const std::filesystem::path target(path);
   const std::filesystem::path dir =
       target.has_parent_path() ? target.parent_path() : std::filesystem::path(".");
-  std::string tmp = (dir / ("." + target.filename().string() + ".tmp-XXXXXX")).string();
+  // ".NAME.tmp-XXXXXX", shortened (sibling_path) when NAME is near the 255-byte limit.
+  std::string tmp =
+      sibling_path((dir / ("." + target.filename().string())).string(), ".tmp-XXXXXX");
   std::vector<char> name(tmp.begin(), tmp.end());
   name.push_back('\0');
   const int fd = ::mkstemp(name.data());

@@ -3,51 +3,75 @@
 #include <pcl/PCLPointCloud2.h>
 #include <pcl/io/pcd_io.h>
 #include <pcl/io/ply_io.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <string_view>
 
-#include "pagor/errors.hpp"
+#include "io/cloud_frame.hpp"
 #include "io/pcd_reader.hpp"
 #include "io/ply_reader.hpp"
+#include "pagor/errors.hpp"
+#include "pagor/io/atomic_file.hpp"
+#include "pagor/io/file_input.hpp"
 
 namespace pagor {
 namespace {
 
 constexpr std::size_t kKittiPointBytes = 4 * sizeof(float);
+// A rounding of coordinates to float32 worth a warning [m].
+constexpr double kReportedNarrowing = 1e-3;
 
-std::vector<char> read_file_bytes(const std::string& path, const char* what) {
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) throw InputError(path + ": " + what + " does not exist");
-  if (std::filesystem::is_directory(path, ec))
-    throw InputError(path + ": " + what + " is a directory, expected a file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot open " + what + " for reading");
-  in.seekg(0, std::ios::end);
-  const std::streamoff size = in.tellg();
-  if (size < 0) throw InputError(path + ": cannot read " + what);
-  in.seekg(0, std::ios::beg);
-  std::vector<char> bytes(static_cast<std::size_t>(size));
-  if (size > 0 && !in.read(bytes.data(), size)) throw InputError(path + ": cannot read " + what);
-  return bytes;
-}
-
+// Whole or not at all: an interrupted write leaves the previous file (atomic_file.hpp).
 void write_file_bytes(const std::string& path, const void* data, std::size_t size) {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  if (!out) throw InputError(path + ": cannot open for writing");
-  out.write(static_cast<const char*>(data), static_cast<std::streamsize>(size));
-  if (!out) throw InputError(path + ": write failed");
+  write_file_atomic(path, std::string_view(static_cast<const char*>(data), size));
 }
 
-PointCloud read_cloud_file(const std::string& path, const std::string& ext) {
-  const std::vector<char> bytes = read_file_bytes(path, "point cloud");
-  const std::string_view view(bytes.data(), bytes.size());
-  return ext == ".pcd" ? parse_pcd(view, path) : parse_ply(view, path);
+PointCloud read_cloud_file(const std::string& path, const std::string& ext,
+                           double& narrowing_loss) {
+  const std::string bytes = read_file(path, "point cloud", kMaxCloudFileBytes);
+  return ext == ".pcd" ? parse_pcd(bytes, path, &narrowing_loss)
+                       : parse_ply(bytes, path, &narrowing_loss);
+}
+
+// A cloud read as float32 far from its file's origin moves to its own frame: exact, since a float
+// minus whole metres is exact in double, and the small result fits a float again.
+void move_to_own_frame(PointCloud& c) {
+  if (!c.origin.isZero()) return;  // the reader chose the frame
+  c.origin = frame_origin(c.size(), [&](std::size_t i) { return c.points[i].cast<double>(); });
+  if (c.origin.isZero()) return;
+  double loss = 0;
+  for (auto& p : c.points)
+    for (int k = 0; k < 3; ++k) p[k] = narrowed(p[k], c.origin[k], loss);
+}
+
+// Drops the points with a non-finite coordinate or one beyond kMaxCoordinate, keeping the
+// per-point arrays aligned and counting both.
+void drop_unusable(LoadedCloud& out) {
+  PointCloud& c = out.cloud;
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < c.size(); ++i) {
+    if (!c.points[i].allFinite()) {
+      ++out.dropped_nonfinite;
+      continue;
+    }
+    if (!(c.points[i].cwiseAbs().maxCoeff() <= kMaxCoordinate)) {
+      ++out.dropped_far;
+      continue;
+    }
+    c.points[kept] = c.points[i];
+    if (c.has_intensities()) c.intensities[kept] = c.intensities[i];
+    if (c.has_labels()) c.labels[kept] = c.labels[i];
+    ++kept;
+  }
+  c.points.resize(kept);
+  if (c.has_intensities()) c.intensities.resize(kept);
+  if (c.has_labels()) c.labels.resize(kept);
 }
 
 pcl::PCLPointCloud2 to_blob(const PointCloud& cloud) {
@@ -90,6 +114,23 @@ std::string replace_extension(const std::string& path, const std::string& ext) {
 
 }  // namespace
 
+Transform to_cloud_frames(const Transform& T_files, const Eigen::Vector3d& source_origin,
+                          const Eigen::Vector3d& target_origin) {
+  if (source_origin.isZero() && target_origin.isZero()) return T_files;
+  // q_file = R p_file + t with p_file = p + o_s, q_file = q + o_t:  q = R p + (R o_s + t - o_t).
+  Transform T = T_files;
+  T.block<3, 1>(0, 3) += T_files.block<3, 3>(0, 0) * source_origin - target_origin;
+  return T;
+}
+
+Transform to_file_frames(const Transform& T_clouds, const Eigen::Vector3d& source_origin,
+                         const Eigen::Vector3d& target_origin) {
+  if (source_origin.isZero() && target_origin.isZero()) return T_clouds;
+  Transform T = T_clouds;
+  T.block<3, 1>(0, 3) += target_origin - T_clouds.block<3, 3>(0, 0) * source_origin;
+  return T;
+}
+
 std::string file_extension(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(),
@@ -98,7 +139,7 @@ std::string file_extension(const std::string& path) {
 }
 
 PointCloud read_kitti_bin(const std::string& path) {
-  const std::vector<char> bytes = read_file_bytes(path, "scan");
+  const std::string bytes = read_file(path, "scan", kMaxCloudFileBytes);
   if (bytes.size() % kKittiPointBytes != 0)
     throw InputError(path + ": size " + std::to_string(bytes.size()) +
                      " bytes is not a multiple of 16 (float32 x, y, z, reflectance per point)");
@@ -116,7 +157,7 @@ PointCloud read_kitti_bin(const std::string& path) {
 }
 
 std::vector<std::uint32_t> read_kitti_labels(const std::string& path) {
-  const std::vector<char> bytes = read_file_bytes(path, "label file");
+  const std::string bytes = read_file(path, "label file", kMaxCloudFileBytes);
   if (bytes.size() % sizeof(std::uint32_t) != 0)
     throw InputError(path + ": size " + std::to_string(bytes.size()) +
                      " bytes is not a multiple of 4 (one uint32 per point)");
@@ -150,24 +191,30 @@ void save_cloud(const PointCloud& cloud, const std::string& path) {
   if (ext != ".pcd" && ext != ".ply")
     throw InputError(path + ": unknown point-cloud extension '" + ext + "' (use .bin, .pcd, .ply)");
   const pcl::PCLPointCloud2 blob = to_blob(cloud);
+  // PCL writes the file itself: into a name beside it, renamed into place once complete.
+  const std::string tmp = sibling_path(path, ".tmp-" + std::to_string(::getpid()));
   int status = 0;
   if (ext == ".pcd") {
     pcl::PCDWriter writer;
-    status = writer.writeBinary(path, blob);
+    status = writer.writeBinary(tmp, blob);
   } else {
     pcl::PLYWriter writer;
-    status = writer.writeBinary(path, blob);
+    status = writer.writeBinary(tmp, blob);
   }
-  if (status < 0) throw InputError(path + ": cannot write " + ext.substr(1) + " file");
+  if (status < 0 || std::rename(tmp.c_str(), path.c_str()) != 0) {
+    std::remove(tmp.c_str());
+    throw InputError(path + ": cannot write " + ext.substr(1) + " file");
+  }
 }
 
 LoadedCloud load_cloud(const std::string& path, const std::string& labels_path) {
   const std::string ext = file_extension(path);
   LoadedCloud out;
+  double narrowing_loss = 0;
   if (ext == ".bin") {
     out.cloud = read_kitti_bin(path);
   } else if (ext == ".pcd" || ext == ".ply") {
-    out.cloud = read_cloud_file(path, ext);
+    out.cloud = read_cloud_file(path, ext, narrowing_loss);
   } else {
     throw InputError(path + ": unknown point-cloud extension '" + ext + "' (use .bin, .pcd, .ply)");
   }
@@ -181,26 +228,28 @@ LoadedCloud load_cloud(const std::string& path, const std::string& labels_path) 
     out.cloud.labels = std::move(labels);
   }
 
-  // Drop non-finite points, keeping the per-point arrays aligned.
-  PointCloud& c = out.cloud;
-  std::size_t kept = 0;
-  for (std::size_t i = 0; i < c.size(); ++i) {
-    if (!c.points[i].allFinite()) continue;
-    c.points[kept] = c.points[i];
-    if (c.has_intensities()) c.intensities[kept] = c.intensities[i];
-    if (c.has_labels()) c.labels[kept] = c.labels[i];
-    ++kept;
-  }
-  out.dropped_nonfinite = c.size() - kept;
-  c.points.resize(kept);
-  if (c.has_intensities()) c.intensities.resize(kept);
-  if (c.has_labels()) c.labels.resize(kept);
+  move_to_own_frame(out.cloud);
+  drop_unusable(out);
+  const PointCloud& c = out.cloud;
   if (out.dropped_nonfinite > 0)
     out.warnings.push_back(path + ": dropped " + std::to_string(out.dropped_nonfinite) +
                            " points with NaN or Inf coordinates");
+  if (out.dropped_far > 0)
+    out.warnings.push_back(path + ": dropped " + std::to_string(out.dropped_far) +
+                           " points lying more than 1e6 m from the cloud's centre (corrupt "
+                           "coordinates)");
+  if (narrowing_loss > kReportedNarrowing) {
+    char buf[160];
+    std::snprintf(buf, sizeof(buf),
+                  ": coordinates stored as float32 lose up to %.1f mm (the cloud spans too far "
+                  "for float32 precision)",
+                  1e3 * narrowing_loss);
+    out.warnings.push_back(path + buf);
+  }
   if (c.empty())
-    throw InputError(path +
-                     (out.dropped_nonfinite > 0 ? ": no finite points" : ": the cloud is empty"));
+    throw InputError(path + (out.dropped_nonfinite + out.dropped_far > 0
+                                 ? ": no finite points within 1e6 m of the cloud's centre"
+                                 : ": the cloud is empty"));
   return out;
 }
 

@@ -3,10 +3,10 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
 #include <sstream>
 
 #include "pagor/errors.hpp"
+#include "pagor/io/file_input.hpp"
 
 namespace pagor {
 namespace {
@@ -64,6 +64,10 @@ CorrespondenceFile parse_correspondence_file(const std::string& text, const std:
       throw InputError(where + ": " + std::to_string(f.size()) + " columns, but line " +
                        std::to_string(columns_line) + " has " + std::to_string(columns));
     }
+    if (out.items.size() == kMaxFileCorrespondences)
+      throw InputError(where + ": more than " + std::to_string(kMaxFileCorrespondences) +
+                       " correspondences, the most the consistency graph takes "
+                       "(kMaxGraphCorrespondences); keep the best ones");
     double v[6];
     for (int k = 0; k < 6; ++k) v[k] = number(f[static_cast<std::size_t>(k)], where, names[k]);
     Correspondence c;
@@ -92,12 +96,8 @@ CorrespondenceFile parse_correspondence_file(const std::string& text, const std:
 }
 
 CorrespondenceFile read_correspondence_file(const std::string& path) {
-  std::ifstream f(path, std::ios::binary);
-  if (!f) throw InputError(path + ": cannot open correspondences file");
-  std::ostringstream s;
-  s << f.rdbuf();
-  if (f.bad()) throw InputError(path + ": read error");
-  return parse_correspondence_file(s.str(), path);
+  return parse_correspondence_file(
+      read_file(path, "correspondences file", kMaxCorrespondenceFileBytes), path);
 }
 
 InlierQuality inlier_quality(const std::vector<int>& indices, const std::vector<char>& inlier) {

@@ -20,16 +20,40 @@ constexpr double kTwo64 = 18446744073709551616.0;
 
 }  // namespace
 
+namespace {
+
+// Rejects nesting deeper than `max_depth` before anything is parsed: brackets outside strings
+// are counted in one pass (nlohmann's depth callback would do it while parsing, but makes the
+// parse quadratic in the number of values). Text that is not JSON fails in the parser afterwards.
+void check_depth(const std::string& text, const std::string& origin, int max_depth) {
+  int depth = 0, line = 1;
+  bool in_string = false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (c == '\n') ++line;
+    if (in_string) {
+      if (c == '\\')
+        ++i;  // an escaped character, '"' included
+      else if (c == '"')
+        in_string = false;
+    } else if (c == '"') {
+      in_string = true;
+    } else if (c == '[' || c == '{') {
+      if (++depth > max_depth)
+        throw ConfigError(origin + ": nesting deeper than " + std::to_string(max_depth) +
+                          " levels of arrays and objects (line " + std::to_string(line) + ")");
+    } else if (c == ']' || c == '}') {
+      --depth;
+    }
+  }
+}
+
+}  // namespace
+
 json parse_json_limited(const std::string& text, const std::string& origin, int max_depth) {
-  const json::parser_callback_t limit = [&](int depth, json::parse_event_t event, json&) {
-    if ((event == json::parse_event_t::object_start || event == json::parse_event_t::array_start) &&
-        depth >= max_depth)
-      throw ConfigError(origin + ": nesting deeper than " + std::to_string(max_depth) +
-                        " levels of arrays and objects");
-    return true;
-  };
+  check_depth(text, origin, max_depth);
   try {
-    return json::parse(text, limit);
+    return json::parse(text);
   } catch (const json::exception& e) {
     // parse_error names the line and column; out_of_range (e.g. 1e400) the number.
     throw ConfigError(origin + ": not valid JSON (" + e.what() + ")");

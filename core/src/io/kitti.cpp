@@ -5,11 +5,12 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
+#include <sstream>
 #include <string_view>
 
-#include "pagor/errors.hpp"
 #include "io/parse_numbers.hpp"
+#include "pagor/errors.hpp"
+#include "pagor/io/file_input.hpp"
 
 namespace pagor {
 namespace {
@@ -23,12 +24,9 @@ std::string frame_name(int frame) {
   return buf;
 }
 
-std::ifstream open_text(const std::string& path) {
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) throw InputError(path + ": does not exist");
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open for reading");
-  return in;
+// The text of a KITTI file (regular files only, size-limited: file_input.hpp), to read by lines.
+std::istringstream open_text(const std::string& path, const char* what) {
+  return std::istringstream(read_file(path, what, kMaxTextFileBytes));
 }
 
 std::vector<std::string_view> split_words(std::string_view line) {
@@ -82,7 +80,7 @@ KittiSequence::KittiSequence(const std::string& root, const std::string& sequenc
     throw InputError(dir_ + ": no such sequence directory (expected <root>/sequences/<seq>)");
 
   const std::string poses_path = dir_ + "/poses.txt";
-  std::ifstream poses = open_text(poses_path);
+  std::istringstream poses = open_text(poses_path, "poses file");
   std::string line;
   int line_no = 0;
   while (std::getline(poses, line)) {
@@ -94,7 +92,7 @@ KittiSequence::KittiSequence(const std::string& root, const std::string& sequenc
   if (poses_.empty()) throw InputError(poses_path + ": no poses");
 
   const std::string calib_path = dir_ + "/calib.txt";
-  std::ifstream calib = open_text(calib_path);
+  std::istringstream calib = open_text(calib_path, "calibration file");
   line_no = 0;
   bool found = false;
   while (std::getline(calib, line)) {
@@ -143,7 +141,7 @@ Transform KittiSequence::ground_truth(int source_frame, int target_frame) const 
 }
 
 std::vector<std::pair<int, int>> read_pairs_file(const std::string& path) {
-  std::ifstream in = open_text(path);
+  std::istringstream in = open_text(path, "pairs file");
   std::vector<std::pair<int, int>> pairs;
   std::string line;
   int line_no = 0;

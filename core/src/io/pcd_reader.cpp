@@ -4,9 +4,10 @@
 #include <string>
 #include <vector>
 
-#include "pagor/errors.hpp"
+#include "io/cloud_frame.hpp"
 #include "io/lzf.hpp"
 #include "io/parse_numbers.hpp"
+#include "pagor/errors.hpp"
 
 namespace pagor {
 namespace {
@@ -196,10 +197,13 @@ Wanted find_fields(const Header& h, const std::string& name) {
 }
 
 // Stores the values of point `i` (x, y, z, intensity, label as doubles, NaN-free checks for the
-// label) into the cloud.
-void store(PointCloud& c, const Wanted& w, std::size_t i, const double* v, const std::string& at) {
+// label) into the cloud, the coordinates relative to its frame origin; `loss` grows to the largest
+// rounding error of a coordinate [m].
+void store(PointCloud& c, const Wanted& w, std::size_t i, const double* v, const std::string& at,
+           double& loss) {
   c.points[i] =
-      Eigen::Vector3f(parse::to_float(v[0]), parse::to_float(v[1]), parse::to_float(v[2]));
+      Eigen::Vector3f(narrowed(v[0], c.origin.x(), loss), narrowed(v[1], c.origin.y(), loss),
+                      narrowed(v[2], c.origin.z(), loss));
   if (w.intensity >= 0) c.intensities[i] = parse::to_float(v[3]);
   if (w.label >= 0) {
     if (!parse::is_uint32(v[4]))
@@ -218,7 +222,7 @@ PointCloud sized_cloud(const Wanted& w, std::size_t n) {
 }
 
 PointCloud read_ascii(std::string_view bytes, const Header& h, const Wanted& w,
-                      const std::string& name) {
+                      const std::string& name, double& loss) {
   std::size_t values_per_row = 0;
   for (const auto& f : h.fields) values_per_row += f.count;
   // First element of each wanted field within a row.
@@ -263,43 +267,51 @@ PointCloud read_ascii(std::string_view bytes, const Header& h, const Wanted& w,
     throw InputError(name + ": the header declares " + std::to_string(h.points) +
                      " points but the ASCII body has " + std::to_string(n) + " rows");
   PointCloud c = sized_cloud(w, n);
+  c.origin = frame_origin(n, [&](std::size_t i) {
+    return Eigen::Vector3d(rows[5 * i], rows[5 * i + 1], rows[5 * i + 2]);
+  });
   for (std::size_t i = 0; i < n; ++i)
-    store(c, w, i, rows.data() + 5 * i, name + ": point " + std::to_string(i));
+    store(c, w, i, rows.data() + 5 * i, name + ": point " + std::to_string(i), loss);
   return c;
 }
 
 // `record(i, field)` gives the address of field's first element of point i.
 template <class At>
-PointCloud read_records(const Header& h, const Wanted& w, const std::string& name, At record) {
+PointCloud read_records(const Header& h, const Wanted& w, const std::string& name, At record,
+                        double& loss) {
   PointCloud c = sized_cloud(w, h.points);
   const int slots[5] = {w.x, w.y, w.z, w.intensity, w.label};
+  const auto value = [&](std::size_t i, int slot) {
+    const Field& f = h.fields[static_cast<std::size_t>(slot)];
+    return parse::decode_scalar(record(i, f), f.type, false);
+  };
+  c.origin = frame_origin(h.points, [&](std::size_t i) {
+    return Eigen::Vector3d(value(i, w.x), value(i, w.y), value(i, w.z));
+  });
   for (std::size_t i = 0; i < h.points; ++i) {
     double v[5] = {0, 0, 0, 0, 0};
-    for (int s = 0; s < 5; ++s) {
-      if (slots[s] < 0) continue;
-      const Field& f = h.fields[static_cast<std::size_t>(slots[s])];
-      v[s] = parse::decode_scalar(record(i, f), f.type, false);
-    }
-    store(c, w, i, v, name + ": point " + std::to_string(i));
+    for (int s = 0; s < 5; ++s)
+      if (slots[s] >= 0) v[s] = value(i, slots[s]);
+    store(c, w, i, v, name + ": point " + std::to_string(i), loss);
   }
   return c;
 }
 
 PointCloud read_binary(std::string_view bytes, const Header& h, const Wanted& w,
-                       const std::string& name) {
+                       const std::string& name, double& loss) {
   const std::size_t available = bytes.size() - h.body;
   if (h.point_step == 0 || h.points > available / h.point_step)
     throw InputError(name + ": truncated PCD body: " + std::to_string(h.points) + " points of " +
                      std::to_string(h.point_step) + " bytes need more than the " +
                      std::to_string(available) + " bytes after the header");
   const auto* base = reinterpret_cast<const unsigned char*>(bytes.data()) + h.body;
-  return read_records(h, w, name, [&](std::size_t i, const Field& f) {
-    return base + i * h.point_step + f.offset;
-  });
+  return read_records(
+      h, w, name, [&](std::size_t i, const Field& f) { return base + i * h.point_step + f.offset; },
+      loss);
 }
 
 PointCloud read_compressed(std::string_view bytes, const Header& h, const Wanted& w,
-                           const std::string& name) {
+                           const std::string& name, double& loss) {
   const std::size_t available = bytes.size() - h.body;
   if (available < 8)
     throw InputError(name + ": binary_compressed PCD body lacks its two 4-byte sizes");
@@ -327,20 +339,26 @@ PointCloud read_compressed(std::string_view bytes, const Header& h, const Wanted
     throw InputError(name + ": binary_compressed PCD body is not valid LZF data of " +
                      std::to_string(uncompressed) + " bytes");
   // The decompressed body stores each field for all points in turn.
-  return read_records(h, w, name, [&](std::size_t i, const Field& f) {
-    const std::size_t fsize = f.count * static_cast<std::size_t>(parse::scalar_size(f.type));
-    return data.data() + f.offset * h.points + i * fsize;
-  });
+  return read_records(
+      h, w, name,
+      [&](std::size_t i, const Field& f) {
+        const std::size_t fsize = f.count * static_cast<std::size_t>(parse::scalar_size(f.type));
+        return data.data() + f.offset * h.points + i * fsize;
+      },
+      loss);
 }
 
 }  // namespace
 
-PointCloud parse_pcd(std::string_view bytes, const std::string& name) {
+PointCloud parse_pcd(std::string_view bytes, const std::string& name, double* narrowing_loss) {
   const Header h = HeaderParser(bytes, name).parse();
   const Wanted w = find_fields(h, name);
-  if (h.data == "ascii") return read_ascii(bytes, h, w, name);
-  if (h.data == "binary") return read_binary(bytes, h, w, name);
-  return read_compressed(bytes, h, w, name);
+  double loss = 0;
+  PointCloud c = h.data == "ascii"    ? read_ascii(bytes, h, w, name, loss)
+                 : h.data == "binary" ? read_binary(bytes, h, w, name, loss)
+                                      : read_compressed(bytes, h, w, name, loss);
+  if (narrowing_loss) *narrowing_loss = loss;
+  return c;
 }
 
 }  // namespace pagor

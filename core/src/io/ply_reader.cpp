@@ -5,8 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "pagor/errors.hpp"
+#include "io/cloud_frame.hpp"
 #include "io/parse_numbers.hpp"
+#include "pagor/errors.hpp"
 
 namespace pagor {
 namespace {
@@ -239,7 +240,15 @@ class BodyReader {
   std::size_t next_token_ = 0;
 };
 
-PointCloud read_vertices(BodyReader& body, const Element& e, const std::string& name) {
+// Whether a coordinate of this kind can hold more than a float32 does (24 significant bits).
+bool wider_than_float(parse::Scalar t) {
+  using parse::Scalar;
+  return t == Scalar::f64 || t == Scalar::i32 || t == Scalar::u32 || t == Scalar::i64 ||
+         t == Scalar::u64;
+}
+
+PointCloud read_vertices(BodyReader& body, const Element& e, const std::string& name,
+                         double& loss) {
   int x = -1, y = -1, z = -1, in = -1, lb = -1;
   std::size_t record = 0;
   for (std::size_t i = 0; i < e.props.size(); ++i) {
@@ -267,6 +276,13 @@ PointCloud read_vertices(BodyReader& body, const Element& e, const std::string& 
   c.points.resize(e.count);
   if (in >= 0) c.intensities.resize(e.count);
   if (lb >= 0) c.labels.resize(e.count);
+  // Wide coordinates are kept in double until the cloud's frame origin is known (cloud_frame.hpp);
+  // binary float32 ones are exact as they are (load_cloud moves them to their frame).
+  const bool wide = body.ascii() ||  // ASCII text holds every digit written
+                    wider_than_float(e.props[static_cast<std::size_t>(x)].type) ||
+                    wider_than_float(e.props[static_cast<std::size_t>(y)].type) ||
+                    wider_than_float(e.props[static_cast<std::size_t>(z)].type);
+  std::vector<Eigen::Vector3d> exact(wide ? e.count : 0);
   std::vector<double> v(e.props.size());
   for (std::size_t r = 0; r < e.count; ++r) {
     body.begin_record(e, r);
@@ -278,8 +294,11 @@ PointCloud read_vertices(BodyReader& body, const Element& e, const std::string& 
     }
     body.end_record();
     const auto at = [&](int k) { return v[static_cast<std::size_t>(k)]; };
-    c.points[r] =
-        Eigen::Vector3f(parse::to_float(at(x)), parse::to_float(at(y)), parse::to_float(at(z)));
+    if (wide)
+      exact[r] = Eigen::Vector3d(at(x), at(y), at(z));
+    else
+      c.points[r] =
+          Eigen::Vector3f(parse::to_float(at(x)), parse::to_float(at(y)), parse::to_float(at(z)));
     if (in >= 0) c.intensities[r] = parse::to_float(at(in));
     if (lb >= 0) {
       if (!parse::is_uint32(at(lb)))
@@ -288,16 +307,26 @@ PointCloud read_vertices(BodyReader& body, const Element& e, const std::string& 
       c.labels[r] = static_cast<std::uint32_t>(at(lb));
     }
   }
+  if (wide) {
+    c.origin = frame_origin(exact.size(), [&](std::size_t i) { return exact[i]; });
+    for (std::size_t r = 0; r < exact.size(); ++r)
+      for (int k = 0; k < 3; ++k) c.points[r][k] = narrowed(exact[r][k], c.origin[k], loss);
+  }
   return c;
 }
 
 }  // namespace
 
-PointCloud parse_ply(std::string_view bytes, const std::string& name) {
+PointCloud parse_ply(std::string_view bytes, const std::string& name, double* narrowing_loss) {
   const Header h = parse_header(bytes, name);
   BodyReader body(bytes, h, name);
   for (const auto& e : h.elements) {
-    if (e.name == "vertex") return read_vertices(body, e, name);
+    if (e.name == "vertex") {
+      double loss = 0;
+      PointCloud c = read_vertices(body, e, name, loss);
+      if (narrowing_loss) *narrowing_loss = loss;
+      return c;
+    }
     body.skip_element(e);
   }
   throw InputError(name + ": PLY file has no 'vertex' element");

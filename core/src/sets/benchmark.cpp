@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <fstream>
 #include <limits>
+#include <new>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "io/json_input.hpp"
 #include "pagor/errors.hpp"
+#include "pagor/io/file_input.hpp"
 #include "pagor/report.hpp"
 #include "pagor/verify/diagnosis.hpp"
 
@@ -39,14 +41,30 @@ PairOutcome run_pair(Pipeline& pipeline, const PairEntry& entry, const std::atom
   } catch (const InputError& e) {
     o.load_error = e.what();
     return o;
+  } catch (const std::bad_alloc&) {
+    o.load_error = describe(entry.source) + ": out of memory while loading the pair";
+    return o;
   }
-  o.loaded = true;
   o.has_ground_truth = pair.T_target_source_gt.has_value();
+  std::vector<std::string> warnings = pair.source.warnings;
+  warnings.insert(warnings.end(), pair.target.warnings.begin(), pair.target.warnings.end());
   pipeline.set_input(std::move(pair.source.cloud), std::move(pair.target.cloud),
                      pair_label_scheme(entry.source));
   pipeline.set_ground_truth(pair.T_target_source_gt);
-  pipeline.run(ProgressFn{}, cancel);
-  return pair_outcome(pipeline, entry, pair.source_name, pair.target_name);
+  // The pair's own failures fail the pair, naming its files; a ConfigError (the configuration's,
+  // the same for every pair) and Cancelled go to the caller.
+  try {
+    pipeline.run(ProgressFn{}, cancel);
+  } catch (const InputError& e) {
+    o.load_error = describe(entry.source) + ": " + e.what();
+    return o;
+  } catch (const std::bad_alloc&) {
+    o.load_error = describe(entry.source) + ": out of memory while running the pair";
+    return o;
+  }
+  o = pair_outcome(pipeline, entry, pair.source_name, pair.target_name);
+  o.load_warnings = std::move(warnings);
+  return o;
 }
 
 PairOutcome pair_outcome(const Pipeline& pipeline, const PairEntry& entry,
@@ -69,8 +87,13 @@ PairOutcome pair_outcome(const Pipeline& pipeline, const PairEntry& entry,
                 ? scores[static_cast<std::size_t>(o.selected_level)]
                 : std::numeric_limits<double>::quiet_NaN();
   for (const auto& e : pipeline.level_errors()) o.level_success.push_back(e && e->success);
-  o.T_target_source = pipeline.selected_transform();
-  o.T_target_source_gt = pipeline.ground_truth();
+  // Poses as the files have them, like the report's (the pipeline's are in the clouds' frames).
+  const auto in_files = [&](const std::optional<Transform>& T) -> std::optional<Transform> {
+    if (!T) return std::nullopt;
+    return to_file_frames(*T, pipeline.source().origin, pipeline.target().origin);
+  };
+  o.T_target_source = in_files(pipeline.selected_transform());
+  o.T_target_source_gt = in_files(pipeline.ground_truth());
   o.level_epsilons = pipeline.graph().thresholds;
   o.level_epsilons.resize(pipeline.cliques().size());
   o.trim = pipeline.config().graph.trim;
@@ -86,7 +109,7 @@ PairOutcome pair_outcome(const Pipeline& pipeline, const PairEntry& entry,
   j["trim"] = to_string(pipeline.config().graph.trim);  // the unit of the levels' epsilon
   j["pair"] = entry.name;
   if (entry.negative) j["negative"] = true;
-  o.report_json = j.dump();
+  o.report_json = j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
   return o;
 }
 
@@ -210,7 +233,7 @@ PairOutcome outcome_from_json(const nlohmann::json& j, const std::string& where)
     throw InputError(where + ": not a pagor bench result (schema pagor.register/1 with 'pair')");
   PairOutcome o;
   o.loaded = true;
-  o.name = j["pair"].is_string() ? j["pair"].get<std::string>() : j["pair"].dump();
+  o.name = j["pair"].is_string() ? j["pair"].get<std::string>() : json_excerpt(j["pair"]);
   o.negative = flag(j, "negative");
   o.source_name = text(j, "source");
   o.target_name = text(j, "target");
@@ -241,15 +264,14 @@ PairOutcome outcome_from_json(const nlohmann::json& j, const std::string& where)
   const nlohmann::json* t = object(j, "timings_ms");
   o.timed = t && t->contains("total");
   if (o.timed) o.total_ms = number(*t, "total");
-  o.report_json = j.dump();
+  o.report_json = j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
   return o;
 }
 
 }  // namespace
 
 std::vector<PairOutcome> read_bench_results(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open the results file");
+  std::istringstream in(read_file(path, "results file", kMaxResultsFileBytes));
   std::vector<PairOutcome> out;
   std::string line;
   for (int n = 1; std::getline(in, line); ++n) {

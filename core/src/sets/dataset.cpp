@@ -18,9 +18,14 @@ LoadedPair load_pair(const PairSource& src, const IndoorParams& indoor) {
       out.source = load_cloud(src.source, src.source_labels);
       if (is_floor_plan_path(src.target)) {
         out.plan = read_floor_plan(src.target);
-        out.target.cloud = sample_floor_plan(*out.plan, indoor.plan_spacing);
+        try {
+          out.target.cloud = sample_floor_plan(*out.plan, indoor.plan_spacing);
+        } catch (const InputError& e) {
+          throw InputError(src.target + ": " + e.what());
+        }
         try {
           FloorScan scan = prepare_floor_scan(out.source.cloud, indoor);
+          scan.cloud.origin = out.source.cloud.origin;  // the projection keeps the scan's frame
           out.source.cloud = std::move(scan.cloud);
           out.scan_columns = std::move(scan.columns);
         } catch (const InputError& e) {
@@ -55,6 +60,10 @@ LoadedPair load_pair(const PairSource& src, const IndoorParams& indoor) {
   }
   // A ground-truth file replaces what the source knows (e.g. better poses for a KITTI pair).
   if (!src.ground_truth.empty()) out.T_target_source_gt = read_transform_file(src.ground_truth);
+  // The pipeline works, and judges poses, in the clouds' own frames (near their points).
+  if (out.T_target_source_gt)
+    out.T_target_source_gt =
+        to_cloud_frames(*out.T_target_source_gt, out.source.cloud.origin, out.target.cloud.origin);
   return out;
 }
 

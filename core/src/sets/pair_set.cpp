@@ -4,10 +4,15 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
+#include <map>
+#include <set>
 #include <sstream>
 
 #include "pagor/errors.hpp"
+#include "pagor/indoor/floor_plan.hpp"
+#include "pagor/io/atomic_file.hpp"
+#include "pagor/io/clouds.hpp"
+#include "pagor/io/file_input.hpp"
 #include "pagor/io/kitti.hpp"
 
 namespace pagor {
@@ -17,13 +22,12 @@ namespace {
 // Tolerance of the rigid-transform check: |R^T R - I| and |det R - 1|.
 constexpr double kRigidTolerance = 1e-3;
 
-std::ifstream open_text(const std::string& path) {
-  std::error_code ec;
-  if (!fs::exists(path, ec)) throw InputError(path + ": does not exist");
-  if (fs::is_directory(path, ec)) throw InputError(path + ": is a directory, not a file");
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open for reading");
-  return in;
+// The lines of a text file (regular files only, size-limited: file_input.hpp).
+std::vector<std::string> text_lines(const std::string& path, const char* what) {
+  std::istringstream in(read_file(path, what, kMaxTextFileBytes));
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(std::move(line));
+  return lines;
 }
 
 bool blank_or_comment(const std::string& line) {
@@ -36,6 +40,104 @@ std::string resolve(const std::string& manifest, const std::string& relative) {
   const fs::path p(relative);
   if (p.is_absolute()) return relative;
   return (fs::path(manifest).parent_path() / p).lexically_normal().string();
+}
+
+// A word of a manifest line; `eq` is the position of its first '=' outside quotes (npos: none).
+struct ManifestWord {
+  std::string text;
+  std::size_t eq = std::string::npos;
+};
+
+// Splits a manifest line into words at blanks outside double quotes; inside quotes a backslash
+// makes the next '"' or backslash literal. A word starting with an unquoted '#' ends the line.
+std::vector<ManifestWord> manifest_words(const std::string& line, const std::string& where) {
+  std::vector<ManifestWord> out;
+  std::size_t i = 0;
+  const auto blank = [](char c) { return c == ' ' || c == '\t' || c == '\r'; };
+  while (i < line.size()) {
+    while (i < line.size() && blank(line[i])) ++i;
+    if (i >= line.size() || line[i] == '#') break;
+    ManifestWord w;
+    bool quoted = false;
+    for (; i < line.size() && (quoted || !blank(line[i])); ++i) {
+      const char c = line[i];
+      if (c == '"') {
+        quoted = !quoted;
+      } else if (quoted && c == '\\' && i + 1 < line.size() &&
+                 (line[i + 1] == '"' || line[i + 1] == '\\')) {
+        w.text += line[++i];
+      } else {
+        if (c == '=' && !quoted && w.eq == std::string::npos) w.eq = w.text.size();
+        w.text += c;
+      }
+    }
+    if (quoted) throw InputError(where + ": a quoted path is not closed (a '\"' is missing)");
+    out.push_back(std::move(w));
+  }
+  return out;
+}
+
+// The pair a manifest line's words describe (its name left empty when the line gives none).
+PairEntry manifest_entry(const std::string& path, const std::vector<ManifestWord>& words,
+                         const std::string& where) {
+  PairEntry e;
+  e.origin = where;
+  e.source.kind = PairSource::Kind::files;
+  e.source.source = resolve(path, words[0].text);
+  e.source.target = resolve(path, words[1].text);
+  for (std::size_t k = 2; k < words.size(); ++k) {
+    const std::string& w = words[k].text;
+    const std::size_t eq = words[k].eq;
+    if (eq == std::string::npos || eq == 0 || eq + 1 == w.size())
+      throw InputError(where + ": '" + w + "' is not a key=value option");
+    const std::string key = w.substr(0, eq), value = w.substr(eq + 1);
+    if (key == "gt")
+      e.source.ground_truth = resolve(path, value);
+    else if (key == "source_labels")
+      e.source.source_labels = resolve(path, value);
+    else if (key == "target_labels")
+      e.source.target_labels = resolve(path, value);
+    else if (key == "name")
+      e.name = value;
+    else if (key == "scheme") {
+      try {
+        builtin_label_scheme(value);
+      } catch (const ConfigError& error) {
+        throw InputError(where + ": scheme: " + error.what());
+      }
+      e.source.label_scheme = value;
+    } else if (key == "overlap") {
+      if (value != "no" && value != "yes")
+        throw InputError(where + ": overlap must be 'yes' or 'no', not '" + value + "'");
+      e.negative = value == "no";
+    } else
+      throw InputError(where + ": unknown key '" + key +
+                       "' (known: gt, source_labels, target_labels, scheme, name, overlap)");
+  }
+  if (e.negative && !e.source.ground_truth.empty())
+    throw InputError(where + ": a pair with overlap=no cannot have a ground truth (gt=)");
+  for (const std::string* f : {&e.source.source, &e.source.target, &e.source.source_labels,
+                               &e.source.target_labels, &e.source.ground_truth}) {
+    std::error_code ec;
+    if (!f->empty() && !fs::is_regular_file(*f, ec))
+      throw InputError(where + ": " + *f + " does not exist");
+  }
+  return e;
+}
+
+// What a manifest pair reads, by file identity (symbolic links and "./" resolved), and whether
+// it is a negative: two lines with the same identity are the same pair.
+std::vector<std::string> identity(const PairEntry& e) {
+  std::vector<std::string> id;
+  for (const std::string* f : {&e.source.source, &e.source.target, &e.source.source_labels,
+                               &e.source.target_labels, &e.source.ground_truth}) {
+    std::error_code ec;
+    const fs::path canonical = f->empty() ? fs::path() : fs::weakly_canonical(*f, ec);
+    id.push_back(ec ? *f : canonical.string());
+  }
+  id.push_back(e.negative ? "negative" : "");
+  id.push_back(e.source.label_scheme);
+  return id;
 }
 
 }  // namespace
@@ -55,11 +157,10 @@ void check_rigid(const Transform& T, const std::string& where) {
 }
 
 Transform read_transform_file(const std::string& path) {
-  std::ifstream in = open_text(path);
   std::vector<double> values;
-  std::string line, token;
+  std::string token;
   int line_no = 0, last_line = 0;
-  while (std::getline(in, line)) {
+  for (const std::string& line : text_lines(path, "transform file")) {
     ++line_no;
     if (blank_or_comment(line)) continue;
     std::istringstream ss(line);
@@ -92,72 +193,72 @@ Transform read_transform_file(const std::string& path) {
 }
 
 PairSet read_pair_manifest(const std::string& path) {
-  std::ifstream in = open_text(path);
   PairSet set;
   set.origin = path;
-  std::string line;
+  std::map<std::string, int> name_line;          // name -> line that used it
+  std::map<std::vector<std::string>, int> same;  // what a pair reads -> line
   int line_no = 0;
-  while (std::getline(in, line)) {
+  for (const std::string& line : text_lines(path, "manifest")) {
     ++line_no;
-    if (blank_or_comment(line)) continue;
     const std::string where = path + ":" + std::to_string(line_no);
-    std::istringstream ss(line);
-    std::vector<std::string> words;
-    for (std::string w; ss >> w;) {
-      if (w[0] == '#') break;
-      words.push_back(w);
-    }
-    if (words.size() < 2 || words[0].find('=') != std::string::npos ||
-        words[1].find('=') != std::string::npos)
+    const std::vector<ManifestWord> words = manifest_words(line, where);
+    if (words.empty()) continue;
+    if (words.size() < 2 || words[0].eq != std::string::npos || words[1].eq != std::string::npos)
       throw InputError(where +
                        ": expected 'SOURCE TARGET [gt=FILE] [source_labels=FILE] "
-                       "[target_labels=FILE] [scheme=NAME] [name=TEXT] [overlap=no]'");
-    PairEntry e;
-    e.origin = where;
-    e.name = std::to_string(line_no);
-    e.source.kind = PairSource::Kind::files;
-    e.source.source = resolve(path, words[0]);
-    e.source.target = resolve(path, words[1]);
-    for (std::size_t k = 2; k < words.size(); ++k) {
-      const auto eq = words[k].find('=');
-      if (eq == std::string::npos || eq == 0 || eq + 1 == words[k].size())
-        throw InputError(where + ": '" + words[k] + "' is not a key=value option");
-      const std::string key = words[k].substr(0, eq), value = words[k].substr(eq + 1);
-      if (key == "gt")
-        e.source.ground_truth = resolve(path, value);
-      else if (key == "source_labels")
-        e.source.source_labels = resolve(path, value);
-      else if (key == "target_labels")
-        e.source.target_labels = resolve(path, value);
-      else if (key == "name")
-        e.name = value;
-      else if (key == "scheme") {
-        try {
-          builtin_label_scheme(value);
-        } catch (const ConfigError& error) {
-          throw InputError(where + ": scheme: " + error.what());
-        }
-        e.source.label_scheme = value;
-      } else if (key == "overlap") {
-        if (value != "no" && value != "yes")
-          throw InputError(where + ": overlap must be 'yes' or 'no', not '" + value + "'");
-        e.negative = value == "no";
-      } else
-        throw InputError(where + ": unknown key '" + key +
-                         "' (known: gt, source_labels, target_labels, scheme, name, overlap)");
-    }
-    if (e.negative && !e.source.ground_truth.empty())
-      throw InputError(where + ": a pair with overlap=no cannot have a ground truth (gt=)");
-    for (const std::string* f : {&e.source.source, &e.source.target, &e.source.source_labels,
-                                 &e.source.target_labels, &e.source.ground_truth}) {
-      std::error_code ec;
-      if (!f->empty() && !fs::is_regular_file(*f, ec))
-        throw InputError(where + ": " + *f + " does not exist");
-    }
+                       "[target_labels=FILE] [scheme=NAME] [name=TEXT] [overlap=no]' (quote a path with "
+                       "spaces: \"my scan.pcd\")");
+    PairEntry e = manifest_entry(path, words, where);
+    e.name = e.name.empty() ? std::to_string(line_no) : e.name;
+    if (const auto [it, fresh] = name_line.emplace(e.name, line_no); !fresh)
+      throw InputError(where + ": the name '" + e.name + "' is already used by line " +
+                       std::to_string(it->second) + "; every pair needs its own name");
+    if (const auto [it, fresh] = same.emplace(identity(e), line_no); !fresh)
+      throw InputError(where + ": the same pair as line " + std::to_string(it->second) +
+                       " (the same files, perhaps spelled another way)");
     set.pairs.push_back(std::move(e));
   }
   if (set.pairs.empty()) throw InputError(path + ": no pairs");
   return set;
+}
+
+std::string pair_fingerprint(const PairEntry& e) {
+  const PairSource& s = e.source;
+  std::string id = "name=" + e.name + (e.negative ? "\nnegative" : "") + "\n";
+  if (!s.label_scheme.empty()) id += "scheme=" + s.label_scheme + "\n";
+  const auto file = [&](const char* role, const std::string& path, const char* what,
+                        std::uint64_t max_bytes) {
+    id += std::string(role) + "=" + (path.empty() ? "-" : file_fingerprint(path, what, max_bytes));
+    id += "\n";
+  };
+  switch (s.kind) {
+    case PairSource::Kind::files:
+      file("source", s.source, "point cloud", kMaxCloudFileBytes);
+      file(is_floor_plan_path(s.target) ? "plan" : "target", s.target, "target",
+           kMaxCloudFileBytes);
+      file("source_labels", s.source_labels, "label file", kMaxCloudFileBytes);
+      file("target_labels", s.target_labels, "label file", kMaxCloudFileBytes);
+      break;
+    case PairSource::Kind::kitti: {
+      const KittiSequence seq(s.kitti_root, s.sequence);
+      file("poses", seq.directory() + "/poses.txt", "poses file", kMaxTextFileBytes);
+      file("calib", seq.directory() + "/calib.txt", "calibration file", kMaxTextFileBytes);
+      file("source", seq.scan_path(s.source_frame), "scan", kMaxCloudFileBytes);
+      file("target", seq.scan_path(s.target_frame), "scan", kMaxCloudFileBytes);
+      for (const auto& [role, frame] :
+           {std::pair{"source_labels", s.source_frame}, std::pair{"target_labels", s.target_frame}})
+        file(role, seq.has_labels(frame) ? seq.label_path(frame) : "", "label file",
+             kMaxCloudFileBytes);
+      id +=
+          "frames=" + std::to_string(s.source_frame) + " " + std::to_string(s.target_frame) + "\n";
+      break;
+    }
+    case PairSource::Kind::synthetic:
+      id += "synthetic=" + std::to_string(s.synthetic_seed) + "\n";
+      break;
+  }
+  file("ground_truth", s.ground_truth, "transform file", kMaxTextFileBytes);
+  return fingerprint(id);
 }
 
 PairSet kitti_pair_set(const std::string& kitti_root, const std::string& sequence,
@@ -165,7 +266,11 @@ PairSet kitti_pair_set(const std::string& kitti_root, const std::string& sequenc
   PairSet set;
   set.origin = pairs_file;
   const KittiSequence seq(kitti_root, sequence);  // a broken poses.txt or calib.txt fails here
+  std::set<std::pair<int, int>> seen;
   for (const auto& [s, t] : read_pairs_file(pairs_file)) {
+    if (!seen.insert({s, t}).second)
+      throw InputError(pairs_file + ": the pair " + std::to_string(s) + " " + std::to_string(t) +
+                       " is listed twice; every pair needs its own line");
     if (static_cast<std::size_t>(std::max(s, t)) >= seq.pose_count())
       throw InputError(pairs_file + ": frame " + std::to_string(std::max(s, t)) +
                        " has no pose in " + seq.directory() + "/poses.txt (" +

@@ -1,6 +1,7 @@
 #include "pagor/sets/runner.hpp"
 
 #include <algorithm>
+#include <new>
 #include <numeric>
 
 #include "pagor/errors.hpp"
@@ -13,6 +14,15 @@ constexpr std::size_t kTreeBytesPerPoint = 32;  // kd-tree node share, estimated
 std::size_t cloud_bytes(const PointCloud& c) {
   return c.points.capacity() * sizeof(Eigen::Vector3f) + c.intensities.capacity() * sizeof(float) +
          c.labels.capacity() * sizeof(std::uint32_t);
+}
+
+// The outcome of a pair that failed, and why.
+PairOutcome failed(const PairEntry& entry, std::string why) {
+  PairOutcome o;
+  o.name = entry.name;
+  o.negative = entry.negative;
+  o.load_error = std::move(why);
+  return o;
 }
 
 }  // namespace
@@ -55,7 +65,19 @@ PairOutcome SetRunner::run(std::size_t i, const Config& config, const std::atomi
   if (slot.pipeline) {
     for (int s = 0; s < kStageCount; ++s) before[s] = slot.pipeline->runs(static_cast<Stage>(s));
     slot.pipeline->set_config(config);
-    slot.pipeline->run(ProgressFn{}, cancel);
+    try {  // the pair's own failure fails the pair, as in run_pair
+      slot.pipeline->run(ProgressFn{}, cancel);
+    } catch (const InputError& e) {
+      o = failed(entry, describe(entry.source) + ": " + e.what());
+    } catch (const std::bad_alloc&) {
+      o = failed(entry, describe(entry.source) + ": out of memory while running the pair");
+    }
+    if (!o.load_error.empty()) {
+      slot.pipeline.reset();
+      slot.since = 0;
+      if (last_ && *last_ == i) last_.reset();
+      return o;
+    }
     o = pair_outcome(*slot.pipeline, entry, slot.source_name, slot.target_name);
   } else {
     auto pipeline = std::make_unique<Pipeline>(config, threads_);

@@ -145,7 +145,7 @@ std::string sweep_csv(const SweepResult& result) {
     out += "\"" + r.setting.label + "\"," + std::to_string(s.pairs_run) + "," +
            std::to_string(s.with_truth) + "," + std::to_string(s.successes) + "," +
            cell(s.success_rate()) + "," + std::to_string(s.upper_bound) + "," +
-           cell(s.upper_bound_rate()) + "," + std::to_string(s.accepted) + "," +
+           cell(s.upper_bound_rate()) + "," + std::to_string(s.accepted_total()) + "," +
            cell(s.precision()) + "," + cell(s.recall()) + "," + times + "\n";
   }
   return out;
@@ -175,7 +175,8 @@ std::string sweep_json_lines(const SweepResult& result) {
                         {"with_truth", s.with_truth},
                         {"successes", s.successes},
                         {"upper_bound", s.upper_bound},
-                        {"accepted", s.accepted},
+                        {"accepted", s.accepted_total()},
+                        {"accepted_unjudged", s.accepted_unjudged},
                         {"precision", json_rate(s.precision())},
                         {"recall", json_rate(s.recall())},
                         {"mean_time_ms", s.mean_total_ms},
@@ -189,7 +190,7 @@ std::string sweep_json_lines(const SweepResult& result) {
                        {"accepted", o.accepted},
                        {"selected_level", o.selected_level}});
     j["pairs"] = std::move(pairs);
-    out += j.dump() + "\n";
+    out += j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";  // names: bytes
   }
   return out;
 }

@@ -62,7 +62,7 @@ Acceptance judge_selection(const Verifier& verifier, const std::vector<PoseEstim
   // alignment loses most of its overlap, one that aligns only what slides along itself (a facade,
   // a hedge, the road) or what matches anything (vegetation) keeps it.
   double shifted = 0.0;
-  for (const Eigen::Vector2d step : {Eigen::Vector2d(1, 0), Eigen::Vector2d(-1, 0),
+  for (const Eigen::Vector2d& step : {Eigen::Vector2d(1, 0), Eigen::Vector2d(-1, 0),
                                      Eigen::Vector2d(0, 1), Eigen::Vector2d(0, -1)}) {
     Transform moved = T;
     moved.block<2, 1>(0, 3) += distinct.max_translation_error * step;

@@ -10,6 +10,7 @@
 
 #include "pagor/pose/gnc.hpp"
 #include "pagor/util/voxel_grid.hpp"
+#include "pagor/util/work_budget.hpp"
 
 namespace pagor {
 namespace {
@@ -78,7 +79,9 @@ struct Refiner::Impl {
 
   Impl(const Verifier& v, double r)
       : verifier(&v),
-        radius(r),
+        radius((check_radius_work(v.target_points(), r, "refinement.normal_radius",
+                                  "the target's verification points"),
+                r)),
         cells(v.target_points(), r),
         normals(v.target_points().size()),
         state(v.target_points().size(), 0) {}

@@ -11,14 +11,18 @@
 ///      "walls":   [{"points": [[0, 0], [40, 0], [40, 25]], "closed": false}, ...],
 ///      "columns": [{"center": [5.0, 5.0], "radius": 0.3}, ...]}
 ///
-/// `format` and `closed` are optional; a wall needs at least two points, a column a radius > 0.
+/// `format` and `closed` are optional; a wall needs at least two points, a column a radius in
+/// (0, 100] m; no coordinate lies beyond ±10^7 m.
 ///
 /// SVG (what CAD and drawing tools export): `<line>`, `<polyline>`, `<polygon>`, `<rect>` and
 /// `<path>` (commands M, L, H, V, Z, absolute or relative) are walls, `<circle>` (and `<ellipse>`
 /// with rx = ry) are columns. The scale is the attribute `data-scale` of the root `<svg>` (metres
 /// per SVG unit), or else `width` in m, cm or mm together with a `viewBox`. The SVG y axis points
-/// down; it is flipped so the plan has y up. Curves and `transform` attributes are rejected with a
-/// message naming the element (flatten and apply them when exporting).
+/// down; it is flipped so the plan has y up. The scale must lie in [10^-6, 10^4] m per unit.
+/// Curves and anything that would move drawn geometry — `transform` attributes on any element
+/// (`<g>` too), CSS transforms (`style`, `<style>`), nested `<svg>` elements, `<use>` — are
+/// rejected with a message naming the element (flatten and apply them when exporting); shapes
+/// inside `<defs>`, `<symbol>`, `<clipPath>`, `<mask>`, `<pattern>` and `<marker>` are not walls.
 ///
 /// Every malformed element is an InputError naming the file and the element (`walls[3].points[1]`
 /// in JSON; the tag, its number and line in SVG).
@@ -31,6 +35,13 @@
 #include "pagor/types.hpp"
 
 namespace pagor {
+
+/// Farthest a plan's point may lie from its origin, on either axis [m] (beyond any building).
+constexpr double kMaxPlanCoordinate = 1e7;
+/// Largest column radius a plan may give [m].
+constexpr double kMaxColumnRadius = 100.0;
+/// Most points a plan is sampled into (sample_floor_plan): 10^7, 500 km of wall at 5 cm.
+constexpr std::size_t kMaxPlanSamples = 10000000;
 
 /// A circular column of the plan.
 struct PlanColumn {
@@ -73,7 +84,8 @@ std::string floor_plan_to_json(const FloorPlan& plan);
 void write_floor_plan(const FloorPlan& plan, const std::string& path);
 
 /// Points every `spacing` [m] along each wall (label kWallLabel) and around each column's outline
-/// (kColumnLabel, at least 8 per column), all at z = 0. `spacing` must be > 0.
+/// (kColumnLabel, at least 8 per column), all at z = 0. `spacing` must be > 0. Throws InputError
+/// naming the wall or column at which the count would pass kMaxPlanSamples, before allocating.
 PointCloud sample_floor_plan(const FloorPlan& plan, double spacing);
 
 /// Points every `spacing` [m] around a circle, at least 8, z = 0, all with `label`.

@@ -102,7 +102,8 @@ DetectionScore score_scan_columns(const IndoorWorld& world, const Eigen::Vector3
 /// (as built, the columns the detector should find), `scans/NNNNNN.bin` (KITTI float32 x, y, z,
 /// reflectance 0), `gt/NNNNNN.txt` (4x4 T_plan_scan), `poses.txt` (one `x y yaw[rad]` per scan) and
 /// `pairs.txt`, a manifest for `pagor bench --manifest` with each scan against the plan. Every file
-/// is written atomically. Throws InputError.
+/// is written atomically, and the manifest is removed first and written last, so an interrupted
+/// run leaves no manifest pairing files of two runs. Throws InputError.
 void write_indoor_sequence(const std::string& dir, const IndoorSceneParams& params, int scans,
                            const IndoorLidarParams& lidar = {});
 

@@ -40,6 +40,12 @@ class LineAppender {
   std::uint64_t size_ = 0;
 };
 
+/// A file beside `path` whose name is `path`'s name with `suffix` added (".partial", ".lock"),
+/// kept within the 255 bytes a file name may have: when the name would be longer, its start is
+/// kept and the rest replaced by a hash of the whole name, so the same `path` always gives the
+/// same sibling and different paths different ones.
+std::string sibling_path(const std::string& path, const std::string& suffix);
+
 /// FNV-1a 64-bit hash of `bytes` as 16 hex digits: a stable fingerprint (e.g. of a configuration).
 std::string fingerprint(std::string_view bytes);
 

@@ -8,12 +8,20 @@
 /// `pagor register --correspondences` and the format the benchmark's association problems are
 /// written in.
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
 #include "pagor/types.hpp"
+#include "pagor/util/work_budget.hpp"
 
 namespace pagor {
+
+/// Most correspondences a file may hold: as many as the consistency graph takes
+/// (kMaxGraphCorrespondences, work_budget.hpp), since every one of them goes into it.
+constexpr std::size_t kMaxFileCorrespondences = kMaxGraphCorrespondences;
+/// Largest correspondences file: 1 KiB per correspondence the file may hold [bytes].
+constexpr std::uint64_t kMaxCorrespondenceFileBytes = std::uint64_t{1024} * kMaxFileCorrespondences;
 
 /// What a correspondences file holds.
 struct CorrespondenceFile {
@@ -27,11 +35,13 @@ struct CorrespondenceFile {
 
 /// Parses the text of a correspondences file. Throws InputError naming `origin` and the line
 /// (`origin:LINE: ...`) for a malformed number, a wrong column count, a negative or non-finite
-/// weight or a flag other than 0/1, and when there is no correspondence at all.
+/// weight or a flag other than 0/1, when there is no correspondence at all, and at the first line
+/// beyond kMaxFileCorrespondences (the message names the budget).
 CorrespondenceFile parse_correspondence_file(const std::string& text,
                                              const std::string& origin = "correspondences");
 
-/// Reads and parses a file. Throws InputError (unreadable, or as above).
+/// Reads and parses a file. Throws InputError (not a regular file, unreadable, larger than
+/// kMaxCorrespondenceFileBytes, or as above).
 CorrespondenceFile read_correspondence_file(const std::string& path);
 
 /// Precision and recall of a set of correspondence indices against ground-truth flags.

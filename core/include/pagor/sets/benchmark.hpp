@@ -20,8 +20,10 @@ namespace pagor {
 struct PairOutcome {
   std::string name;        ///< the pair's name in its set
   bool negative = false;   ///< a known non-overlapping pair
-  bool loaded = false;     ///< false: its files could not be read (see `load_error`)
-  std::string load_error;  ///< why it was skipped
+  bool loaded = false;     ///< false: the pair failed, its files or data unusable (`load_error`)
+  std::string load_error;  ///< why it failed, naming the file
+  /// What loading its clouds had to say (points dropped, ...), each naming the file.
+  std::vector<std::string> load_warnings;
   bool has_ground_truth = false;
   int selected_level = -1;         ///< -1: no valid candidate
   std::optional<PoseError> error;  ///< errors of the selected pose (ground truth known)
@@ -47,8 +49,11 @@ struct PairOutcome {
 
 /// Loads a pair and runs it through `pipeline` with the pipeline's configuration (and the pair's
 /// own label scheme, if its description sets one), and diagnoses it when it has ground truth (the
-/// report's `diagnosis`, null without). A pair whose files cannot be read comes back with `loaded
-/// == false` and the reason; other errors throw (Cancelled when `cancel` becomes true).
+/// report's `diagnosis`, null without). A pair that fails on its own account comes back with
+/// `loaded == false` and the reason naming the file: its files cannot be read (InputError while
+/// loading), the stages refuse its data (InputError while running), or it does not fit in memory.
+/// A ConfigError (the configuration's fault, which would hit every pair) throws, and so does
+/// Cancelled when `cancel` becomes true.
 PairOutcome run_pair(Pipeline& pipeline, const PairEntry& entry,
                      const std::atomic<bool>* cancel = nullptr);
 
@@ -77,8 +82,8 @@ struct LevelPicks {
 
 /// Rates and times over a set of outcomes.
 struct BenchmarkSummary {
-  int pairs_run = 0;          ///< pairs that loaded
-  int skipped = 0;            ///< pairs that did not load
+  int pairs_run = 0;          ///< pairs that ran
+  int skipped = 0;            ///< pairs that failed (files unreadable, data the stages refused)
   int with_truth = 0;         ///< loaded positives with ground truth
   int successes = 0;          ///< of `with_truth`: selected pose within the criterion
   int upper_bound = 0;        ///< of `with_truth`: any level within the criterion
@@ -87,6 +92,8 @@ struct BenchmarkSummary {
   int false_accepts = 0;      ///< negatives accepted, or positives accepted with a wrong pose
   int accepted = 0;           ///< accepted pairs that can be judged (negatives, or with truth)
   int accepted_unjudged = 0;  ///< accepted pairs that cannot be judged (no truth, not negative)
+  /// Every accepted pair: as many as the rows that say "accept".
+  int accepted_total() const { return accepted + accepted_unjudged; }
   /// Success rate: successes / pairs with ground truth.
   std::optional<double> success_rate() const { return ratio(successes, with_truth); }
   /// Upper bound: pairs where any level succeeds / pairs with ground truth.

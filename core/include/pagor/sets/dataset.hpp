@@ -38,7 +38,8 @@ struct PairSource {
 struct LoadedPair {
   LoadedCloud source, target;
   std::string source_name, target_name;         ///< file paths or descriptions, for messages
-  std::optional<Transform> T_target_source_gt;  ///< ground truth when known
+  /// Ground truth when known, between the clouds' own frames (to_cloud_frames, clouds.hpp).
+  std::optional<Transform> T_target_source_gt;
   /// Indoor pair: the floor plan the target was sampled from (its vector geometry, for drawing).
   std::optional<FloorPlan> plan;
   /// Indoor pair: the columns found in the scan, in the scan frame (floor_projection.hpp).

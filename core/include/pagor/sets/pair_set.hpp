@@ -11,6 +11,10 @@
 ///   read the clouds without their labels, `semantickitti`, ...), in place of the configuration's;
 /// - `name=TEXT`: the pair's name in tables (default: the line number);
 /// - `overlap=no`: a known negative, two scans that share nothing (no `gt` then).
+/// A path or value with blanks is written in double quotes (`"my scan.pcd"`, `name="pair 3"`;
+/// inside them `\"` and `\\` stand for `"` and `\`). Every pair needs its own name, and a line
+/// naming the same files as another (however spelled: `./a.pcd`, `a.pcd`, a symbolic link) with
+/// the same role is refused.
 /// A TARGET that is a floor plan (`.json` or `.svg`, floor_plan.hpp) makes the pair an indoor
 /// pair: the scan is registered against the plan (dataset.hpp).
 
@@ -46,6 +50,13 @@ PairSet read_pair_manifest(const std::string& path);
 /// before any pair runs. Throws InputError naming the file (and line).
 PairSet kitti_pair_set(const std::string& kitti_root, const std::string& sequence,
                        const std::string& pairs_file);
+
+/// A fingerprint of what a pair's result depends on besides the configuration and the tool: its
+/// name, whether it is a known negative, and the content of every file it reads (clouds, labels,
+/// ground truth, a floor plan; for a KITTI pair its two scans and label files, poses.txt and
+/// calib.txt), however the files are named or wherever they are. Throws InputError naming a file
+/// that cannot be read.
+std::string pair_fingerprint(const PairEntry& entry);
 
 /// Reads a 4x4 rigid transform (16 numbers, row-major; a 3x4 matrix of 12 numbers is accepted
 /// too). Throws InputError naming the file and line when it is not 12/16 finite numbers, the

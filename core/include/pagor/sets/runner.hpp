@@ -33,9 +33,11 @@ class SetRunner {
   std::size_t size() const { return set_.pairs.size(); }
 
   /// Runs pair `i` with `config`. A kept pipeline re-runs only the stages the configuration
-  /// invalidates; otherwise the pair is loaded from its files (with `config.indoor`). A pair
-  /// whose files cannot be read comes back with `loaded == false` and the reason. Throws
-  /// Cancelled when `cancel` becomes true, and other Errors (a work budget exceeded) as they come.
+  /// invalidates; otherwise the pair is loaded from its files (with `config.indoor`). A pair that
+  /// fails on its own account (unreadable files, data the stages refuse, out of memory) comes
+  /// back with `loaded == false` and the reason naming its files, and the set goes on. Throws
+  /// Cancelled when `cancel` becomes true, and a ConfigError (a work budget the configuration
+  /// exceeds: the same for every pair) as it comes.
   /// Afterwards the pair's pipeline is kept when it fits the cache budget, and the last pair
   /// run is always kept (consecutive runs of one pair reuse it).
   PairOutcome run(std::size_t i, const Config& config, const std::atomic<bool>* cancel = nullptr);

@@ -93,7 +93,8 @@ struct RefinementResult {
 /// estimated when ICP first pairs it and kept for later calls, so a refiner is not thread-safe.
 class Refiner {
  public:
-  /// `verifier` must outlive the refiner.
+  /// `verifier` must outlive the refiner. Throws ConfigError naming refinement.normal_radius when
+  /// the normals' radius searches would pass kMaxNeighbourVisits (work_budget.hpp).
   Refiner(const Verifier& verifier, double normal_radius);
   ~Refiner();
   Refiner(Refiner&&) noexcept;
