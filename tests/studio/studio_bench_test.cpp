@@ -94,7 +94,7 @@ TEST_CASE("benchmark view: a sweep over the open set equals core run_sweep") {
   studio::BenchWorker worker;
   worker.open(set, semreg_config());
   SweepGrid grid;
-  grid.mus = {0.5, 1.0};
+  grid.add("verification.mu", {0.5, 1.0});
   const auto settings = sweep_settings(semreg_config(), grid);
   worker.sweep(settings);
   for (int i = 0; i < 6000 && (worker.status().sweeping || !worker.sweep_result()); ++i)
@@ -265,7 +265,7 @@ TEST_CASE("every widget of the benchmark view, driven") {
 
 TEST_CASE("sweep line plots: success and one pair's D against mu, none for mixed grids") {
   SweepGrid grid;
-  grid.mus = {0.5, 1.0};
+  grid.add("verification.mu", {0.5, 1.0});
   SweepResult r;
   for (const SweepSetting& s : sweep_settings(default_config(), grid)) {
     PairOutcome o;

@@ -52,9 +52,12 @@ void sweep_section(AppState& state, BenchWorker& bench, const BenchStatus& st,
                  "every combination over the open set, reusing each pair's cached stages")) {
     try {
       SweepGrid grid;
-      if (!v.sweep_mu.empty()) grid.mus = parse_number_list(v.sweep_mu, "mu values");
+      if (!v.sweep_mu.empty())
+        grid.dimensions.push_back(
+            parse_sweep_dimension(state.config, "verification.mu", v.sweep_mu, "mu values"));
       if (!v.sweep_thresholds.empty())
-        grid.threshold_sets = parse_threshold_sets(v.sweep_thresholds, "threshold sets");
+        grid.dimensions.push_back(parse_sweep_dimension(state.config, "graph.thresholds",
+                                                        v.sweep_thresholds, "threshold sets"));
       bench.sweep(sweep_settings(state.config, grid));
     } catch (const Error& e) {
       actions.notify(Message::error(e.what()));
