@@ -325,7 +325,12 @@ void benchmark_view(AppState& state, BenchWorker& bench, StudioActions& actions)
   ui::input_text("export path##bench", &state.bench.plot_path,
                  "plots are written to PATH-<plot>.png and .csv");
   ImGui::PushID("sweep_section");
-  if (ui::header("Sweep", true) && bench.can_rerun()) sweep_section(state, bench, st, actions);
+  if (ui::header("Sweep", true)) {
+    if (bench.can_rerun())
+      sweep_section(state, bench, st, actions);
+    else
+      ui::figure_dim("open a manifest or pairs file above to sweep parameters over its pairs");
+  }
   ImGui::PopID();
 }
 

@@ -102,6 +102,7 @@ void file_dialog(AppState& s, StudioActions& actions) {
   ImGui::SetNextWindowSize(
       ImVec2(std::min(720.0f, display.x - 20), std::min(520.0f, display.y - 40)),
       ImGuiCond_Appearing);
+  ImGui::SetNextWindowBgAlpha(1.0f);  // what is behind must not show through the listing
   const std::string title = std::string("Open ") + purpose_name(f.purpose) + "###file_dialog";
   if (ImGui::Begin(title.c_str(), nullptr,
                    ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings)) {

@@ -16,6 +16,9 @@ namespace {
 using json = nlohmann::json;
 
 const ImVec4 kModified(1.0f, 0.78f, 0.3f, 1.0f);
+// A linear slider spans at most this many units; a wider range is typed (a click on a slider
+// over (0, 1000] m would set a noise bound of hundreds of metres).
+constexpr double kSliderSpan = 100.0;
 const char* const kReset = "\xe2\x86\xba";  // an anticlockwise arrow
 
 // "landmarks.classes[2].voxel_size" -> the JSON pointer "/landmarks/classes/2/voxel_size".
@@ -229,7 +232,7 @@ NumberWidget number_widget(const ConfigField& f) {
   w.lo = lo;
   w.hi = hi;
   w.kind = f.info.log_scale ? NumberWidget::log_slider
-           : (std::isfinite(r.min) && std::isfinite(r.max) && hi - lo <= 1000.0)
+           : (std::isfinite(r.min) && std::isfinite(r.max) && hi - lo <= kSliderSpan)
                ? NumberWidget::slider
                : NumberWidget::typed;
   return w;

@@ -22,8 +22,7 @@ struct NumberWidget {
 };
 
 /// The widget of a number or integer field: a log slider where `info.log_scale`, a linear
-/// slider over a range of at most 1000 units, else a typed field; `trim` gives the unit of a
-/// field whose unit is "trim" (the thresholds).
+/// slider over a range of at most 100 units, else a typed field.
 NumberWidget number_widget(const ConfigField& field);
 
 /// The label of a field: its key, its unit in brackets ("voxel_size [m]", a "trim" unit by the

@@ -13,7 +13,7 @@ namespace {
 
 const ImVec4 kGood(0.35f, 0.9f, 0.45f, 1.0f), kBad(1.0f, 0.45f, 0.45f, 1.0f),
     kAmber(1.0f, 0.8f, 0.3f, 1.0f);
-constexpr std::size_t kWarningLines = 3;
+constexpr std::size_t kWarningLines = 2;
 
 // What refinement did to the selected pose: D and, with ground truth, the errors before/after.
 void refinement_lines(const Snapshot& s) {
@@ -137,8 +137,7 @@ void diagnosis_verdict_line(const Snapshot& s) {
 
 void warning_lines(const Snapshot& s) {
   for (std::size_t i = 0; i < s.warnings.size() && i < kWarningLines; ++i)
-    if (ui::figure("warning: " + s.warnings[i], kAmber))
-      ImGui::SetTooltip("%s", s.warnings[i].c_str());
+    ui::figure("warning: " + s.warnings[i], kAmber, true);
   if (s.warnings.size() > kWarningLines)
     ui::figure_dim(
         ui::format("(%zu more warnings: hover the status bar)", s.warnings.size() - kWarningLines));

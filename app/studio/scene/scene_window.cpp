@@ -154,7 +154,7 @@ Transform shown_source_pose(const ViewState& view, const Snapshot& s) {
 
 namespace {
 
-constexpr float kPointPickPx = 6.0f;
+constexpr float kPointPickPx = 8.0f;
 
 // The picks' facts, top right of the view.
 void pick_box(ImDrawList* dl, ImVec2 origin, float w, const std::vector<Pick>& picks) {
@@ -177,6 +177,9 @@ void pick_box(ImDrawList* dl, ImVec2 origin, float w, const std::vector<Pick>& p
 void handle_pick(const Snapshot& s, const ViewState& view, const Transform& pose, const ViewRect& r,
                  const Eigen::Vector2f& mouse, std::vector<Pick>& picks) {
   const ImGuiIO& io = ImGui::GetIO();
+  // Shift as it was when the button went down (it is often let go with the button).
+  static bool shift_at_press = false;
+  if (ImGui::IsMouseClicked(ImGuiMouseButton_Left)) shift_at_press = io.KeyShift;
   if (!ImGui::IsMouseReleased(ImGuiMouseButton_Left) || io.MouseDragMaxDistanceSqr[0] > 16.0f)
     return;
   const std::optional<Pick> p = pick_point(s, view, pose, r, mouse, kPointPickPx);
@@ -184,7 +187,7 @@ void handle_pick(const Snapshot& s, const ViewState& view, const Transform& pose
     picks.clear();
     return;
   }
-  if (!io.KeyShift || picks.size() >= 2) picks.clear();
+  if (!(shift_at_press || io.KeyShift) || picks.size() >= 2) picks.clear();
   picks.push_back(*p);
 }
 

@@ -37,8 +37,12 @@ bool is_kitti_pairs_file(const std::string& path) {
   throw InputError(path + ": no pairs in the file");
 }
 
+// The same file, though written differently (relative, through a symbolic link).
 bool same_file(const std::string& a, const std::string& b) {
-  return !a.empty() && absolute_path(a) == absolute_path(b);
+  if (a.empty() || b.empty()) return false;
+  std::error_code ec;
+  const bool same = std::filesystem::equivalent(a, b, ec);
+  return ec ? absolute_path(a) == absolute_path(b) : same;
 }
 
 std::string resolve(const std::string& path, const std::filesystem::path& base) {

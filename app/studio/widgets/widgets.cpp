@@ -332,10 +332,13 @@ bool input_path(const char* label, std::string* path, const char* tip) {
     const ImVec2 a = ImGui::GetItemRectMin();
     const ImVec2 b(a.x + frame_w, ImGui::GetItemRectMax().y);
     ImDrawList* dl = ImGui::GetWindowDrawList();
-    dl->AddRectFilled(
-        a, b,
-        ImGui::GetColorU32(ImGui::IsItemHovered() ? ImGuiCol_FrameBgHovered : ImGuiCol_FrameBg),
-        style.FrameRounding);
+    // Opaque: the frame's colour is translucent, and the start of the path must not show through.
+    const ImVec4 w = style.Colors[ImGuiCol_WindowBg];
+    const ImVec4 f =
+        style.Colors[ImGui::IsItemHovered() ? ImGuiCol_FrameBgHovered : ImGuiCol_FrameBg];
+    const ImVec4 bg(w.x + (f.x - w.x) * f.w, w.y + (f.y - w.y) * f.w, w.z + (f.z - w.z) * f.w,
+                    1.0f);
+    dl->AddRectFilled(a, b, ImGui::GetColorU32(bg), style.FrameRounding);
     dl->AddText(ImVec2(a.x + style.FramePadding.x, a.y + style.FramePadding.y),
                 ImGui::GetColorU32(ImGuiCol_Text), tail.c_str());
   }
