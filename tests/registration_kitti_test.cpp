@@ -5,6 +5,7 @@
 
 #include "pagor/io/kitti.hpp"
 #include "pagor/pipeline.hpp"
+#include "pagor/verify/diagnosis.hpp"
 #include "pagor/verify/evaluation.hpp"
 #include "pagor/verify/refinement.hpp"
 #include "support/test_util.hpp"
@@ -35,6 +36,29 @@ TEST_CASE("KITTI 0 -> 20 and 20 -> 30 succeed with the default config (2 m / 5 d
     CHECK(p.upper_bound_success());
     CHECK(p.acceptance().accepted);
   }
+}
+
+TEST_CASE("KITTI 0 -> 20: a pose that refinement rescues is a success, within the upper bound") {
+  // With a 1.35 m criterion every candidate of 0 -> 20 misses (1.36 .. 1.45 m) and the refined
+  // selection is right (1.32 m): the upper bound counts it, and the diagnosis says success.
+  const KittiSequence seq(test::kitti_root(), "00");
+  Config config = default_config();
+  config.evaluation.max_translation_error = 1.35;
+  Pipeline p(config);
+  p.set_input(seq.load_frame(0).cloud, seq.load_frame(20).cloud);
+  p.set_ground_truth(seq.ground_truth(0, 20));
+  p.run();
+  REQUIRE(p.refinement().applied);
+  for (const auto& e : p.level_errors()) CHECK_FALSE((e && e->success));
+  REQUIRE(p.selected_error());
+  CHECK(p.selected_error()->success);
+  CHECK(p.upper_bound_success());
+  const auto d = diagnose(p);
+  REQUIRE(d);
+  CHECK(d->verdict == DiagnosisVerdict::success);
+  CHECK(d->explanation.find("after refinement") != std::string::npos);
+  REQUIRE(d->selected_error);
+  CHECK(d->selected_error->translation == p.selected_error()->translation);
 }
 
 TEST_CASE("KITTI: refinement from the ground truth of frame 0 lands on a pose with lower D") {

@@ -108,7 +108,7 @@ void print_registration(const Pipeline& p) {
     if (const auto e = p.selected_error())
       std::printf(
           "ground truth: translation error %.2f m, rotation error %.2f deg -> %s "
-          "(criterion %.1f m / %.1f deg); upper bound: %s\n",
+          "(criterion %g m / %g deg); upper bound: %s\n",
           e->translation, e->rotation_deg, e->success ? "SUCCESS" : "FAILURE",
           p.config().evaluation.max_translation_error, p.config().evaluation.max_rotation_error,
           p.upper_bound_success() ? "yes" : "no");

@@ -1,5 +1,6 @@
-// pagor sweep: a grid of settings (threshold sets, mu, TRIM kind, pose model, clique solver) over
-// a pairs set, each pair loaded once and its cached stages reused across the settings (sweep.hpp).
+// pagor sweep: a grid of settings (any parameter by key path; named options for the threshold
+// sets, mu, TRIM kind, pose model and clique solver) over a pairs set, each pair loaded once and
+// its cached stages reused across the settings (sweep.hpp).
 // Prints a table like the paper's ablation; writes JSON lines, CSV and a plot (PNG and CSV).
 
 #include <cstdio>
@@ -18,29 +19,24 @@
 namespace pagor::cli {
 namespace {
 
-template <class E>
-std::vector<E> parse_enum_list(const std::string& text, const std::string& what) {
-  std::vector<E> out;
-  std::stringstream in(text);
-  std::string item;
-  while (std::getline(in, item, ',')) {
-    const std::optional<E> v = enum_from_string<E>(item);
-    if (!v)
-      throw UsageError(what + ": element " + std::to_string(out.size() + 1) + " '" + item +
-                       "' is not one of " + enum_name_list<E>());
-    out.push_back(*v);
-  }
-  return out;
-}
-
-SweepGrid grid_from_args(const Args& args) {
+// The dimensions the options name, each a key path of the configuration: the named options
+// (--thresholds, --mu, --trim, --model, --solver) and any parameter by `--param PATH=v1,v2,...`.
+SweepGrid grid_from_args(const Args& args, const Config& base) {
   SweepGrid g;
-  if (args.has("thresholds"))
-    g.threshold_sets = parse_threshold_sets(args.get("thresholds"), "--thresholds");
-  if (args.has("mu")) g.mus = parse_number_list(args.get("mu"), "--mu");
-  if (args.has("trim")) g.trims = parse_enum_list<TrimKind>(args.get("trim"), "--trim");
-  if (args.has("model")) g.models = parse_enum_list<PoseModel>(args.get("model"), "--model");
-  if (args.has("solver")) g.solvers = parse_enum_list<CliqueSolver>(args.get("solver"), "--solver");
+  const std::pair<const char*, const char*> named[] = {{"thresholds", "graph.thresholds"},
+                                                       {"mu", "verification.mu"},
+                                                       {"trim", "graph.trim"},
+                                                       {"model", "gnc.model"},
+                                                       {"solver", "clique.solver"}};
+  for (const auto& [option, path] : named)
+    if (args.has(option))
+      g.dimensions.push_back(
+          parse_sweep_dimension(base, path, args.get(option), std::string("--") + option));
+  if (args.has("param")) {
+    std::stringstream in(args.get("param"));
+    std::string spec;
+    while (in >> spec) g.dimensions.push_back(parse_sweep_spec(base, spec, "--param"));
+  }
   return g;
 }
 
@@ -85,6 +81,9 @@ std::vector<Option> sweep_options() {
           {"trim", 1, "LIST", "TRIM kinds: ratio,difference"},
           {"model", 1, "LIST", "pose models: se3,se2,four_dof"},
           {"solver", 1, "LIST", "clique solvers: cascaded,independent,exact"},
+          {"param", 1, "PATH=LIST",
+           "any parameter by key path, e.g. 'gnc.noise_bound=0.5,1,2'; several separated by "
+           "spaces (pagor config --describe lists the paths)"},
           {"out", 1, "FILE", "write one JSON line per setting (pagor.sweep/1)"},
           {"csv", 1, "FILE", "write the table as CSV"},
           {"plot", 1, "PNG", "draw success and upper bound per setting as a PNG"},
@@ -101,7 +100,7 @@ int run_sweep_command(const Args& args) {
     if (args.has(key)) outputs.push_back({std::string("--") + key, args.get(key)});
   check_outputs(outputs, inputs);
   std::vector<SweepSetting> settings;
-  with_config_origin(args, [&] { settings = sweep_settings(base, grid_from_args(args)); });
+  with_config_origin(args, [&] { settings = sweep_settings(base, grid_from_args(args, base)); });
 #ifndef PAGOR_CLI_PLOT
   if (args.has("plot") || args.has("plot-csv"))
     throw UsageError("--plot needs the studio's renderer: build with PAGOR_BUILD_STUDIO=ON");

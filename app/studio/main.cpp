@@ -10,12 +10,15 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <vector>
 
 #include "common/args.hpp"
 #include "common/outputs.hpp"
 #include "common/pair_args.hpp"
 #include "pagor/errors.hpp"
+#include "pagor/io/atomic_file.hpp"
 #include "pagor/io/kitti.hpp"
 #include "render/headless.hpp"
 #include "studio.hpp"
@@ -37,6 +40,8 @@ std::vector<cli::Option> studio_options() {
       {"screenshot", 1, "PNG", "headless: write the rendered UI to this PNG"},
       {"size", 1, "WxH", "image or window size in pixels (default 1280x720)"},
       {"frames", 1, "N", "headless: also time N frames and print the frame time"},
+      {"json", 1, "OUT",
+       "headless: write the result as pagor register --json does (schema pagor.register/1)"},
       {"timeout", 1, "S",
        "headless: give up waiting for the computation after S seconds (default 600)"},
   };
@@ -47,7 +52,13 @@ std::vector<cli::Option> studio_options() {
 AppState state_from_args(const cli::Args& args) {
   AppState s;
   if (args.has("session")) load_session(args.get("session"), s);
-  if (args.has("config")) s.config = load_config(args.get("config"));
+  if (args.has("config")) {
+    s.config = load_config(args.get("config"));
+    std::ifstream in(args.get("config"));
+    std::ostringstream text;
+    text << in.rdbuf();
+    s.preset = preset_of(text.str());
+  }
   if (const auto chosen = cli::pair_source_from_args(args)) {
     s.data = *chosen;
     s.have_data = true;
@@ -55,8 +66,9 @@ AppState state_from_args(const cli::Args& args) {
   }
   if (args.has("pairs")) {
     s.pairs_file = args.get("pairs");
-    s.pairs = read_pairs_file(s.pairs_file);
-    s.pair_index = index_of_pair(s.pairs, s.data);
+    s.pairs = read_step_pairs(s.pairs_file, resolve_path(s, s.data.kitti_root), s.data.sequence);
+    s.pair_index = index_of_pair(s.pairs, resolved_data(s));
+    if (!s.have_data) step_pair_index(s, 1);  // no pair named: the first of the file
   }
   if (!s.have_data && !args.has("session")) {
     // Nothing asked for: the shared KITTI pair 20 -> 30 when it is there, else the synthetic scene.
@@ -94,9 +106,19 @@ AppState state_from_args(const cli::Args& args) {
   std::_Exit(1);
 }
 
+// Where the window keeps its recent files: $XDG_CONFIG_HOME/pagor-studio/recent.txt (else
+// ~/.config/...); empty without a home. The headless studio keeps none.
+std::string recent_files_path() {
+  if (const char* x = std::getenv("XDG_CONFIG_HOME"); x && *x)
+    return std::string(x) + "/pagor-studio/recent.txt";
+  if (const char* h = std::getenv("HOME"); h && *h)
+    return std::string(h) + "/.config/pagor-studio/recent.txt";
+  return {};
+}
+
 int run_headless(const cli::Args& args, AppState state) {
-  if (!args.has("screenshot") && !args.has("frames"))
-    throw cli::UsageError("--headless needs --screenshot OUT.png (and/or --frames N)");
+  if (!args.has("screenshot") && !args.has("frames") && !args.has("json"))
+    throw cli::UsageError("--headless needs --screenshot OUT.png, --json OUT or --frames N");
   if (!state.have_data) throw Error("nothing to show: the session and the arguments name no data");
   if (args.has("screenshot")) {  // the picture never replaces an input
     std::vector<cli::NamedPath> inputs = cli::option_inputs(args);
@@ -151,6 +173,10 @@ int run_headless(const cli::Args& args, AppState state) {
     std::printf("wrote %s (%dx%d, %s)\n", args.get("screenshot").c_str(), w, h,
                 gl.describe().c_str());
   }
+  if (args.has("json")) {  // what the studio shows, in the CLI's schema
+    write_file_atomic(args.get("json"), studio.worker().snapshot()->report_json);
+    std::printf("wrote %s\n", args.get("json").c_str());
+  }
   if (args.has("frames")) {
     const int n = std::max(1, cli::parse_int(args.get("frames"), "--frames"));
     const int uploads = studio.scene().cloud_uploads();
@@ -195,8 +221,15 @@ int run_window(AppState state) {
     if (g_studio && action == GLFW_PRESS)
       g_studio->queue_key(key, (mods & GLFW_MOD_CONTROL) != 0, (mods & GLFW_MOD_SHIFT) != 0);
   });
+  // Files dropped on the window are opened by their kind.
+  glfwSetDropCallback(window, [](GLFWwindow*, int count, const char** paths) {
+    if (!g_studio) return;
+    g_studio->open_files(std::vector<std::string>(paths, paths + count));
+  });
   ImGui_ImplGlfw_InitForOpenGL(window, true);  // platform only: input, time, cursor
   {
+    state.recent_file = recent_files_path();
+    load_recent_files(state);
     Studio studio(gl, std::move(state));
     g_studio = &studio;
     struct Reset {

@@ -82,7 +82,7 @@ void Studio::submit_data() {
     state_.camera.top_down = true;
     state_.camera.yaw_deg = kPlanYawDeg;
   }
-  worker_.submit(resolved_data(state_), state_.config);
+  worker_.submit(resolved_data(state_), state_.config, state_.inline_truth);
 }
 
 void Studio::submit_config() {
@@ -199,13 +199,14 @@ void Studio::left_panel(float left, float H) {
     };
     AppState& s = state_;
     section("Data", true, [&] { data_panel(s, *this); });
-    section("Parameters", true, [&] { parameters_panel(s.config, params_, config_error_, *this); });
+    section("Parameters", true,
+            [&] { parameters_panel(s.config, s.preset, params_, config_error_, *this); });
     section("View", true, [&] {
       view_panel(s.view, camera_control(), s.show_help, snapshot_ && snapshot_->plan);
     });
     section("History", false, [&] { history_panel(params_, runs_, *this); });
     section("Session", false, [&] {
-      session_panel(SessionFiles{s.session_path, s.screenshot_path}, *this);
+      session_panel(SessionFiles{s.session_path, s.screenshot_path, s.bench.plot_path}, *this);
     });
     ImGui::PopItemWidth();
   }
@@ -241,7 +242,7 @@ void Studio::pair_view(float x, float w, float H) {
   place(x, 0, w, scene_h);
   if (ImGui::Begin(scene_title().c_str(), nullptr,
                    kPanelFlags | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse))
-    scene_window(scene_, snapshot_.get(), state_.view, camera_control());
+    scene_window(scene_, snapshot_.get(), state_.view, camera_control(), state_.picks);
   ImGui::End();
   ImGui::PopStyleVar(2);
 
@@ -250,10 +251,11 @@ void Studio::pair_view(float x, float w, float H) {
   const bool diagnosis = view.diagnosis.panel;
   if (ImGui::Begin(diagnosis ? "Diagnosis" : "Pyramid", nullptr, kPanelFlags)) {
     bottom_panel_switch(view.diagnosis);
+    const Exports exports{state_.bench.plot_path, *this};
     if (diagnosis)
-      diagnosis_panel(snapshot_.get(), stale_reason_, view);
+      diagnosis_panel(snapshot_.get(), stale_reason_, view, exports);
     else
-      pyramid_panel(snapshot_.get(), runs_.changes(), stale_reason_, view);
+      pyramid_panel(snapshot_.get(), runs_.changes(), stale_reason_, view, exports);
   }
   ImGui::End();
 }
@@ -326,6 +328,7 @@ void Studio::frame(int width, int height) {
   const float W = static_cast<float>(width), H = static_cast<float>(height) - kStatusHeight;
   layout_windows(status, W, H);
   if (state_.show_help) help_overlay(W, H);
+  file_dialog(state_, *this);
   // One undo step per finished edit (a slider drag is one step), valid configurations only.
   if (!ImGui::IsAnyItemActive() && config_error_.empty()) params_.commit(state_.config);
 

@@ -58,6 +58,13 @@ class Studio : public StudioActions {
   void export_plot(const Plot& plot, const std::string& path) override;
   /// Keeps the message in `state().message`, which the status bar shows.
   void notify(Message message) override;
+  /// Opens a user's file (state/open_file.hpp) and re-runs what it changed.
+  void open_file(const std::string& path, FilePurpose purpose) override;
+  /// Puts text on ImGui's clipboard (the system's in the window) and says so.
+  void copy_text(const std::string& text, const std::string& what) override;
+  /// Files dropped on the window (the window's drop callback; the tests call it the same way):
+  /// each opened by its kind, two clouds as source and target.
+  void open_files(const std::vector<std::string>& paths);
 
   /// A key press (GLFW key code) for the shortcuts, queued until the next frame so that a press
   /// and release between two frames still counts (ImGui 1.86 only sees keys held at a frame).

@@ -27,7 +27,7 @@ const std::vector<Shortcut>& shortcuts() {
       {"R", "reset the camera"},
       {"T", "toggle top-down (orthographic) view"},
       {"+ / -", "larger / smaller points"},
-      {"Left / Right", "previous / next pair of the pairs file"},
+      {"Left / Right", "previous / next pair of the pairs file or manifest"},
       {"S", "save a screenshot (PNG path in the Session panel)"},
       {"Ctrl+S / Ctrl+O", "save / load the session"},
       {"Ctrl+Z / Ctrl+Y", "undo / redo a parameter change"},
@@ -76,7 +76,7 @@ void Studio::handle_shortcuts() {
         save_screenshot();
         break;
       case key::Left:
-        step_pair(state_, state_.pair_index < 0 ? 0 : -1, *this);
+        step_pair(state_, -1, *this);
         break;
       case key::Right:
         step_pair(state_, 1, *this);

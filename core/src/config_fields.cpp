@@ -94,16 +94,23 @@ std::string field_json(const Config& config, const std::string& path) {
 }
 
 void set_field_json(Config& config, const std::string& path, const std::string& json_text) {
+  set_fields_json(config, {{path, json_text}});
+}
+
+void set_fields_json(Config& config,
+                     const std::vector<std::pair<std::string, std::string>>& values) {
   nlohmann::json j = nlohmann::json::parse(config_to_json(config, -1));
-  const auto ptr = pointer_of(path);
-  if (!j.contains(ptr)) unknown(path);
-  nlohmann::json value;
-  try {
-    value = nlohmann::json::parse(json_text);
-  } catch (const nlohmann::json::exception&) {
-    throw ConfigError("config: " + path + ": not JSON: " + json_text.substr(0, 60));
+  for (const auto& [path, json_text] : values) {
+    const auto ptr = pointer_of(path);
+    if (!j.contains(ptr)) unknown(path);
+    nlohmann::json value;
+    try {
+      value = nlohmann::json::parse(json_text);
+    } catch (const nlohmann::json::exception&) {
+      throw ConfigError("config: " + path + ": not JSON: " + json_text.substr(0, 60));
+    }
+    j[ptr] = std::move(value);
   }
-  j[ptr] = std::move(value);
   config = parse_config(j.dump(), "config");  // every key present: the preset adds nothing
 }
 

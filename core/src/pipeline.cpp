@@ -338,6 +338,9 @@ std::optional<PoseError> Pipeline::unrefined_error() const {
 }
 
 bool Pipeline::upper_bound_success() const {
+  // Any pose the pipeline made: each level's candidate, and the selection after refinement (so
+  // the bound is never below the success of the selected pose).
+  if (const auto e = selected_error(); e && e->success) return true;
   for (const auto& e : level_errors_)
     if (e && e->success) return true;
   return false;

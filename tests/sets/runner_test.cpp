@@ -116,7 +116,7 @@ TEST_CASE("run_set: outcomes in set order, reused results, hooks in the order as
 TEST_CASE("a sweep on the runner equals a benchmark run per setting") {
   const PairSet set = synthetic_set();
   SweepGrid grid;
-  grid.mus = {0.5, 1.0};
+  grid.add("verification.mu", {0.5, 1.0});
   const auto settings = sweep_settings(synthetic_config(), grid);
   SetRunner runner(set);
   const SweepResult swept = run_sweep(runner, settings);

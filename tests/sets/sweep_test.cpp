@@ -57,9 +57,9 @@ void check_sweep_matches_bench(const PairSet& set, const std::vector<SweepSettin
 
 TEST_CASE("the sweep grid varies mu fastest and labels the dimensions that vary") {
   SweepGrid grid;
-  grid.mus = {0.5, 1.0};
-  grid.threshold_sets = {{0.02, 0.04}, {0.03, 0.06, 0.12}};
-  grid.models = {PoseModel::se3};
+  grid.add("verification.mu", {0.5, 1.0});
+  grid.add_json("graph.thresholds", {"[0.02,0.04]", "[0.03,0.06,0.12]"});
+  grid.add_json("gnc.model", {"\"se3\""});
   const auto settings = sweep_settings(default_config(), grid);
   REQUIRE(settings.size() == 4);
   CHECK(settings[0].label == "eps=0.02/0.04 mu=0.5 m");
@@ -67,16 +67,65 @@ TEST_CASE("the sweep grid varies mu fastest and labels the dimensions that vary"
   CHECK(settings[2].label == "eps=0.03/0.06/0.12 mu=0.5 m");
   CHECK(settings[3].config.graph.thresholds == std::vector<double>{0.03, 0.06, 0.12});
   CHECK(settings[3].config.gnc.model == PoseModel::se3);  // a one-value dimension applies
+  // Each setting names every dimension's value, in document order.
+  using Values = std::vector<std::pair<std::string, std::string>>;
+  CHECK(settings[3].values == Values{{"graph.thresholds", "[0.03,0.06,0.12]"},
+                                     {"gnc.model", "\"se3\""},
+                                     {"verification.mu", "1.0"}});
   CHECK(sweep_settings(default_config(), {}).front().label == "base");
   SweepGrid indoor;  // difference TRIM: thresholds in metres
-  indoor.trims = {TrimKind::difference};
-  indoor.threshold_sets = {{0.05, 0.1}, {0.2}};
+  indoor.add_json("graph.trim", {"\"difference\""});
+  indoor.add_json("graph.thresholds", {"[0.05,0.1]", "[0.2]"});
   CHECK(sweep_settings(default_config(), indoor).back().label == "eps=0.2 m");
 
-  grid.mus = {0.5, -1.0};
-  CHECK_THROWS_WITH(
-      sweep_settings(default_config(), grid),
-      Catch::Contains("sweep setting 2 (eps=0.02/0.04 mu=-1 m)") && Catch::Contains("mu"));
+  grid.dimensions[0].values = {"0.5", "-1.0"};
+  CHECK_THROWS_WITH(sweep_settings(default_config(), grid),
+                    Catch::Contains("sweep setting 2") && Catch::Contains("verification.mu"));
+  SweepGrid wrong;
+  wrong.add("verification.nu", {1.0});
+  CHECK_THROWS_WITH(sweep_settings(default_config(), wrong),
+                    Catch::Contains("verification.nu: no such parameter"));
+}
+
+TEST_CASE("any numeric parameter sweeps by key path, in 1-D and 2-D") {
+  const Config base = default_config();
+  SweepGrid grid;
+  grid.dimensions.push_back(parse_sweep_spec(base, "gnc.noise_bound=0.5,2", "--param"));
+  grid.dimensions.push_back(
+      parse_sweep_spec(base, "landmarks.classes[0].cluster_tolerance=0.3,0.6,0.9", "--param"));
+  const auto settings = sweep_settings(base, grid);
+  REQUIRE(settings.size() == 6);
+  // The landmark parameter comes first in the document, so it varies slowest.
+  CHECK(settings[0].label == "landmarks.classes[0].cluster_tolerance=0.3 m gnc.noise_bound=0.5 m");
+  CHECK(settings[1].config.gnc.noise_bound == 2.0);
+  CHECK(settings[1].config.landmarks.classes[0].cluster_tolerance == 0.3);
+  CHECK(settings[5].config.landmarks.classes[0].cluster_tolerance == 0.9);
+  // Everything else is the base's.
+  Config back = settings[5].config;
+  back.gnc.noise_bound = base.gnc.noise_bound;
+  back.landmarks.classes[0].cluster_tolerance = base.landmarks.classes[0].cluster_tolerance;
+  CHECK(config_to_json(back) == config_to_json(base));
+
+  // Values that are only valid together are set together.
+  SweepGrid sizes;
+  sizes.add("landmarks.classes[0].min_points", {6000});
+  sizes.add("landmarks.classes[0].max_points", {7000});
+  CHECK(sweep_settings(base, sizes).front().config.landmarks.classes[0].min_points == 6000);
+
+  // Choices by name, lists of numbers as sets, integers and flags as numbers.
+  CHECK(parse_sweep_dimension(base, "clique.solver", "exact,cascaded", "--solver").values ==
+        std::vector<std::string>{"\"exact\"", "\"cascaded\""});
+  CHECK(parse_sweep_dimension(base, "graph.thresholds", "0.1;0.2,0.4", "--thresholds").values ==
+        std::vector<std::string>{"[0.1]", "[0.2,0.4]"});
+  CHECK(parse_sweep_dimension(base, "refinement.enabled", "0,1", "x").values.size() == 2);
+  CHECK_THROWS_WITH(parse_sweep_dimension(base, "clique.solver", "exact,fast", "--solver"),
+                    Catch::Contains("--solver: element 2 'fast' is not one of"));
+  CHECK_THROWS_WITH(parse_sweep_spec(base, "landmarks.classes[0].name=a", "--param"),
+                    Catch::Contains("cannot be swept"));
+  CHECK_THROWS_WITH(parse_sweep_spec(base, "gnc.noise_bound", "--param"),
+                    Catch::Contains("expected PATH=v1,v2"));
+  CHECK_THROWS_WITH(parse_sweep_spec(base, "gnc.nothing=1", "--param"),
+                    Catch::Contains("no such parameter"));
 }
 
 TEST_CASE("number lists and threshold sets are parsed with the element named") {
@@ -94,8 +143,9 @@ TEST_CASE("a sweep's numbers on two semreg-dev pairs equal separate bench runs p
   set.pairs.resize(2);
   const Config base = load_config(PAGOR_SOURCE_DIR "/bench/manifests/semreg-dev.json");
   SweepGrid grid;
-  grid.mus = {1.0, 0.3};
-  grid.threshold_sets = {base.graph.thresholds, {0.01, 0.02}};
+  grid.add("verification.mu", {1.0, 0.3});
+  grid.dimensions.push_back(
+      parse_sweep_dimension(base, "graph.thresholds", "0.02,0.04,0.08,0.16;0.01,0.02", "eps"));
   check_sweep_matches_bench(set, sweep_settings(base, grid));
 }
 
@@ -103,7 +153,7 @@ TEST_CASE("a sweep's numbers on a KITTI pair equal separate bench runs per setti
   PairSet set = kitti_pair_set(PAGOR_KITTI_DIR, "00", PAGOR_KITTI_DIR "/pairs_00_dev.txt");
   set.pairs.resize(1);
   SweepGrid grid;
-  grid.solvers = {CliqueSolver::cascaded, CliqueSolver::exact};
-  grid.mus = {1.0, 2.0};
+  grid.add_json("clique.solver", {"\"cascaded\"", "\"exact\""});
+  grid.add("verification.mu", {1.0, 2.0});
   check_sweep_matches_bench(set, sweep_settings(default_config(), grid));
 }

@@ -94,13 +94,14 @@ TEST_CASE("benchmark view: a sweep over the open set equals core run_sweep") {
   studio::BenchWorker worker;
   worker.open(set, semreg_config());
   SweepGrid grid;
-  grid.mus = {0.5, 1.0};
+  grid.add("verification.mu", {0.5, 1.0});
   const auto settings = sweep_settings(semreg_config(), grid);
-  worker.sweep(settings);
+  worker.sweep(settings, semreg_config());
   for (int i = 0; i < 6000 && (worker.status().sweeping || !worker.sweep_result()); ++i)
     std::this_thread::sleep_for(std::chrono::milliseconds(100));
-  const auto got = worker.sweep_result();
-  REQUIRE(got);
+  const auto record = worker.sweep_result();
+  REQUIRE(record);
+  const SweepResult* got = &record->result;
   const SweepResult want = run_sweep(set, settings);
   REQUIRE(got->settings.size() == want.settings.size());
   for (std::size_t k = 0; k < want.settings.size(); ++k) {
@@ -176,7 +177,8 @@ TEST_CASE("benchmark view: state saved and restored with the session") {
   s.bench.sort = 3;
   s.bench.descending = true;
   s.bench.budget_mib = 300;
-  s.bench.sweep_mu = "0.5,1";
+  s.bench.sweep_path = "gnc.noise_bound";
+  s.bench.sweep_values = "0.5,1";
   studio::save_session(s, tmp.file("s.json"));
   studio::AppState r;
   studio::load_session(tmp.file("s.json"), r);
@@ -188,7 +190,14 @@ TEST_CASE("benchmark view: state saved and restored with the session") {
   CHECK(r.bench.sort == 3);
   CHECK(r.bench.descending);
   CHECK(r.bench.budget_mib == 300);
-  CHECK(r.bench.sweep_mu == "0.5,1");
+  CHECK(r.bench.sweep_path == "gnc.noise_bound");
+  CHECK(r.bench.sweep_values == "0.5,1");
+  // A session written before sweeps took any parameter: its mu values become a sweep of mu.
+  std::ofstream(tmp.file("old.json"))
+      << R"({"schema": "pagor.session/1", "benchmark": {"sweep_mu": "0.2,0.4"}})";
+  studio::load_session(tmp.file("old.json"), r);
+  CHECK(r.bench.sweep_path == "verification.mu");
+  CHECK(r.bench.sweep_values == "0.2,0.4");
   // The row filter is stored as the number it always was (0 all ... 4 rejected).
   s.bench.show = studio::RowFilter::accepted;
   studio::save_session(s, tmp.file("s.json"));
@@ -233,6 +242,7 @@ TEST_CASE("every widget of the benchmark view, driven") {
       [&] {
         // Back to the view with the set open (after 'pair view', 'close' or a row click).
         hide_clouds(d.state());
+        d.state().dialog.open = false;  // the file browser has a test of its own
         if (d.state().main_view == studio::MainView::benchmark && d.studio().bench().can_rerun())
           return;
         d.state().bench.path = small_manifest(tmp);
@@ -252,7 +262,8 @@ TEST_CASE("every widget of the benchmark view, driven") {
   REQUIRE(sweep);
   REQUIRE(d.click_widget("apply##sweep0"));
   d.frames(2);
-  CHECK(d.state().config.verification.mu == sweep->settings[0].setting.config.verification.mu);
+  CHECK(d.state().config.verification.mu ==
+        sweep->result.settings[0].setting.config.verification.mu);
   d.state().bench.source = studio::BenchSource::kitti_pairs;
   d.frames(2);
   CHECK(d.find("KITTI root##bench", "Benchmark"));
@@ -265,7 +276,7 @@ TEST_CASE("every widget of the benchmark view, driven") {
 
 TEST_CASE("sweep line plots: success and one pair's D against mu, none for mixed grids") {
   SweepGrid grid;
-  grid.mus = {0.5, 1.0};
+  grid.add("verification.mu", {0.5, 1.0});
   SweepResult r;
   for (const SweepSetting& s : sweep_settings(default_config(), grid)) {
     PairOutcome o;
@@ -283,9 +294,10 @@ TEST_CASE("sweep line plots: success and one pair's D against mu, none for mixed
   CHECK(line.series[0].y == std::vector<double>{0, 100});
   const studio::Plot pair = studio::sweep_pair_plot(r, 0);
   REQUIRE(pair.series.size() == 2);
-  CHECK(pair.series[0].x == std::vector<double>{1.0});             // success
-  CHECK(pair.series[1].y == std::vector<double>{50.0});            // failure, D = 50 m
-  r.settings[1].setting.config.graph.trim = TrimKind::difference;  // a second dimension varies
+  CHECK(pair.series[0].x == std::vector<double>{1.0});   // success
+  CHECK(pair.series[1].y == std::vector<double>{50.0});  // failure, D = 50 m
+  // Values that are not numbers (a choice) have no line.
+  r.settings[0].setting.values[0].second = "\"ratio\"";
   CHECK(studio::sweep_line_plot(r).series.empty());
 }
 

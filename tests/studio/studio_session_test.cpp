@@ -6,10 +6,10 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "state/app_state.hpp"
-#include "widgets/number_format.hpp"
 #include "pagor/errors.hpp"
+#include "state/app_state.hpp"
 #include "studio_test_util.hpp"
+#include "widgets/number_format.hpp"
 #include "widgets/widgets.hpp"
 
 using namespace pagor;

@@ -3,8 +3,8 @@
 
 #include <string>
 
-#include "state/app_state.hpp"
 #include "pagor/io/kitti.hpp"
+#include "state/app_state.hpp"
 #include "support/test_util.hpp"
 
 namespace pagor::test {
@@ -52,7 +52,7 @@ inline studio::AppState kitti_state(const TempDir& tmp) {
   s.data.source_frame = 20;
   s.data.target_frame = 30;
   s.pairs_file = std::string(PAGOR_KITTI_DIR) + "/pairs_00_dev.txt";
-  s.pairs = read_pairs_file(s.pairs_file);
+  s.pairs = studio::read_step_pairs(s.pairs_file, PAGOR_KITTI_DIR, "00");
   s.pair_index = studio::index_of_pair(s.pairs, s.data);
   return s;
 }

@@ -19,15 +19,22 @@ namespace {
 
 // Exercises every widget while staying in `mode` (a radio of another mode is clicked too; the
 // driver then goes back) and reports the coverage.
-void exercise_mode(UiDriver& d, PairSource::Kind mode, const char* radio) {
+void exercise_mode(UiDriver& d, PairSource::Kind mode, const char* radio,
+                   bool every_parameter = false) {
   d.settle();
   // Open the closed sections first so their widgets are part of the walk.
   for (const char* header : {"History", "Session"}) REQUIRE(d.click_widget(header));
-  const int acted = exercise_every_widget(d, [&] {
-    if (d.state().data.kind != mode) d.click_widget(radio);
-    hide_clouds(d.state());
-    if (d.state().show_help) d.click_widget("close##help");
-  });
+  const int acted = exercise_every_widget(
+      d,
+      [&] {
+        if (d.state().data.kind != mode) d.click_widget(radio);
+        hide_clouds(d.state());
+        d.state().dialog.open = false;  // the file browser has a test of its own
+        if (d.state().show_help) d.click_widget("close##help");
+      },
+      900, "",
+      every_parameter ? std::function<bool(const studio::ui::WidgetRecord&)>()
+                      : skip_parameter_sections);
   d.settle();
   // Every kind of widget was met, and the walk stayed in the mode under test.
   std::set<WidgetKind> kinds;
@@ -62,10 +69,12 @@ TEST_CASE("files mode: typing a path and toggling the same-named layer works (wa
   CHECK(d.studio().worker().status().error.find("/tmp/again.pcd") != std::string::npos);
 }
 
-TEST_CASE("every widget of every panel in synthetic mode") {
+TEST_CASE("every widget of every panel in synthetic mode and every parameter of the catalog") {
   TempDir tmp;
   UiDriver d(synthetic_state(tmp));
-  exercise_mode(d, PairSource::Kind::synthetic, "synthetic");
+  // The synthetic scene runs fastest: the walk goes through every parameter of the catalog here.
+  exercise_mode(d, PairSource::Kind::synthetic, "synthetic", true);
+  CHECK(d.touched().size() >= 200);
 }
 
 TEST_CASE("every widget of every panel in files mode (semreg-dev pair 03)") {
@@ -85,7 +94,7 @@ TEST_CASE("stepping through pairs while a run is in progress") {
   TempDir tmp;
   UiDriver d(kitti_state(tmp));
   d.settle();
-  REQUIRE(d.state().pairs.size() == 3);
+  REQUIRE(d.state().pairs.pairs.size() == 3);
   // A parameter change starts a run; step while it computes, with keys and the arrow buttons.
   d.state().config.verification.mu = 1.5;
   d.studio().submit_config();
@@ -99,13 +108,13 @@ TEST_CASE("stepping through pairs while a run is in progress") {
   REQUIRE(d.click_widget("##next", "Pagor Studio"));
   REQUIRE(d.click_widget("##next", "Pagor Studio"));  // past the end: stays at the last pair
   d.settle();
-  const auto& last = d.state().pairs.back();
+  const PairSource& last = d.state().pairs.pairs.back().source;
   CHECK(d.state().pair_index == 2);
-  CHECK(d.state().data.source_frame == last.first);
-  CHECK(d.state().data.target_frame == last.second);
+  CHECK(d.state().data.source_frame == last.source_frame);
+  CHECK(d.state().data.target_frame == last.target_frame);
   REQUIRE(d.studio().worker().snapshot());
-  CHECK(d.studio().worker().snapshot()->description.find(std::to_string(last.first) + " -> " +
-                                                         std::to_string(last.second)) !=
+  CHECK(d.studio().worker().snapshot()->description.find(
+            std::to_string(last.source_frame) + " -> " + std::to_string(last.target_frame)) !=
         std::string::npos);
   CHECK(d.studio().worker().status().error.empty());
   d.press_key(keys::Left);
@@ -345,24 +354,24 @@ TEST_CASE("every parameter and view widget explains itself in a tooltip") {
   UiDriver d(kitti_state(tmp), 900, 700);
   d.settle();
   for (const char* header : {"History", "Session"}) REQUIRE(d.click_widget(header));
-  // Open every class's tree node.
-  std::vector<ImGuiID> nodes;
-  for (const auto& w : d.widgets())
-    if (w.kind == WidgetKind::tree_node) nodes.push_back(w.id);
-  REQUIRE(nodes.size() == d.state().config.landmarks.classes.size());
-  for (ImGuiID id : nodes) REQUIRE(d.click_id(id));
-  int explained = 0;
+  // Open every section and class of the parameter editor.
+  d.open_all_nodes();
+  int explained = 0, parameters = 0;
   for (const auto& w : d.widgets()) {
     if (w.window != "Pagor Studio" || w.kind == WidgetKind::header ||
-        w.kind == WidgetKind::tree_node)
+        w.kind == WidgetKind::tree_node || w.kind == WidgetKind::text)
       continue;
+    parameters += w.label.find("###") != std::string::npos;
     INFO(to_string(w.kind) << " '" << w.label << "'");
     CHECK(w.has_tooltip);
     explained += w.has_tooltip;
   }
   CHECK(explained >= 50);
+  // Every parameter of the catalog has its widget (the pyramid's TRIM and thresholds and the
+  // label scheme have theirs above the generated sections).
+  CHECK(parameters == static_cast<int>(config_fields(d.state().config).size()) - 3);
   // Hovering shows it.
-  const auto* mu = d.find("\xce\xbc [m]", "Pagor Studio");
+  const auto* mu = d.find_param("verification.mu");
   REQUIRE(mu);
   REQUIRE(d.reveal(mu->id));
   const auto m = *d.find_id(mu->id);

@@ -94,7 +94,8 @@ void UiDriver::set_action(const std::string& a) {
 
 void UiDriver::frame() {
   ImGuiIO& io = ImGui::GetIO();
-  io.DeltaTime = 1.0f / 30.0f;  // slow enough that two clicks are never a double click
+  io.DeltaTime = idle_ > 0 ? idle_ : 1.0f / 30.0f;  // two clicks are never a double click
+  idle_ = 0;
   io.MousePos = mouse_;
   for (int b = 0; b < 5; ++b) io.MouseDown[b] = down_[b];
   io.MouseWheel = wheel_;
@@ -109,6 +110,11 @@ void UiDriver::frame() {
   ++frames_;
   max_widgets_ = std::max(max_widgets_, widgets().size());
   check_invariants();
+}
+
+void UiDriver::idle(float seconds) {
+  idle_ = seconds;
+  frame();
 }
 
 void UiDriver::frames(int n) {
@@ -222,6 +228,46 @@ const WidgetRecord* UiDriver::find_id(ImGuiID id) const {
   return nullptr;
 }
 
+const WidgetRecord* UiDriver::find_param(const std::string& path) const {
+  const std::string suffix = "###" + path;
+  for (const WidgetRecord& w : widgets())
+    if (w.label.size() >= suffix.size() &&
+        w.label.compare(w.label.size() - suffix.size(), suffix.size(), suffix) == 0)
+      return &w;
+  return nullptr;
+}
+
+void UiDriver::open_all_nodes(const std::string& window) {
+  std::set<ImGuiID> opened;
+  for (bool more = true; more;) {
+    more = false;
+    std::vector<ImGuiID> nodes;
+    for (const WidgetRecord& w : widgets())
+      if (w.kind == WidgetKind::tree_node && w.window.rfind(window, 0) == 0 && !opened.count(w.id))
+        nodes.push_back(w.id);
+    for (ImGuiID id : nodes) {
+      opened.insert(id);
+      const std::size_t before = widgets().size();
+      if (!click_id(id)) continue;
+      idle();                           // the next click is not a double click
+      if (widgets().size() < before) {  // it was open: closed now, open it again
+        click_id(id);
+        idle();
+      }
+      more = true;
+    }
+  }
+}
+
+std::vector<std::string> UiDriver::texts(const std::string& part, const std::string& window) const {
+  std::vector<std::string> out;
+  for (const WidgetRecord& w : widgets())
+    if (w.kind == WidgetKind::text && w.window.rfind(window, 0) == 0 &&
+        w.text.find(part) != std::string::npos)
+      out.push_back(w.text);
+  return out;
+}
+
 bool UiDriver::reveal(ImGuiID id) {
   for (int i = 0; i < 60; ++i) {
     const WidgetRecord* w = find_id(id);
@@ -308,7 +354,7 @@ void UiDriver::check_invariants() {
   if (s.data.source_frame < 0 || s.data.target_frame < 0 || s.data.source_frame > 999999 ||
       s.data.target_frame > 999999)
     fail("frame number out of range");
-  if (s.pair_index < -1 || s.pair_index >= static_cast<int>(s.pairs.size()))
+  if (s.pair_index < -1 || s.pair_index >= static_cast<int>(s.pairs.pairs.size()))
     fail("pair index out of range");
   if (!studio_->config_error().empty() && studio_->stale_reason().empty())
     fail("invalid parameters, but the results are not marked stale");

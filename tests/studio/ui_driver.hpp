@@ -13,9 +13,9 @@
 #include <string>
 #include <vector>
 
-#include "state/app_state.hpp"
 #include "render/gl.hpp"
 #include "render/headless.hpp"
+#include "state/app_state.hpp"
 #include "studio.hpp"
 #include "widgets/widgets.hpp"
 
@@ -44,6 +44,9 @@ class UiDriver {
   // ---- frames ----
   void frame();
   void frames(int n);
+  /// One frame after `seconds` of idle time (ImGui's clock moves on: a click after it is not a
+  /// double click).
+  void idle(float seconds = 0.35f);
   /// Frames until the worker has nothing pending (fails after `timeout_s`).
   void settle(double timeout_s = 240);
   void resize(int width, int height);
@@ -71,6 +74,13 @@ class UiDriver {
   const studio::ui::WidgetRecord* find(const std::string& label,
                                        const std::string& window = "") const;
   const studio::ui::WidgetRecord* find_id(ImGuiID id) const;
+  /// The parameter editor's widget of the configuration key path `path` (its label ends with
+  /// "###path"); null when absent (its section closed).
+  const studio::ui::WidgetRecord* find_param(const std::string& path) const;
+  /// Opens every tree node and header of the window (prefix) until no new one appears.
+  void open_all_nodes(const std::string& window = "Pagor Studio");
+  /// The text lines (ui::figure) of the last frame that contain `part`, in the window (prefix).
+  std::vector<std::string> texts(const std::string& part, const std::string& window = "") const;
   /// Scrolls the widget's window until the widget is visible; false when it cannot be.
   bool reveal(ImGuiID id);
   /// Clicks the centre of a widget (after revealing it). False when it is not there.
@@ -106,6 +116,7 @@ class UiDriver {
   bool down_[5] = {false, false, false, false, false};
   bool ctrl_ = false, shift_ = false;
   float wheel_ = 0;
+  float idle_ = 0;  // the next frame's time step when set [s]
   std::vector<int> keys_down_;
   std::u32string pending_chars_;
   int events_ = 0, frames_ = 0;
@@ -121,6 +132,11 @@ class UiDriver {
 /// each action (e.g. to go back to the data mode under test); `window` limits the walk to the
 /// windows whose name starts with it. Returns the widgets acted on.
 int exercise_every_widget(UiDriver& d, const std::function<void()>& keep, int max_actions = 600,
-                          const std::string& window = "");
+                          const std::string& window = "",
+                          const std::function<bool(const studio::ui::WidgetRecord&)>& skip = {});
+
+/// Skips the parameter editor's generated sections (walked in full in one mode only: they are
+/// the same in every mode, and a walk through them takes minutes).
+bool skip_parameter_sections(const studio::ui::WidgetRecord& w);
 
 }  // namespace pagor::test

@@ -247,7 +247,7 @@ TEST_CASE("diagnosis: true correspondences sharing a landmark count once in the 
   std::vector<PoseEstimate> poses(1);
   VerificationResult v;
   v.scores = {HUGE_VAL};
-  DiagnosisInput in{&s, &t, &corr, &g, &cliques, &poses, &v, nullptr, &config};
+  DiagnosisInput in{&s, &t, &corr, &g, &cliques, &poses, &v, nullptr, &config, std::nullopt};
   const Diagnosis d = diagnose(in, Transform::Identity());
   CHECK(d.true_correspondences == 4);
   CHECK(d.best_achievable == 3);

@@ -17,8 +17,10 @@
 namespace pagor::studio {
 namespace {
 
-const char* const kColumns[] = {"pair",  "verdict",      "success",   "t err [m]", "r err [deg]",
-                                "level", "D margin [%]", "time [ms]", "cached",    "diagnosis"};
+// "acc. margin": the acceptance margin (acceptance.hpp), D below the best distinct candidate's
+// as a share of mu times the points.
+const char* const kColumns[] = {"pair",  "verdict",         "success",   "t err [m]", "r err [deg]",
+                                "level", "acc. margin [%]", "time [ms]", "cached",    "diagnosis"};
 constexpr int kColumnCount = 10;
 constexpr int kDiagnosisColumn = 9;  // sorted by name, like the pair
 // The choices of the "show" combo, in RowFilter's order.
@@ -90,7 +92,12 @@ void source_controls(AppState& state, BenchWorker& bench, StudioActions& actions
   ImGui::SameLine();
   ui::radio("bench results", &v.source, BenchSource::results,
             "the JSON lines of pagor bench --out (shown as they are; nothing re-runs)");
-  ui::input_text("file##bench_path", &v.path, "path of the manifest, pairs file or results file");
+  ImGui::PushItemWidth(-std::min(220.0f, ImGui::GetContentRegionAvail().x * 0.3f));
+  ui::input_path("file##bench_path", &v.path, "path of the manifest, pairs file or results file");
+  ImGui::SameLine();
+  if (ui::button("...##bench_path", ImVec2(0, 0), "choose the file in a browser"))
+    open_file_dialog(state, FilePurpose::bench, v.path);
+  ImGui::PopItemWidth();
   if (v.source == BenchSource::kitti_pairs) {
     ui::input_text("KITTI root##bench", &v.kitti_root, "directory holding sequences/");
     ui::input_text("sequence##bench", &v.sequence, "KITTI sequence, e.g. 00");
@@ -99,15 +106,8 @@ void source_controls(AppState& state, BenchWorker& bench, StudioActions& actions
                  "a configuration JSON for this set, e.g. bench/manifests/semreg-dev.json");
   ImGui::SameLine();
   if (ui::button("load##bench_config", ImVec2(0, 0),
-                 "use the file's parameters in the session (absent keys: the defaults)")) {
-    try {
-      state.config = load_config(resolve_path(state, v.config_path));
-      actions.submit_config();
-      actions.notify(Message::info("parameters from " + v.config_path));
-    } catch (const Error& e) {
-      actions.notify(Message::error(e.what()));
-    }
-  }
+                 "use the file's parameters in the session (absent keys: the preset's)"))
+    actions.open_file(resolve_path(state, v.config_path), FilePurpose::config);
   if (ui::button("open and run##bench", ImVec2(0, 0),
                  "read the file and run every pair with the current parameters")) {
     try {
@@ -144,7 +144,7 @@ void progress_and_cache(BenchViewState& v, BenchWorker& bench, const BenchStatus
 }
 
 void summary_line(const BenchmarkSummary& s) {
-  ImGui::TextUnformatted(summary_text(s).c_str());
+  ui::figure(summary_text(s));
 }
 
 void table_controls(BenchViewState& v) {
@@ -200,11 +200,32 @@ void row_cells(const BenchRow& r) {
   ImGui::TableNextColumn();
   ImGui::TextUnformatted(r.cached ? "yes" : "no");
   ImGui::TableNextColumn();  // the stage at fault (diagnosis.hpp); needs the ground truth
-  ImGui::TextUnformatted(o.diagnosis.empty() ? "-" : o.diagnosis.c_str());
+  ui::figure(o.diagnosis.empty() ? (o.has_ground_truth ? "n/a" : "no truth") : o.diagnosis);
   if (!o.diagnosis.empty())
     ui::tooltip(
         "the diagnosis against the ground truth: open the pair and switch the bottom "
         "panel to 'diagnosis' for why");
+}
+
+// Opens row `i` in the pair view: the set's pair, or the pair a results row names.
+void open_row(AppState& state, const PairSet& set, bool results, const BenchWorker& bench,
+              const BenchRow& row, std::size_t i, StudioActions& actions) {
+  if (!results) {
+    if (i >= set.pairs.size()) return;
+    show_pair(state, set.pairs[i]);
+  } else {
+    const PairOutcome& o = row.outcome;
+    const auto entry = result_pair(o, bench.origin());
+    if (!entry) {
+      actions.notify(Message::error("pair " + o.name + ": its files are not there (" +
+                                    o.source_name + ", " + o.target_name + ")"));
+      return;
+    }
+    show_pair(state, *entry);
+    // A file pair keeps the truth its row recorded; a KITTI pair has the sequence's.
+    if (entry->source.kind == PairSource::Kind::files) state.inline_truth = o.T_target_source_gt;
+  }
+  actions.submit_data();
 }
 
 void rows_table(AppState& state, const std::vector<BenchRow>& rows, BenchWorker& bench,
@@ -231,6 +252,7 @@ void rows_table(AppState& state, const std::vector<BenchRow>& rows, BenchWorker&
   for (const char* c : kColumns) ImGui::TableSetupColumn(c);
   ImGui::TableHeadersRow();
   const PairSet set = bench.set();
+  const bool results = !bench.can_rerun();  // rows of a results file: their own files
   for (std::size_t i : order) {
     const BenchRow& r = rows[i];
     const PairOutcome& o = r.outcome;
@@ -238,11 +260,10 @@ void rows_table(AppState& state, const std::vector<BenchRow>& rows, BenchWorker&
     ImGui::TableNextColumn();
     if (!r.current) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.55f, 0.55f, 0.6f, 1));
     const std::string label = o.name + "##bench_row" + std::to_string(i);
-    if (ui::selectable(label.c_str(), false) && i < set.pairs.size()) {
-      show_pair(state, set.pairs[i]);
-      actions.submit_data();
-    }
-    if (i < set.pairs.size()) ui::tooltip("open this pair in the pair view with these parameters");
+    if (ui::selectable(label.c_str(), false)) open_row(state, set, results, bench, r, i, actions);
+    ui::tooltip(results ? "open this pair (its files as the results name them, with the ground "
+                          "truth they recorded) in the pair view with these parameters"
+                        : "open this pair in the pair view with these parameters");
     if (!r.done) {  // not run yet with any parameters
       for (int c = 1; c < kColumnCount; ++c) {
         ImGui::TableNextColumn();
@@ -275,23 +296,12 @@ void open_benchmark(AppState& state, BenchWorker& bench) {
   state.main_view = MainView::benchmark;
 }
 
-void show_pair(AppState& state, const PairEntry& entry) {
-  PairSource d = entry.source;
-  for (std::string* p :
-       {&d.source, &d.target, &d.source_labels, &d.target_labels, &d.ground_truth, &d.kitti_root})
-    *p = absolute_path(*p);
-  state.data = d;
-  state.have_data = true;
-  state.camera_fitted = false;
-  state.main_view = MainView::pair;
-}
-
 void benchmark_view(AppState& state, BenchWorker& bench, StudioActions& actions) {
   const BenchStatus st = bench.status();
   const std::vector<BenchRow> rows = bench.rows();
   source_controls(state, bench, actions);
   if (!bench.origin().empty()) ImGui::Text("open: %s", bench.origin().c_str());
-  indoor_preset_hint(state.config, bench.plan() != nullptr, "bench", actions);
+  indoor_preset_hint(state.config, state.preset, bench.plan() != nullptr, "bench", actions);
   if (bench.can_rerun()) progress_and_cache(state.bench, bench, st);
   std::vector<PairOutcome> outcomes;
   for (const BenchRow& r : rows)
@@ -301,7 +311,7 @@ void benchmark_view(AppState& state, BenchWorker& bench, StudioActions& actions)
   table_controls(state.bench);
   rows_table(state, rows, bench, actions);
   const float w = ImGui::GetContentRegionAvail().x;
-  const PlotExports to{state.bench.plot_path, actions};
+  const Exports to{state.bench.plot_path, actions};
   plot_with_exports(to, "rates", rates_plot(summary), w * 0.5f - 4);
   ImGui::SameLine();
   plot_with_exports(to, "picking", picking_plot(summary), w * 0.5f - 4);
@@ -315,7 +325,12 @@ void benchmark_view(AppState& state, BenchWorker& bench, StudioActions& actions)
   ui::input_text("export path##bench", &state.bench.plot_path,
                  "plots are written to PATH-<plot>.png and .csv");
   ImGui::PushID("sweep_section");
-  if (ui::header("Sweep", true) && bench.can_rerun()) sweep_section(state, bench, st, actions);
+  if (ui::header("Sweep", true)) {
+    if (bench.can_rerun())
+      sweep_section(state, bench, st, actions);
+    else
+      ui::figure_dim("open a manifest or pairs file above to sweep parameters over its pairs");
+  }
   ImGui::PopID();
 }
 

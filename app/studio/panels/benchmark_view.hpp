@@ -5,16 +5,13 @@
 /// changes re-evaluate the set live (bench_worker.hpp); a sweep over mu and thresholds as a table
 /// and plots; a row opens that pair in the pair view with the same parameters.
 
-#include "state/app_state.hpp"
 #include "runners/bench_worker.hpp"
+#include "state/app_state.hpp"
 
 namespace pagor::studio {
 
 /// Opens what `state.bench` names in `bench` with `state.config`. Throws pagor::Error (an
 /// unreadable pairs or results file) naming the file.
 void open_benchmark(AppState& state, BenchWorker& bench);
-
-/// Makes `state.data` the pair `entry` (absolute paths, so a session elsewhere still finds it).
-void show_pair(AppState& state, const PairEntry& entry);
 
 }  // namespace pagor::studio

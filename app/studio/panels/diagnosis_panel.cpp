@@ -84,9 +84,15 @@ bool level_row(const Diagnosis& d, std::size_t l, int shown) {
   cell_text(t);
   std::snprintf(t, sizeof(t), "%zu (%zu)", x.clique_size, x.clique_true);
   cell_text(t);
-  std::snprintf(t, sizeof(t), "%.0f / %.0f", 100.0 * x.precision, 100.0 * x.recall);
+  // A ratio of nothing (an empty clique; no consistent true ones) is undefined: n/a.
+  const std::string precision =
+      x.clique_size ? ui::format("%.0f", 100.0 * x.clique_true / x.clique_size) : "n/a";
+  const std::string recall =
+      x.consistent_true
+          ? ui::format("%.0f", 100.0 * std::min(1.0, double(x.clique_true) / x.consistent_true))
+          : "n/a";
   ImGui::TableNextColumn();
-  ImGui::TextColored(x.precision >= 0.5 ? kGood : kBad, "%s", t);
+  ui::figure(precision + " / " + recall, x.clique_size && x.precision >= 0.5 ? kGood : kBad);
   ImGui::TableNextColumn();
   if (x.error)
     ImGui::TextColored(x.error->success ? kGood : kBad, "%.2f m, %.2f\xc2\xb0",
@@ -176,7 +182,8 @@ void bottom_panel_switch(DiagnosisView& diagnosis) {
   ImGui::SameLine(0.0f, 24.0f);  // the panel's first line follows on this one
 }
 
-void diagnosis_panel(const Snapshot* s, const std::string& stale_reason, ViewState& view) {
+void diagnosis_panel(const Snapshot* s, const std::string& stale_reason, ViewState& view,
+                     const Exports& exports) {
   if (!s) {
     ImGui::TextDisabled("no result yet: open data on the left");
     return;
@@ -191,9 +198,13 @@ void diagnosis_panel(const Snapshot* s, const std::string& stale_reason, ViewSta
   if (!stale_reason.empty())
     ImGui::TextColored(ImVec4(1.0f, 0.75f, 0.25f, 1.0f), "STALE: %s", stale_reason.c_str());
   const bool ok = d.verdict == DiagnosisVerdict::success;
-  ImGui::TextColored(ok ? kGood : kBad, "%s", verdict_sentence(d.verdict));
-  ImGui::SameLine();
-  ImGui::TextWrapped("(%s)", d.explanation.c_str());
+  ui::figure(
+      std::string("verdict: ") + verdict_name(d.verdict) + " - " + verdict_sentence(d.verdict),
+      ok ? kGood : kBad);
+  ui::figure("why: " + d.explanation, ok ? kGood : kBad, true);
+  if (ui::small_button("diagnosis CSV",
+                       "Writes the per-level table to <export path>-diagnosis.csv."))
+    write_export(exports, "diagnosis.csv", diagnosis_csv(d));
 
   const float w = ImGui::GetContentRegionAvail().x;
   const float front_w = std::min(330.0f, w * 0.28f), controls_w = std::min(260.0f, w * 0.22f);

@@ -5,6 +5,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <limits>
 #include <string>
 
@@ -21,56 +22,120 @@ void open_data(AppState& s, StudioActions& actions) {
   s.have_data = true;
   s.camera_fitted = false;
   s.view.level = -1;
+  s.picks.clear();
+  s.inline_truth.reset();
   actions.submit_data();
+}
+
+// A path field with a "..." button that opens the file browser for it.
+void path_field(AppState& s, const char* label, std::string* path, FilePurpose purpose,
+                const char* tip) {
+  ImGui::PushID(label);
+  ImGui::PushItemWidth(ImGui::CalcItemWidth() - ImGui::GetFrameHeight() - 4);
+  ui::input_path(label, path, tip);
+  ImGui::PopItemWidth();
+  ImGui::SameLine(0, 4);
+  if (ui::button("...", ImVec2(ImGui::GetFrameHeight(), 0), "Choose the file in a browser."))
+    open_file_dialog(s, purpose, *path);
+  ImGui::PopID();
 }
 
 void kitti_fields(AppState& s, StudioActions& actions) {
   PairSource& d = s.data;
-  ui::input_text("root", &d.kitti_root,
-                 "Directory holding sequences/NN/ (velodyne, labels, poses).");
+  path_field(s, "root", &d.kitti_root, FilePurpose::kitti_root,
+             "Directory holding sequences/NN/ (velodyne, labels, poses).");
   ui::input_text("sequence", &d.sequence, "KITTI sequence number, two digits (00 to 21).");
   bool reopen = ui::input_int("source frame", &d.source_frame, 0, kMaxFrame, 1, true,
                               "Frame of the source scan; Enter or +/- opens it.");
   reopen |= ui::input_int("target frame", &d.target_frame, 0, kMaxFrame, 1, true,
                           "Frame of the target scan; Enter or +/- opens it.");
   if (reopen) open_data(s, actions);
-  ui::input_text("pairs file", &s.pairs_file,
-                 "Text file of 'source target' frame pairs to step through with Left/Right.");
-  if (ui::button("read pairs", ImVec2(0, 0), "Reads the pairs file.")) {
+}
+
+void files_fields(AppState& s) {
+  PairSource& d = s.data;
+  path_field(s, "source cloud", &d.source, FilePurpose::source_cloud,
+             "Path of the source cloud (PCD, PLY or .bin).");
+  path_field(s, "source labels", &d.source_labels, FilePurpose::source_labels,
+             "Optional .label file of the source; empty when the cloud holds labels.");
+  path_field(s, "target cloud", &d.target, FilePurpose::target_cloud,
+             "Path of the target cloud (PCD, PLY or .bin), or a floor plan (.json, .svg).");
+  path_field(s, "target labels", &d.target_labels, FilePurpose::target_labels,
+             "Optional .label file of the target; empty when the cloud holds labels.");
+  path_field(s, "ground truth file", &d.ground_truth, FilePurpose::ground_truth,
+             "Optional 4x4 T_target_source file (row-major): errors, success and green/red "
+             "lines against it. It belongs to these files: KITTI and the synthetic scene keep "
+             "their own.");
+  if (s.inline_truth) ui::figure_dim("ground truth: from the benchmark results row");
+}
+
+// The pairs file or manifest to step through, and the arrows.
+void pairs_fields(AppState& s, StudioActions& actions) {
+  path_field(s, "pairs file", &s.pairs_file, FilePurpose::pairs,
+             "A KITTI pairs file ('source target' frames of the sequence above) or any manifest "
+             "(SOURCE TARGET [gt=...] per line, as pagor bench --manifest) to step through with "
+             "Left/Right.");
+  if (ui::button("read pairs", ImVec2(0, 0), "Reads the pairs file or manifest.")) {
     try {
-      s.pairs = read_pairs_file(resolve_path(s, s.pairs_file));
-      s.pair_index = -1;
-      actions.notify(Message::info("read " + std::to_string(s.pairs.size()) + " pairs"));
+      s.pairs = read_step_pairs(resolve_path(s, s.pairs_file), resolve_path(s, s.data.kitti_root),
+                                s.data.sequence);
+      s.pair_index = index_of_pair(s.pairs, resolved_data(s));
+      actions.notify(Message::info("read " + std::to_string(s.pairs.pairs.size()) + " pairs"));
     } catch (const Error& e) {
       actions.notify(Message::error(e.what()));
     }
   }
-  if (!s.pairs.empty()) {
-    ImGui::SameLine();
-    if (ui::arrow_button("##prev", ImGuiDir_Left, "Previous pair (Left arrow)."))
-      step_pair(s, s.pair_index < 0 ? 0 : -1, actions);
-    ImGui::SameLine();
-    if (ui::arrow_button("##next", ImGuiDir_Right, "Next pair (Right arrow)."))
-      step_pair(s, 1, actions);
-    ImGui::SameLine();
-    ImGui::Text("pair %d / %zu", s.pair_index + 1, s.pairs.size());
+  if (s.pairs.pairs.empty()) return;
+  ImGui::SameLine();
+  if (ui::arrow_button("##prev", ImGuiDir_Left, "Previous pair (Left arrow)."))
+    step_pair(s, -1, actions);
+  ImGui::SameLine();
+  if (ui::arrow_button("##next", ImGuiDir_Right, "Next pair (Right arrow)."))
+    step_pair(s, 1, actions);
+  ImGui::SameLine();
+  const std::string name =
+      s.pair_index >= 0 ? s.pairs.pairs[static_cast<std::size_t>(s.pair_index)].name : "-";
+  ui::figure(ui::format("pair %d / %zu: %s", s.pair_index + 1, s.pairs.pairs.size(), name.c_str()));
+}
+
+// The recently opened files, newest first; a pick opens it again.
+void recent_files(AppState& s, StudioActions& actions) {
+  if (s.recent.empty()) return;
+  if (ui::begin_combo("recent", "open a recent file...",
+                      "Files opened recently (by the browser, a drop or here), newest first.")) {
+    const std::vector<std::string> recent = s.recent;  // opening reorders the list
+    for (std::size_t i = 0; i < recent.size(); ++i)
+      if (ui::selectable((recent[i] + "##recent" + std::to_string(i)).c_str(), false))
+        actions.open_file(recent[i], FilePurpose::any);
+    ui::end_combo();
   }
 }
 
 }  // namespace
 
-void step_pair(AppState& s, int delta, StudioActions& actions) {
-  if (s.pairs.empty()) return;
-  s.pair_index = std::clamp(s.pair_index + delta, 0, static_cast<int>(s.pairs.size()) - 1);
-  s.data.kind = PairSource::Kind::kitti;
-  s.data.source_frame = s.pairs[static_cast<std::size_t>(s.pair_index)].first;
-  s.data.target_frame = s.pairs[static_cast<std::size_t>(s.pair_index)].second;
-  s.have_data = true;
-  s.view.level = -1;
-  actions.submit_data();
+void open_file_dialog(AppState& s, FilePurpose purpose, const std::string& current) {
+  FileDialogState& f = s.dialog;
+  f.open = true;
+  f.purpose = purpose;
+  f.name.clear();
+  f.filter.clear();
+  std::error_code ec;
+  const std::string at = current.empty() ? std::string() : resolve_path(s, current);
+  const std::filesystem::path p(at);
+  if (!at.empty() && std::filesystem::is_directory(p, ec))
+    f.directory = absolute_path(at);
+  else if (!at.empty() && std::filesystem::is_directory(p.parent_path(), ec))
+    f.directory = absolute_path(p.parent_path().string()), f.name = p.filename().string();
+  else if (f.directory.empty())
+    f.directory = absolute_path(s.base_dir.empty() ? "." : s.base_dir);
 }
 
-void indoor_preset_hint(Config& config, bool indoor, const char* id, StudioActions& actions) {
+void step_pair(AppState& s, int delta, StudioActions& actions) {
+  if (step_pair_index(s, delta)) actions.submit_data();
+}
+
+void indoor_preset_hint(Config& config, std::string& preset, bool indoor, const char* id,
+                        StudioActions& actions) {
   if (!indoor || config.label_scheme.name == "indoor") return;
   ImGui::PushTextWrapPos(0.0f);
   ImGui::TextColored(
@@ -81,6 +146,7 @@ void indoor_preset_hint(Config& config, bool indoor, const char* id, StudioActio
                  "Apply the 'indoor' preset (pagor config --preset indoor): column landmarks, "
                  "difference TRIM in metres, SE(2) poses, a 1 m / 3 deg criterion.")) {
     config = preset_config("indoor");
+    preset = "indoor";
     actions.submit_config();
   }
 }
@@ -101,15 +167,7 @@ void data_panel(AppState& s, StudioActions& actions) {
   if (d.kind == PairSource::Kind::kitti) {
     kitti_fields(s, actions);
   } else if (d.kind == PairSource::Kind::files) {
-    ui::input_text("source cloud", &d.source, "Path of the source cloud (PCD, PLY or .bin).");
-    ui::input_text("source labels", &d.source_labels,
-                   "Optional .label file of the source; empty when the cloud holds labels.");
-    ui::input_text("target cloud", &d.target, "Path of the target cloud (PCD, PLY or .bin).");
-    ui::input_text("target labels", &d.target_labels,
-                   "Optional .label file of the target; empty when the cloud holds labels.");
-    ui::input_text("ground truth file", &d.ground_truth,
-                   "Optional 4x4 T_target_source file (row-major): errors, success and green/red "
-                   "lines against it.");
+    files_fields(s);
   } else {
     int seed = static_cast<int>(std::min<std::uint64_t>(d.synthetic_seed, 2147483647));
     if (ui::input_int("seed", &seed, 0, std::numeric_limits<int>::max(), 1, true,
@@ -120,7 +178,15 @@ void data_panel(AppState& s, StudioActions& actions) {
   }
   if (ui::button("Open", ImVec2(-1, 0), "Loads the data above and runs the pipeline."))
     open_data(s, actions);
-  indoor_preset_hint(s.config, s.have_data && is_indoor(d), "data", actions);
+  pairs_fields(s, actions);
+  if (ui::button("open a file...", ImVec2(0, 0),
+                 "Any file the studio reads: clouds, .label files, a ground truth, a "
+                 "configuration, a session, a pairs file or manifest, pagor bench results. "
+                 "Files can also be dropped on the window."))
+    open_file_dialog(s, FilePurpose::any, "");
+  if (!s.recent.empty()) ImGui::SameLine();
+  recent_files(s, actions);
+  indoor_preset_hint(s.config, s.preset, s.have_data && is_indoor(d), "data", actions);
 }
 
 void view_panel(ViewState& v, CameraControl camera, bool& show_help, bool has_plan) {
@@ -155,10 +221,20 @@ void view_panel(ViewState& v, CameraControl camera, bool& show_help, bool has_pl
                    false, "Width of the correspondence lines.");
   ImGui::TextUnformatted("colour:");
   ImGui::SameLine();
-  ui::radio("class", &v.color, ColorMode::by_class, "Colour points by semantic class.");
+  ui::radio("class", &v.color, ColorMode::by_class,
+            "Colour points by semantic class (the legend lists the classes drawn).");
   ImGui::SameLine();
   ui::radio("source/target", &v.color, ColorMode::by_cloud,
             "Colour points by cloud: source blue, target orange.");
+  ImGui::SameLine();
+  ui::radio("height", &v.color, ColorMode::height,
+            "Colour points by height z in the target frame [m] (colour bar in the legend).");
+  ui::radio("intensity", &v.color, ColorMode::intensity,
+            "Colour points by the lidar's reflectance (grey where a cloud has none).");
+  ImGui::SameLine();
+  ui::radio("residual", &v.color, ColorMode::residual,
+            "Colour the source's verification points by their distance to the nearest target "
+            "point under the shown pose, capped at mu [m]; the target stays grey.");
   ImGui::TextUnformatted("source under:");
   ui::radio("candidate", &v.pose, PoseShown::selected,
             "Place the source under the shown level's candidate pose.");

@@ -7,6 +7,7 @@
 #include <string>
 #include <utility>
 
+#include "panels/exports.hpp"
 #include "panels/studio_actions.hpp"
 #include "runners/worker.hpp"
 #include "scene/scene_window.hpp"
@@ -21,10 +22,16 @@ class BenchWorker;
 struct SessionFiles {
   std::string& session_path;     ///< the session file saved and loaded
   std::string& screenshot_path;  ///< where a screenshot is written (PNG)
+  std::string& export_path;      ///< where exports go: <export path>-<name>
 };
 
-/// Moves through the pairs file by `delta` (clamped) and opens that pair.
+/// Moves through the pairs file or manifest by `delta` (clamped) and opens that pair.
 void step_pair(AppState& state, int delta, StudioActions& actions);
+/// Opens the file browser for `purpose`, in the directory of `current` (a path the user wrote).
+void open_file_dialog(AppState& state, FilePurpose purpose, const std::string& current);
+/// The file browser, while `state.dialog.open`: directories and the files of its purpose; a pick
+/// goes to StudioActions::open_file.
+void file_dialog(AppState& state, StudioActions& actions);
 /// The range the epsilon sliders span for a TRIM kind (fixed, log scale).
 std::pair<double, double> epsilon_range(TrimKind trim);
 
@@ -32,12 +39,15 @@ std::pair<double, double> epsilon_range(TrimKind trim);
 void data_panel(AppState& state, StudioActions& actions);
 /// For indoor data or sets (`indoor`) run with parameters of another kind: a line saying so and a
 /// button that applies the `indoor` preset to `config`. Nothing otherwise. `id` tells two apart.
-void indoor_preset_hint(Config& config, bool indoor, const char* id, StudioActions& actions);
+void indoor_preset_hint(Config& config, std::string& preset, bool indoor, const char* id,
+                        StudioActions& actions);
 /// Undo and redo buttons on one line (disabled when there is no step); `id` tells two apart.
 void undo_redo_buttons(const ParamHistory& params, StudioActions& actions, const char* id);
-/// Every parameter of `config` (re-run on change), with why it is invalid and undo/redo.
-void parameters_panel(Config& config, const ParamHistory& params, const std::string& config_error,
-                      StudioActions& actions);
+/// Every parameter of `config` (re-run on change): the preset it starts from, the label scheme,
+/// the pyramid's levels, then every field of the configuration's table (param_editor.hpp); why
+/// it is invalid, undo/redo and "defaults" (the preset, keeping the label scheme).
+void parameters_panel(Config& config, std::string& preset, const ParamHistory& params,
+                      const std::string& config_error, StudioActions& actions);
 /// Layers, sizes, colours, the source pose, the camera buttons. `has_plan`: the result has a
 /// floor plan (its layer can be toggled).
 void view_panel(ViewState& view, CameraControl camera, bool& show_help, bool has_plan);
@@ -49,9 +59,10 @@ void history_panel(const ParamHistory& params, const RunHistory& runs, StudioAct
 /// of D; `stale_reason` says why it is not a run of the parameters shown. A row click sets
 /// `view.level`.
 void pyramid_panel(const Snapshot* snapshot, const RunChanges& changes,
-                   const std::string& stale_reason, ViewState& view);
+                   const std::string& stale_reason, ViewState& view, const Exports& exports);
 /// The diagnosis against the ground truth (diagnosis_panel.cpp) and the 3D view's diagnosis items.
-void diagnosis_panel(const Snapshot* snapshot, const std::string& stale_reason, ViewState& view);
+void diagnosis_panel(const Snapshot* snapshot, const std::string& stale_reason, ViewState& view,
+                     const Exports& exports);
 /// Radio buttons choosing what the bottom panel shows: the pyramid or the diagnosis (the panel's
 /// first line continues on their line).
 void bottom_panel_switch(DiagnosisView& diagnosis);

@@ -8,7 +8,9 @@
 #include <string>
 #include <vector>
 
+#include "pagor/errors.hpp"
 #include "panels/panels.hpp"
+#include "panels/param_editor.hpp"
 #include "widgets/number_format.hpp"
 #include "widgets/widgets.hpp"
 
@@ -16,7 +18,6 @@ namespace pagor::studio {
 namespace {
 
 constexpr std::size_t kMaxLevels = 32;
-constexpr int kMaxCap = 5000;  // correspondences: ~2 s for the graph and clique stages
 const ImVec4 kRed(1.0f, 0.4f, 0.4f, 1.0f);
 
 void section(const char* title) {
@@ -110,7 +111,7 @@ bool level_rows(GraphParams& g, TrimKind trim, StudioActions& actions) {
   return changed;
 }
 
-// The label scheme, the pyramid's levels, TRIM, affinity and the clique solver.
+// The label scheme, the TRIM and the pyramid's levels.
 bool graph_section(Config& c, StudioActions& actions) {
   GraphParams& g = c.graph;
   const TrimKind trim = g.trim;
@@ -133,115 +134,33 @@ bool graph_section(Config& c, StudioActions& actions) {
   }
   changed |= level_rows(g, trim, actions);
   if (!ImGui::IsAnyItemActive() && normalise_levels(g, actions)) changed = true;
-  changed |= ui::enum_combo("affinity", g.affinity,
-                            "Edge weights of the consistency graph: 1 for every consistent pair "
-                            "('binary') or a Gaussian of the TRIM value ('gaussian').");
-  if (g.affinity == AffinityKind::gaussian)
-    changed |= ui::slider_double("\xcf\x83 / \xce\xb5", &g.sigma_ratio, 0.05, 2.0, "%.2f", false,
-                                 "Width of the Gaussian weight as a fraction of the level's "
-                                 "\xce\xb5.");
-  changed |= ui::enum_combo("clique solver", c.clique.solver,
-                            "Densest clique per level: CLIPPER relaxation warm-started from the "
-                            "previous level ('cascaded'), from scratch ('independent'), or exact "
-                            "branch and bound ('exact', small graphs).");
-  changed |= ui::checkbox("k-core pruning", &c.clique.prune,
-                          "Runs the relaxation only on the k-core that can hold a clique as "
-                          "large as a greedy one; never returns less than the greedy clique.");
   return changed;
 }
 
-bool pose_section(Config& c) {
+// The presets: choosing one starts from it; the label scheme stays when it names the preset's
+// classes (it belongs to the data).
+bool preset_combo(Config& c, std::string& preset) {
   bool changed = false;
-  section("pose and verification");
-  changed |= ui::enum_combo("pose model", c.gnc.model,
-                            "Degrees of freedom of the estimated pose (e.g. full SE(3), or SE(2) "
-                            "for planar robots).");
-  changed |= ui::slider_double("GNC bound [m]", &c.gnc.noise_bound, 0.05, 5.0, "%.2f m", true,
-                               "Truncation of the TLS cost in GNC: residuals beyond this are "
-                               "treated as outliers.");
-  changed |= ui::slider_double("\xce\xbc [m]", &c.verification.mu, 0.05, 5.0, "%.2f m", true,
-                               "Truncation distance of the score D = \xce\xa3 min(|Tp - q|, "
-                               "\xce\xbc) on the dense clouds.");
-  changed |= ui::slider_double("verify voxel [m]", &c.verification.voxel_size, 0.1, 2.0, "%.2f m",
-                               true, "Voxel size the dense clouds are reduced to before scoring.");
-  changed |= ui::enum_combo("score", c.verification.score,
-                            "How a candidate pose is scored: truncated distances (the method), "
-                            "or the trimmed / plain sums (ablations).");
-  changed |= ui::checkbox("refine selected pose", &c.refinement.enabled,
-                          "Point-to-plane ICP of the selected pose on the verification clouds, "
-                          "bounded in iterations and in how far it may move the pose; kept only "
-                          "when it lowers D.");
-  changed |= ui::checkbox("refine roll/pitch", &c.refinement.free_roll_pitch,
-                          "Let refinement correct roll and pitch when the pose model holds them "
-                          "level (4-DoF); SE(2) stays planar.");
-  return changed;
-}
-
-// One landmark class's extraction parameters (cluster or FPFH).
-bool class_fields(ClassParams& p) {
-  bool changed = false;
-  // Lower bounds keep one run to seconds on a KITTI scan (a run cannot be interrupted
-  // inside a stage): FPFH at a 0.02 m voxel took over 100 s, at 0.3 m 6 s.
-  const bool fpfh = p.method == LandmarkMethod::fpfh;
-  changed |= ui::slider_double("voxel [m]", &p.voxel_size, fpfh ? 0.3 : 0.05, 2.0, "%.2f m", true,
-                               fpfh ? "Downsampling voxel of this class before FPFH (at least "
-                                      "0.3 m here: finer takes minutes on a KITTI scan)."
-                                    : "Downsampling voxel of this class before clustering.");
-  if (p.method == LandmarkMethod::cluster) {
-    changed |= ui::slider_double("tolerance [m]", &p.cluster_tolerance, 0.05, 3.0, "%.2f m", true,
-                                 "Largest gap between two points of one cluster.");
-    changed |= ui::slider_int("min voxels", &p.min_points, 1, 500, false,
-                              "Smallest cluster kept as a landmark [voxels].");
-    changed |= ui::slider_int("max voxels", &p.max_points, 1, 20000, true,
-                              "Largest cluster kept as a landmark [voxels]; at least min.");
-    if (p.max_points < p.min_points) {
-      p.max_points = p.min_points;
-      changed = true;
-    }
-  } else {
-    changed |= ui::slider_double("normal r [m]", &p.normal_radius, 0.1, 3.0, "%.2f m", true,
-                                 "Radius of the normal estimate for FPFH.");
-    changed |= ui::slider_double("feature r [m]", &p.feature_radius, 0.15, 5.0, "%.2f m", true,
-                                 "Radius of the FPFH descriptor; kept larger than the normal "
-                                 "radius.");
-    if (p.feature_radius <= p.normal_radius) {
-      p.feature_radius = shortest(static_cast<float>(p.normal_radius * 1.25));
-      changed = true;
-    }
+  if (ui::begin_combo("preset", preset.c_str(),
+                      "The configuration the parameters start from: 'default' (the project's), "
+                      "'paper' (the published one) or 'indoor' (a scan against a floor plan). "
+                      "Parameters that differ from it are marked * and can be reset.")) {
+    for (const std::string& name : preset_names())
+      if (ui::selectable(name.c_str(), name == preset) && name != preset) {
+        Config next = preset_config(name);
+        Config kept = next;
+        kept.label_scheme = c.label_scheme;
+        try {
+          validate(kept, "parameters");
+          next = kept;
+        } catch (const ConfigError&) {  // the scheme lacks the preset's classes: the preset's
+        }
+        c = next;
+        preset = name;
+        changed = true;
+      }
+    ui::end_combo();
   }
-  return changed;
-}
-
-bool landmark_section(Config& c) {
-  bool changed = false;
-  section("landmarks");
-  changed |=
-      ui::input_int("corr. cap", &c.correspondences.max_correspondences, 1, kMaxCap, 100, true,
-                    "At most this many correspondences (the most promising are kept); "
-                    "Enter applies. Up to 5000 here: a run cannot be interrupted inside a "
-                    "stage and larger graphs take minutes (0, no cap, only from a config "
-                    "file).");
-  for (ClassParams& p : c.landmarks.classes) {
-    ImGui::PushID(p.name.c_str());
-    const std::string text = p.name + " (" + to_string(p.method) + ")";
-    if (ui::tree_node("##class", text.c_str())) {
-      changed |= class_fields(p);
-      ui::tree_pop();
-    }
-    ImGui::PopID();
-  }
-  return changed;
-}
-
-bool criterion_section(Config& c) {
-  bool changed = false;
-  section("success criterion");
-  changed |=
-      ui::slider_double("max t err [m]", &c.evaluation.max_translation_error, 0.1, 10.0, "%.1f m",
-                        false, "A pose succeeds when its translation error is below this.");
-  changed |= ui::slider_double("max r err [\xc2\xb0]", &c.evaluation.max_rotation_error, 0.5, 30.0,
-                               "%.1f\xc2\xb0", false,
-                               "A pose succeeds when its rotation error is below this.");
   return changed;
 }
 
@@ -264,21 +183,30 @@ void undo_redo_buttons(const ParamHistory& params, StudioActions& actions, const
   ImGui::EndDisabled();
 }
 
-void parameters_panel(Config& config, const ParamHistory& params, const std::string& config_error,
-                      StudioActions& actions) {
+void parameters_panel(Config& config, std::string& preset, const ParamHistory& params,
+                      const std::string& config_error, StudioActions& actions) {
   if (!config_error.empty()) {
     ImGui::PushTextWrapPos(0.0f);
     ImGui::TextColored(kRed, "invalid: %s", config_error.c_str());
     ImGui::PopTextWrapPos();
   }
-  bool changed = graph_section(config, actions);
-  changed |= pose_section(config);
-  changed |= landmark_section(config);
-  changed |= criterion_section(config);
+  bool changed = preset_combo(config, preset);
+  changed |= graph_section(config, actions);
+  Config reference = preset_config(preset);
+  reference.label_scheme = config.label_scheme;
+  section("every parameter (* differs from the preset)");
+  changed |= parameter_sections(config, reference, actions);
   undo_redo_buttons(params, actions, "");
   ImGui::SameLine();
-  if (ui::button("defaults", ImVec2(0, 0), "Every parameter back to the paper's defaults.")) {
-    config = default_config();
+  if (ui::button("defaults", ImVec2(0, 0),
+                 "Every parameter back to the preset's values; the label scheme stays (it "
+                 "belongs to the data).")) {
+    try {
+      validate(reference, "parameters");
+      config = reference;
+    } catch (const ConfigError&) {  // the scheme lacks the preset's classes
+      config = preset_config(preset);
+    }
     changed = true;
   }
   if (changed) actions.submit_config();

@@ -8,7 +8,9 @@
 #include <cstdio>
 
 #include "pagor/verify/evaluation.hpp"
+#include "panels/exports.hpp"
 #include "panels/panels.hpp"
+#include "panels/pyramid_chart.hpp"
 #include "widgets/widgets.hpp"
 
 namespace pagor::studio {
@@ -16,94 +18,6 @@ namespace {
 
 const ImVec4 kGood(0.35f, 0.9f, 0.45f, 1.0f), kBad(1.0f, 0.4f, 0.4f, 1.0f),
     kDim(0.6f, 0.6f, 0.6f, 1.0f);
-
-// What refinement did to the selected pose: D and, with ground truth, the errors before/after.
-void refinement_lines(const Snapshot& s) {
-  const RefinementResult& r = s.refinement;
-  if (!r.ran) {
-    ImGui::TextDisabled("refinement: off");
-    return;
-  }
-  if (!r.applied) {
-    ImGui::TextDisabled("refinement: not applied (%s)", r.reason.c_str());
-    return;
-  }
-  ImGui::Text("refinement: D %.0f -> %.0f m (%.1f %%), moved %.2f m / %.2f deg", r.score_before,
-              r.score_after, 100.0 * (r.score_after - r.score_before) / r.score_before,
-              r.correction_translation, r.correction_rotation);
-  if (s.unrefined_error && s.selected_error)
-    ImGui::Text("  errors before %.2f m / %.2f deg, after %.2f m / %.2f deg",
-                s.unrefined_error->translation, s.unrefined_error->rotation_deg,
-                s.selected_error->translation, s.selected_error->rotation_deg);
-}
-
-// D per level, from zero. Bars are green / red by success when the ground truth is known (else
-// blue); the selected level is marked with * and the shown one outlined.
-void bar_chart(const Snapshot& s, int shown, const RunChanges& changes) {
-  ImGui::TextDisabled("score D per level [m], lower is better, axis from 0");
-  const int n = static_cast<int>(s.levels.size());
-  double top = 0;
-  for (const auto& l : s.levels)
-    if (l.pose.valid && std::isfinite(l.score)) top = std::max(top, l.score);
-  const ImVec2 origin = ImGui::GetCursorScreenPos();
-  const float width = ImGui::GetContentRegionAvail().x, label_h = 16.0f;
-  const float height = std::clamp(
-      ImGui::GetContentRegionAvail().y * 0.55f - label_h - ImGui::GetTextLineHeightWithSpacing(),
-      40.0f, 220.0f);
-  ImDrawList* dl = ImGui::GetWindowDrawList();
-  dl->AddRectFilled(origin, ImVec2(origin.x + width, origin.y + height + label_h),
-                    IM_COL32(30, 32, 38, 255));
-  const float base = origin.y + height;
-  dl->AddLine(ImVec2(origin.x, base), ImVec2(origin.x + width, base), IM_COL32(160, 160, 160, 255));
-  const float slot = width / std::max(n, 1);
-  for (int i = 0; i < n; ++i) {
-    const auto& l = s.levels[static_cast<std::size_t>(i)];
-    const float x0 = origin.x + slot * i + slot * 0.15f,
-                x1 = origin.x + slot * (i + 1) - slot * 0.15f;
-    char text[48];
-    if (l.pose.valid && std::isfinite(l.score) && top > 0) {
-      const float h = static_cast<float>(l.score / top) * (height - 18.0f);
-      const ImU32 color = !l.error           ? IM_COL32(90, 130, 200, 255)
-                          : l.error->success ? IM_COL32(80, 200, 110, 255)
-                                             : IM_COL32(215, 80, 80, 255);
-      dl->AddRectFilled(ImVec2(x0, base - h), ImVec2(x1, base), color);
-      if (i == shown)
-        dl->AddRect(ImVec2(x0 - 2, base - h - 2), ImVec2(x1 + 2, base),
-                    IM_COL32(255, 255, 255, 255), 0, 0, 2.0f);
-      const auto k = static_cast<std::size_t>(i);
-      if (k < changes.levels.size() && changes.levels[k].d_delta &&
-          std::abs(*changes.levels[k].d_delta) > 1e-9)
-        std::snprintf(text, sizeof(text), "%.0f (%+.0f)", l.score, *changes.levels[k].d_delta);
-      else
-        std::snprintf(text, sizeof(text), "%.0f", l.score);
-      if (ImGui::CalcTextSize(text).x > slot * 0.95f)  // too narrow for the delta
-        std::snprintf(text, sizeof(text), "%.0f", l.score);
-      dl->AddText(ImVec2(x0, base - h - 15.0f), IM_COL32(220, 220, 220, 255), text);
-    } else {
-      dl->AddText(ImVec2(x0, base - 16.0f), IM_COL32(255, 110, 110, 255), "invalid");
-    }
-    std::snprintf(text, sizeof(text), "L%d%s", i, i == s.selected ? " *" : "");
-    dl->AddText(ImVec2(x0, base + 1.0f), IM_COL32(200, 200, 200, 255), text);
-  }
-  ImGui::Dummy(ImVec2(width, height + label_h));
-  if (const auto m = score_margin(s))
-    ImGui::Text("margin %.0f m (%.2g %%): L%d %.0f vs L%d %.0f", m->second - m->best,
-                m->best > 0 ? 100.0 * (m->second - m->best) / m->best : 0.0, m->best_level, m->best,
-                m->second_level, m->second);
-  else
-    ImGui::TextDisabled("margin: fewer than two valid levels");
-  if (s.selected >= 0) {  // the verdict a loop-closure user acts on; wrapped in a narrow column
-    ImGui::PushTextWrapPos(0.0f);
-    const Acceptance& a = s.acceptance;
-    ImGui::TextColored(a.accepted ? ImVec4(0.45f, 0.85f, 0.45f, 1) : ImVec4(1, 0.45f, 0.45f, 1),
-                       "%s: %.0f %% of structure within %.2f m, %d inliers%s%s",
-                       a.accepted ? "ACCEPTED" : "REJECTED", 100.0 * a.overlap,
-                       s.config.acceptance.inlier_distance, a.inliers, a.accepted ? "" : "; ",
-                       a.reason.c_str());
-    refinement_lines(s);
-    ImGui::PopTextWrapPos();
-  }
-}
 
 // The stale-results warning, or the line saying the last run changed the selected level.
 void change_line(const RunChanges& changes, const std::string& stale_reason) {
@@ -236,21 +150,21 @@ void level_details(const Snapshot& s, int shown) {
   if (gt) {
     ImGui::Spacing();
     if (s.selected_error)
-      ImGui::TextColored(s.selected_error->success ? kGood : kBad,
-                         "selected: %s (%.2f m, %.2f\xc2\xb0)",
-                         s.selected_error->success ? "SUCCESS" : "FAILURE",
-                         s.selected_error->translation, s.selected_error->rotation_deg);
+      ui::figure(ui::format("selected: %s (%.2f m, %.2f\xc2\xb0)%s",
+                            s.selected_error->success ? "SUCCESS" : "FAILURE",
+                            s.selected_error->translation, s.selected_error->rotation_deg,
+                            s.refinement.applied ? " after refinement" : ""),
+                 s.selected_error->success ? kGood : kBad);
     else
-      ImGui::TextColored(kBad, "selected: none");
-    ImGui::SameLine();
-    ImGui::TextDisabled("bound: %s", s.upper_bound ? "yes" : "no");
+      ui::figure("selected: none", kBad);
+    ui::figure_dim(ui::format("upper bound (any pose right): %s", s.upper_bound ? "yes" : "no"));
   }
 }
 
 }  // namespace
 
 void pyramid_panel(const Snapshot* s, const RunChanges& changes, const std::string& stale_reason,
-                   ViewState& view) {
+                   ViewState& view, const Exports& exports) {
   if (!s) {
     ImGui::TextDisabled("no result yet: open data on the left");
     return;
@@ -262,6 +176,9 @@ void pyramid_panel(const Snapshot* s, const RunChanges& changes, const std::stri
                       cluster_landmark_count(s->source_landmarks),
                       cluster_landmark_count(s->target_landmarks), s->correspondences.size(),
                       s->correspondences_capped ? " (capped)" : "");
+  diagnosis_verdict_line(*s);
+  warning_lines(*s);
+  result_exports(*s, exports);
   const int shown = shown_level(view, s->selected, static_cast<int>(s->levels.size()));
   const float chart_w = std::min(330.0f, ImGui::GetContentRegionAvail().x * 0.34f);
   ImGui::BeginChild("levels", ImVec2(ImGui::GetContentRegionAvail().x - chart_w - 8.0f, 0));

@@ -55,6 +55,9 @@ void session_panel(SessionFiles files, StudioActions& actions) {
   ui::input_text("PNG", &files.screenshot_path, "Where a screenshot is written.");
   if (ui::button("save screenshot", ImVec2(0, 0), "Writes the whole window as a PNG (S)."))
     actions.save_screenshot();
+  ui::input_text("export path", &files.export_path,
+                 "Exports (tables as CSV, the result JSON, plots as PNG and SVG) are written to "
+                 "<export path>-<name>.");
 }
 
 }  // namespace pagor::studio

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "panels/panels.hpp"
+#include "widgets/widgets.hpp"
 
 namespace pagor::studio {
 namespace {
@@ -82,6 +83,14 @@ void status_bar(const WorkerStatus& status, const Snapshot* snapshot, const Mess
     }
   }
   message_line(status.error, message);
+  if (snapshot && snapshot->diagnosis) {  // the stage at fault, in words, not only on hover
+    const Diagnosis& d = *snapshot->diagnosis;
+    ImGui::SameLine();
+    const bool ok = d.verdict == DiagnosisVerdict::success;
+    if (ui::figure(std::string("| diagnosis: ") + verdict_name(d.verdict) + ": " + d.explanation,
+                   ok ? ImVec4(0.45f, 0.85f, 0.45f, 1.0f) : kErrorColor))
+      ImGui::SetTooltip("%s\n%s", verdict_sentence(d.verdict), d.explanation.c_str());
+  }
 }
 
 }  // namespace pagor::studio

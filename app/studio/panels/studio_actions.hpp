@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "state/app_state.hpp"
 #include "state/message.hpp"
 
 namespace pagor::studio {
@@ -32,6 +33,11 @@ class StudioActions {
   virtual void export_plot(const Plot& plot, const std::string& path) = 0;
   /// Tells the user something; the status bar shows it until the next message.
   virtual void notify(Message message) = 0;
+  /// Opens a user's file as `purpose` says (state/open_file.hpp), re-runs what it changed and
+  /// remembers it among the recent files; the outcome goes to notify().
+  virtual void open_file(const std::string& path, FilePurpose purpose) = 0;
+  /// Puts `text` on the clipboard; notify() says what (`what`, e.g. "the pose as a 4x4 matrix").
+  virtual void copy_text(const std::string& text, const std::string& what) = 0;
 };
 
 }  // namespace pagor::studio

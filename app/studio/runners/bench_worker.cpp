@@ -71,6 +71,7 @@ void BenchWorker::open(PairSet set, const Config& config) {
     pending_plan_ = plan_path(set);
     plan_.reset();
     ++plan_generation_;
+    status_.set_generation = plan_generation_;
     pending_set_ = std::move(set);
     rerunnable_ = true;
     config_ = config;
@@ -99,6 +100,7 @@ void BenchWorker::show_results(std::vector<PairOutcome> outcomes, const std::str
     pending_plan_.reset();
     plan_.reset();
     ++plan_generation_;
+    status_.set_generation = plan_generation_;
     for (const BenchRow& r : rows_)  // results of an indoor set name the plan as their target
       if (is_floor_plan_path(r.outcome.target_name)) {
         pending_plan_ = beside(r.outcome.target_name, origin);
@@ -267,10 +269,11 @@ void BenchWorker::loop() {
   }
 }
 
-void BenchWorker::sweep(std::vector<SweepSetting> settings) {
+void BenchWorker::sweep(std::vector<SweepSetting> settings, const Config& base) {
   {
     std::lock_guard<std::mutex> lock(mutex_);
     if (!rerunnable_) return;
+    sweep_base_ = base;
     status_.sweep_total = static_cast<int>(settings.size()) * status_.total;
     status_.sweep_done = 0;
     status_.sweep_error.clear();
@@ -280,33 +283,37 @@ void BenchWorker::sweep(std::vector<SweepSetting> settings) {
   changed_.notify_all();
 }
 
-std::shared_ptr<const SweepResult> BenchWorker::sweep_result() const {
+std::shared_ptr<const SweepRecord> BenchWorker::sweep_result() const {
   std::lock_guard<std::mutex> lock(mutex_);
   return sweep_result_;
 }
 
 void BenchWorker::run_pending_sweep() {
   std::vector<SweepSetting> settings;
+  auto result = std::make_shared<SweepRecord>();
   {
     std::lock_guard<std::mutex> lock(mutex_);
     settings = std::move(*pending_sweep_);
     pending_sweep_.reset();
     cancel_ = false;
+    result->base = sweep_base_;
+    result->set = status_.set_generation;
   }
-  std::shared_ptr<SweepResult> result;
   std::string error;
   try {
-    result = std::make_shared<SweepResult>(run_sweep(
+    result->result = run_sweep(
         *runner_, settings,
         [this](int, int, const PairOutcome&) {
           std::lock_guard<std::mutex> lock(mutex_);
           ++status_.sweep_done;
         },
-        &cancel_));
+        &cancel_);
   } catch (const Cancelled&) {
     error = "the sweep was cancelled by a parameter change";
+    result.reset();
   } catch (const std::exception& e) {
     error = reason(e);
+    result.reset();
   }
   std::lock_guard<std::mutex> lock(mutex_);
   if (result) sweep_result_ = std::move(result);

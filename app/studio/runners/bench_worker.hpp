@@ -31,6 +31,30 @@ struct BenchRow {
   double last_ms = 0;    ///< wall time of its last evaluation (only invalidated stages) [ms]
 };
 
+/// A finished sweep and what it ran on, so that the view can tell when it no longer matches the
+/// parameters or the set shown.
+struct SweepRecord {
+  SweepResult result;
+  Config base;            ///< the configuration the swept values were set on
+  std::uint64_t set = 0;  ///< the set it ran over (BenchStatus::set_generation)
+};
+
+/// Why `record` no longer describes the open set with `config` (empty when it does): another set
+/// was opened, or a parameter other than the swept ones changed (the swept ones may differ: that
+/// is what "apply" does).
+std::string sweep_stale_reason(const SweepRecord& record, const Config& config,
+                               std::uint64_t set_generation);
+
+/// The pairs whose outcome differs between two settings of a sweep: success, the acceptance
+/// verdict or the diagnosis verdict. Indices into the set, in set order.
+std::vector<std::size_t> flipped_pairs(const SweepResult& result, std::size_t a, std::size_t b);
+
+/// The pair a row of `pagor bench --out` results ran on (read from `results_file`), to open it
+/// again: a KITTI pair when both clouds are scans of one sequence (sequences/SS/velodyne/N.bin,
+/// with the sequence's ground truth), else the two files (paths as written, or beside the results
+/// file) with the ground truth the row recorded. nullopt when the files are not there.
+std::optional<PairEntry> result_pair(const PairOutcome& outcome, const std::string& results_file);
+
 struct BenchStatus {
   bool busy = false;
   int total = 0, done = 0;              ///< pairs in the set; with an outcome of the current config
@@ -39,6 +63,7 @@ struct BenchStatus {
   std::size_t budget_bytes = 0;         ///< the budget [bytes]
   double pass_ms = 0;                   ///< wall time of the last complete pass (or so far) [ms]
   std::uint64_t generation = 0;         ///< increases with every open or configuration
+  std::uint64_t set_generation = 0;     ///< increases with every set or results file opened
   std::uint64_t finished = 0;           ///< generation of the last complete pass
   std::string error;                    ///< why the last pass stopped (empty when fine)
   bool sweeping = false;                ///< a sweep is queued or running
@@ -62,10 +87,10 @@ class BenchWorker {
   /// Memory budget of the per-pair caches [bytes]; pipelines beyond it are dropped after use.
   void set_budget(std::size_t bytes);
   /// Queues a sweep over the open set, after the current pass; the cached pipelines are reused
-  /// (a parameter change cancels it).
-  void sweep(std::vector<SweepSetting> settings);
+  /// (a parameter change cancels it). `base`: the configuration the settings' values were set on.
+  void sweep(std::vector<SweepSetting> settings, const Config& base);
   /// The last finished sweep (null before the first).
-  std::shared_ptr<const SweepResult> sweep_result() const;
+  std::shared_ptr<const SweepRecord> sweep_result() const;
   /// Drops every pair (the view is closed).
   void close();
 
@@ -104,7 +129,8 @@ class BenchWorker {
   std::vector<BenchRow> rows_;
   std::unique_ptr<SetRunner> runner_;  // the thread's, replaced under the mutex
   std::optional<std::vector<SweepSetting>> pending_sweep_;
-  std::shared_ptr<const SweepResult> sweep_result_;
+  Config sweep_base_;
+  std::shared_ptr<const SweepRecord> sweep_result_;
   BenchStatus status_;
   std::atomic<bool> cancel_{false};
   bool stop_ = false;

@@ -2,8 +2,10 @@
 
 #include <chrono>
 #include <new>
+#include <nlohmann/json.hpp>
 
 #include "pagor/errors.hpp"
+#include "pagor/report.hpp"
 
 namespace pagor::studio {
 
@@ -19,12 +21,19 @@ Worker::~Worker() {
   thread_.join();
 }
 
-std::uint64_t Worker::submit(std::optional<PairSource> data, const Config& config) {
+std::uint64_t Worker::submit(std::optional<PairSource> data, const Config& config,
+                             std::optional<Transform> truth) {
   std::lock_guard<std::mutex> lock(mutex_);
   Request r;
   r.id = ++status_.submitted;
   // A queued data change must survive a newer configuration-only request.
-  r.data = data ? std::move(data) : (pending_ ? pending_->data : std::nullopt);
+  if (data) {
+    r.data = std::move(data);
+    r.truth = truth;
+  } else if (pending_) {
+    r.data = pending_->data;
+    r.truth = pending_->truth;
+  }
   r.config = config;
   pending_ = std::move(r);
   cancel_ = true;  // the running request, if any, is now outdated
@@ -101,7 +110,10 @@ void Worker::handle(const Request& request) {
       LoadedPair pair = load_pair(*request.data, request.config.indoor);
       source_ = std::make_shared<const PointCloud>(std::move(pair.source.cloud));
       target_ = std::make_shared<const PointCloud>(std::move(pair.target.cloud));
-      ground_truth_ = pair.T_target_source_gt;
+      ground_truth_ = request.truth ? request.truth : pair.T_target_source_gt;
+      source_name_ = pair.source_name;
+      target_name_ = pair.target_name;
+      target_index_ = std::make_shared<const KdTree3f>(target_->points);
       const bool indoor = pair.plan.has_value();  // a scan against a floor plan
       plan_ = indoor ? std::make_shared<const FloorPlan>(std::move(*pair.plan)) : nullptr;
       scan_columns_ =
@@ -207,6 +219,12 @@ std::shared_ptr<Snapshot> Worker::make_snapshot(std::uint64_t request) const {
   s->verification_points = p.verifier() ? p.verifier()->source_points().size() : 0;
   s->warnings = p.warnings();
   add_diagnosis(p, *s);
+  s->target_index = target_index_;
+  // As pagor register --json writes it.
+  auto report = nlohmann::json::parse(registration_report_json(p, source_name_, target_name_, -1));
+  report["diagnosis"] =
+      s->diagnosis ? nlohmann::json::parse(diagnosis_json(*s->diagnosis)) : nlohmann::json();
+  s->report_json = report.dump(2) + "\n";
   return s;
 }
 

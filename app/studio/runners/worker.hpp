@@ -16,6 +16,7 @@
 
 #include "pagor/pipeline.hpp"
 #include "pagor/sets/dataset.hpp"
+#include "pagor/util/kdtree.hpp"
 #include "pagor/verify/diagnosis.hpp"
 
 namespace pagor::studio {
@@ -63,6 +64,11 @@ struct Snapshot {
   /// Per level, each verification point's min(d, mu) under its candidate [m] (empty: invalid).
   std::vector<std::vector<float>> contributions;
   std::vector<float> gt_contribution;  ///< the same under the ground truth (empty without)
+  /// The result as `pagor register --json` writes it (schema pagor.register/1, with the
+  /// diagnosis), for the same inputs the same figures.
+  std::string report_json;
+  /// The target cloud's points indexed, for picking (distance to the nearest target point).
+  std::shared_ptr<const KdTree3f> target_index;
 };
 
 /// What the worker is doing.
@@ -83,7 +89,9 @@ class Worker {
   Worker& operator=(const Worker&) = delete;
 
   /// Queues new data (nullopt keeps the current data) and a configuration; returns the request id.
-  std::uint64_t submit(std::optional<PairSource> data, const Config& config);
+  /// `truth` replaces the data's ground truth (a row of benchmark results carries its own).
+  std::uint64_t submit(std::optional<PairSource> data, const Config& config,
+                       std::optional<Transform> truth = std::nullopt);
   /// The latest finished snapshot (null before the first).
   std::shared_ptr<const Snapshot> snapshot() const;
   WorkerStatus status() const;
@@ -94,6 +102,7 @@ class Worker {
   struct Request {
     std::uint64_t id = 0;
     std::optional<PairSource> data;
+    std::optional<Transform> truth;
     Config config;
   };
   void loop();
@@ -117,7 +126,8 @@ class Worker {
   std::optional<Transform> ground_truth_;
   std::shared_ptr<const FloorPlan> plan_;
   std::shared_ptr<const std::vector<DetectedColumn>> scan_columns_;
-  std::string description_;
+  std::string description_, source_name_, target_name_;
+  std::shared_ptr<const KdTree3f> target_index_;
   std::uint64_t data_generation_ = 0;
   std::thread thread_;
 };

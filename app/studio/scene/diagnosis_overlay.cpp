@@ -111,7 +111,7 @@ int draw_hover_edges(ImDrawList* dl, const ViewRect& r, const Snapshot& s, const
 float diagnosis_legend_height(const Snapshot& s, const ViewState& view) {
   float h = 0;
   if (view.diagnosis.color_by_residual && s.diagnosis) h += 48;
-  if (view.diagnosis.contribution != Contribution::off && s.verification_source) h += 48;
+  if (shown_contribution(view) != Contribution::off && s.verification_source) h += 48;
   return h;
 }
 
@@ -126,11 +126,13 @@ void draw_diagnosis_legend(ImDrawList* dl, ImVec2 at, const Snapshot& s, const V
     std::snprintf(mid, sizeof(mid), "%.1f", s.diagnosis->residual_tolerance);
     colour_bar(dl, at, "lines: truth residual [m]", residual_scale(s), mid);
   }
-  if (view.diagnosis.contribution != Contribution::off && s.verification_source) {
+  if (shown_contribution(view) != Contribution::off && s.verification_source) {
     const double mu = s.config.verification.mu;
     std::snprintf(mid, sizeof(mid), "%.2f", 0.5 * mu);
-    if (view.diagnosis.contribution == Contribution::ground_truth)
+    if (shown_contribution(view) == Contribution::ground_truth)
       std::snprintf(title, sizeof(title), "part of D, truth [m]");
+    else if (view.color == ColorMode::residual)
+      std::snprintf(title, sizeof(title), "residual min(d, \xce\xbc), L%d [m]", level);
     else
       std::snprintf(title, sizeof(title), "part of D, L%d [m]", level);
     colour_bar(dl, at, title, mu, mid);

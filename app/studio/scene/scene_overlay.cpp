@@ -127,11 +127,21 @@ void draw_grid_axes_scale(ImDrawList* dl, const ViewRect& r, const Camera& camer
     world_line(dl, r, {x, cy - e, ground_z}, {x, cy + e, ground_z}, grid, 1.0f);
     world_line(dl, r, {cx - e, y, ground_z}, {cx + e, y, ground_z}, grid, 1.0f);
   }
-  // Axes at the target frame's origin (the target sensor), one grid step long.
+  // Axes at the target frame's origin (the target sensor), one grid step long: thin, light and
+  // lettered, so that they are never taken for correspondence lines (green / red).
   const Eigen::Vector3f o(0, 0, 0);
-  world_line(dl, r, o, {step, 0, 0}, IM_COL32(230, 70, 70, 255), 3.0f, 1);
-  world_line(dl, r, o, {0, step, 0}, IM_COL32(70, 210, 70, 255), 3.0f, 1);
-  world_line(dl, r, o, {0, 0, step}, IM_COL32(80, 130, 255, 255), 3.0f, 1);
+  const ImU32 axis = col(Palette::axis);
+  const char* names[] = {"x", "y", "z"};
+  for (int k = 0; k < 3; ++k) {
+    Eigen::Vector3f tip = o;
+    tip[k] = step;
+    world_line(dl, r, o, tip, axis, 1.5f, 1);
+    ImVec2 p;
+    if (to_screen(r, tip, p)) {
+      dl->AddCircleFilled(p, 3.0f, axis);
+      dl->AddText(ImVec2(p.x + 4, p.y - 8), axis, names[k]);
+    }
+  }
   // Scale bar, bottom left: true at the camera target's depth.
   const float mpp = metres_per_pixel(camera, r.height);
   const float metres = nice_length(120.0f * mpp), px = metres / mpp;
@@ -184,34 +194,76 @@ int draw_correspondence_lines(ImDrawList* dl, const ViewRect& r, const Snapshot&
   return drawn;
 }
 
-void draw_legend(ImDrawList* dl, ImVec2 at, const Snapshot& s, const ViewState& view,
-                 const ClassColors& colors) {
-  const bool gt = s.ground_truth.has_value();
+namespace {
+
+constexpr std::size_t kLegendClasses = 12;  // class entries at most; the rest are counted
+
+// The point entries of the legend: what the clouds are drawn in.
+std::vector<std::pair<ImU32, std::string>> point_entries(const Snapshot& s, const ViewState& view,
+                                                         const ClassColors& colors,
+                                                         const std::vector<DrawnClass>& drawn) {
   std::vector<std::pair<ImU32, std::string>> points;
-  if (view.color == ColorMode::by_cloud) {
-    points = {{col(Palette::source), "source"}, {col(Palette::target), "target"}};
-  } else {
-    // Clouds without labels have no point of any configured class: only what the run added.
-    const bool labelled =
-        (s.source && !s.source->labels.empty()) || (s.target && !s.target->labels.empty());
-    if (labelled)
-      for (const auto& c : s.config.landmarks.classes)
-        points.push_back({col(colors.of(c.name)), c.name});
-    // With labels: classes the run added, such as the class-agnostic `structure` keypoints of a
-    // class-poor pair. Without: every class that made landmarks.
-    for (const auto& c : s.source_landmarks.classes)
-      if (c.landmarks > 0 && std::none_of(points.begin(), points.end(),
-                                          [&](const auto& p) { return p.second == c.name; }))
-        points.push_back({col(colors.of(c.name)), c.name + " (landmarks only)"});
-    points.push_back(
-        {IM_COL32(120, 120, 120, 255), labelled ? "other labels" : "unlabelled points"});
+  if (view.color == ColorMode::by_cloud)
+    return {{col(Palette::source), "source"}, {col(Palette::target), "target"}};
+  if (view.color == ColorMode::residual) return {{col(Palette::plain), "target"}};
+  if (view.color != ColorMode::by_class) return points;  // a colour bar instead
+  std::size_t more = 0;
+  for (const DrawnClass& c : drawn) {
+    if (points.size() >= kLegendClasses) {
+      ++more;
+      continue;
+    }
+    points.push_back({col(c.color), c.name.empty() ? "labels of no class of the scheme" : c.name});
   }
+  // Classes that made landmarks but colour no point: the class-agnostic `structure` keypoints,
+  // or every landmark class of unlabelled clouds.
+  for (const auto& c : s.source_landmarks.classes)
+    if (c.landmarks > 0 && std::none_of(drawn.begin(), drawn.end(),
+                                        [&](const DrawnClass& d) { return d.name == c.name; }))
+      points.push_back({col(colors.of(c.name)), c.name + " (landmarks only)"});
+  if (drawn.empty()) points.push_back({IM_COL32(120, 120, 120, 255), "unlabelled points"});
+  if (more) points.push_back({IM_COL32(0, 0, 0, 0), "+ " + std::to_string(more) + " more classes"});
+  return points;
+}
+
+// A horizontal viridis bar from scale.lo to scale.hi with its title.
+void scale_bar(ImDrawList* dl, ImVec2& at, const ColorScale& scale) {
+  const ImU32 text = IM_COL32(230, 230, 230, 255);
+  if (!scale.valid) {
+    dl->AddText(at, text, "no intensities in these clouds: grey");
+    at.y += 17;
+    return;
+  }
+  dl->AddText(at, text, scale.title.c_str());
+  at.y += 17;
+  const float w = 170.0f, h = 10.0f;
+  const int steps = 34;
+  for (int i = 0; i < steps; ++i)
+    dl->AddRectFilled(ImVec2(at.x + w * i / steps, at.y),
+                      ImVec2(at.x + w * (i + 1) / steps + 0.5f, at.y + h),
+                      col(scale_color((i + 0.5) / steps)));
+  char lo[32], hi[32];
+  std::snprintf(lo, sizeof(lo), "%.3g", scale.lo);
+  std::snprintf(hi, sizeof(hi), "%.3g", scale.hi);
+  dl->AddText(ImVec2(at.x, at.y + h + 1), text, lo);
+  dl->AddText(ImVec2(at.x + w - ImGui::CalcTextSize(hi).x, at.y + h + 1), text, hi);
+  at.y += h + 20;
+}
+
+}  // namespace
+
+void draw_legend(ImDrawList* dl, ImVec2 at, const Snapshot& s, const ViewState& view,
+                 const ClassColors& colors, const std::vector<DrawnClass>& drawn,
+                 const ColorScale& scale) {
+  const bool gt = s.ground_truth.has_value();
+  const auto points = point_entries(s, view, colors, drawn);
+  const bool bar = view.color == ColorMode::height || view.color == ColorMode::intensity;
   const bool by_residual = view.diagnosis.color_by_residual && s.diagnosis;  // its own legend
   const bool plan = s.plan && view.layers.plan;
   const int lines = (by_residual ? 0 : 1 + (gt ? 1 : 0)) +
                     (view.layers.all_correspondences ? 1 : 0) + (plan ? 3 : 0);
-  const float h = 17.0f * static_cast<float>(lines + points.size()) + 4.0f;
-  dl->AddRectFilled(ImVec2(at.x - 4, at.y - 4), ImVec2(at.x + 190, at.y + h),
+  const float h = 17.0f * static_cast<float>(lines + points.size()) + (bar ? 48.0f : 0.0f) + 4.0f;
+  dl->AddRectFilled(ImVec2(at.x - 4, at.y - 4), ImVec2(at.x + 200, at.y + h),
                     IM_COL32(0, 0, 0, 150), 4.0f);
   if (!by_residual) {
     legend_item(dl, at, col(Palette::clique), gt ? "clique, true inlier" : "clique", true);
@@ -224,6 +276,7 @@ void draw_legend(ImDrawList* dl, ImVec2 at, const Snapshot& s, const ViewState& 
     legend_item(dl, at, PlanPalette::column, "plan: columns", true);
     legend_item(dl, at, PlanPalette::scan_column, "scan: columns found", true);
   }
+  if (bar) scale_bar(dl, at, scale);
   for (const auto& [c, name] : points) legend_item(dl, at, c, name.c_str(), false);
 }
 

@@ -8,9 +8,9 @@
 
 #include <Eigen/Core>
 
-#include "state/app_state.hpp"
-#include "scene/scene_view.hpp"
 #include "runners/worker.hpp"
+#include "scene/scene_view.hpp"
+#include "state/app_state.hpp"
 
 namespace pagor::studio {
 
@@ -41,8 +41,11 @@ int draw_correspondence_lines(ImDrawList* dl, const ViewRect& r, const Snapshot&
                               const ViewState& view, const Transform& source_pose, int level,
                               const ClassColors& colors);
 
-/// Legend: line meanings, and the class colours (or source / target).
+/// Legend: line meanings, and what the points are drawn in: the classes drawn (`drawn`, with the
+/// classes that made landmarks only), source / target, or the colour scale of height or
+/// intensity (`scale`).
 void draw_legend(ImDrawList* dl, ImVec2 at, const Snapshot& s, const ViewState& view,
-                 const ClassColors& colors);
+                 const ClassColors& colors, const std::vector<DrawnClass>& drawn,
+                 const ColorScale& scale);
 
 }  // namespace pagor::studio

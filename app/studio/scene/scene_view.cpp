@@ -14,7 +14,6 @@
 namespace pagor::studio {
 namespace {
 
-constexpr Rgba kGrey{120, 120, 120, 255};
 constexpr int kFloatsPerVertex = 4;  // x, y, z, packed RGBA
 
 float pack(const Rgba& c) {
@@ -33,31 +32,8 @@ void push(std::vector<float>& v, const Eigen::Vector3f& p, const Rgba& c) {
 
 }  // namespace
 
-ClassColors::ClassColors() {
-  const auto j = nlohmann::json::parse(resource("class_colors.json").text());
-  for (const auto& item : j.items()) {
-    if (!item.value().is_array() || item.value().size() != 3) continue;
-    colors_[item.key()] = {item.value()[0].get<unsigned char>(),
-                           item.value()[1].get<unsigned char>(),
-                           item.value()[2].get<unsigned char>(), 255};
-  }
-}
-
-Rgba ClassColors::of(const std::string& name) const {
-  const auto it = colors_.find(name);
-  return it == colors_.end() ? kGrey : it->second;
-}
-
-std::vector<Rgba> ClassColors::per_point(const PointCloud& cloud, const LabelScheme& scheme) const {
-  std::unordered_map<std::uint32_t, Rgba> by_id;
-  for (const auto& c : scheme.classes)
-    for (std::uint32_t id : c.ids) by_id[id] = of(c.name);
-  std::vector<Rgba> out(cloud.size(), kGrey);
-  for (std::size_t i = 0; i < cloud.size() && i < cloud.labels.size(); ++i) {
-    const auto it = by_id.find(semantic_id(cloud.labels[i]));
-    if (it != by_id.end()) out[i] = it->second;
-  }
-  return out;
+Contribution shown_contribution(const ViewState& view) {
+  return view.color == ColorMode::residual ? Contribution::candidate : view.diagnosis.contribution;
 }
 
 Eigen::Vector3f transform_point(const Transform& T, const Eigen::Vector3d& p) {
@@ -118,30 +94,49 @@ void SceneView::upload(Buffer& b, const std::vector<float>& v) {
   b.count = static_cast<GLsizei>(v.size() / kFloatsPerVertex);
 }
 
-void SceneView::update(const Snapshot& s, const ViewState& view, const Transform& pose) {
-  // Dense clouds: only when the data or the label scheme changes.
+void SceneView::update_clouds(const Snapshot& s, const ViewState& view, const Transform& pose) {
+  // by_cloud and residual draw uniform colours over the class colours (SceneView::render).
+  const ColorMode mode = view.color == ColorMode::height || view.color == ColorMode::intensity
+                             ? view.color
+                             : ColorMode::by_class;
   // Each cloud in the scheme its labels were read with (`auto`: the one detected for it).
   const LabelScheme& source_scheme = s.source_landmarks.labels.scheme;
   const LabelScheme& target_scheme = s.target_landmarks.labels.scheme;
-  const std::string scheme = source_scheme.name + "/" + source_scheme.class_list() + "|" +
-                             target_scheme.name + "/" + target_scheme.class_list();
-  if (s.data_generation != cloud_generation_ || scheme != cloud_scheme_) {
-    for (const auto& [cloud, buffer, read_as] :
-         {std::tuple{s.source.get(), &source_, &source_scheme},
-          std::tuple{s.target.get(), &target_, &target_scheme}}) {
-      std::vector<float> v;
-      if (cloud) {
-        const std::vector<Rgba> colors = class_colors_.per_point(*cloud, *read_as);
-        v.reserve(cloud->size() * kFloatsPerVertex);
-        for (std::size_t i = 0; i < cloud->size(); ++i) push(v, cloud->points[i], colors[i]);
-      }
-      upload(*buffer, v);
-    }
-    cloud_generation_ = s.data_generation;
-    cloud_scheme_ = scheme;
-    ++cloud_uploads_;
+  const std::string key = std::to_string(s.data_generation) + "/" + source_scheme.name + "/" +
+                          source_scheme.class_list() + "|" + target_scheme.name + "/" +
+                          target_scheme.class_list() + "/" +
+                          std::to_string(static_cast<int>(mode));
+  std::string source_key = key;
+  if (mode == ColorMode::height)  // the source's height in the target frame follows its pose
+    for (int i = 0; i < 16; ++i) source_key += "," + std::to_string(pose(i / 4, i % 4));
+  if (key == cloud_key_ && source_key == source_key_) return;
+  const bool both = key != cloud_key_;
+  if (both) {
+    drawn_ = studio::drawn_classes(s, class_colors_);
+    scale_ = mode == ColorMode::height      ? height_scale(s)
+             : mode == ColorMode::intensity ? intensity_scale(s)
+                                            : ColorScale{};
   }
+  for (const auto& [cloud, buffer, T, read_as] :
+       {std::tuple{s.source.get(), &source_, pose, &source_scheme},
+        std::tuple{s.target.get(), &target_, Transform(Transform::Identity()), &target_scheme}}) {
+    if (buffer == &target_ && !both) continue;
+    std::vector<float> v;
+    if (cloud) {
+      const std::vector<Rgba> colors =
+          cloud_colors(*cloud, mode, class_colors_, *read_as, T, scale_);
+      v.reserve(cloud->size() * kFloatsPerVertex);
+      for (std::size_t i = 0; i < cloud->size(); ++i) push(v, cloud->points[i], colors[i]);
+    }
+    upload(*buffer, v);
+  }
+  cloud_key_ = key;
+  source_key_ = source_key;
+  ++cloud_uploads_;
+}
 
+void SceneView::update(const Snapshot& s, const ViewState& view, const Transform& pose) {
+  update_clouds(s, view, pose);
   update_contribution(s, view);
   // Landmarks: small; again when the snapshot, the level, the pose or the colouring change.
   const int level = shown_level(view, s.selected, static_cast<int>(s.levels.size()));
@@ -183,7 +178,7 @@ void SceneView::update(const Snapshot& s, const ViewState& view, const Transform
 }
 
 void SceneView::update_contribution(const Snapshot& s, const ViewState& view) {
-  const Contribution mode = view.diagnosis.contribution;
+  const Contribution mode = shown_contribution(view);
   const int level = shown_level(view, s.selected, static_cast<int>(s.levels.size()));
   const std::string key = std::to_string(s.request) + "/" + std::to_string(static_cast<int>(mode)) +
                           "/" + std::to_string(level);
@@ -279,9 +274,13 @@ void SceneView::render(int width, int height, const Camera& camera, const ViewSt
   const Eigen::Matrix4f vp = camera.projection(static_cast<float>(width) / height) * camera.view();
   const Eigen::Matrix4f source_mvp = vp * pose.cast<float>();
   const bool by_cloud = view.color == ColorMode::by_cloud;
+  const bool residual = view.color == ColorMode::residual;
   if (view.layers.target)
-    draw(target_, GL_POINTS, vp, view.point_size, false, by_cloud ? &Palette::target : nullptr);
-  if (view.layers.source && view.diagnosis.contribution != Contribution::off)
+    draw(target_, GL_POINTS, vp, view.point_size, false,
+         by_cloud   ? &Palette::target
+         : residual ? &Palette::plain
+                    : nullptr);
+  if (view.layers.source && shown_contribution(view) != Contribution::off)
     draw(contribution_, GL_POINTS, vp * contribution_pose_.cast<float>(), view.point_size + 1.0f,
          false, nullptr);
   else if (view.layers.source)

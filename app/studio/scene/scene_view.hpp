@@ -11,26 +11,12 @@
 #include <string>
 #include <vector>
 
-#include "state/app_state.hpp"
 #include "render/gl.hpp"
 #include "runners/worker.hpp"
+#include "scene/cloud_colors.hpp"
+#include "state/app_state.hpp"
 
 namespace pagor::studio {
-
-using Rgba = std::array<unsigned char, 4>;
-
-/// Class colours from the embedded assets/class_colors.json.
-class ClassColors {
- public:
-  ClassColors();
-  /// Colour of a class name (grey when unlisted).
-  Rgba of(const std::string& class_name) const;
-  /// Colour of each raw label under a scheme (grey for labels of no class).
-  std::vector<Rgba> per_point(const PointCloud& cloud, const LabelScheme& scheme) const;
-
- private:
-  std::map<std::string, Rgba> colors_;
-};
 
 /// Colours of the overlay elements, shared by the renderer and the legend.
 struct Palette {
@@ -40,7 +26,14 @@ struct Palette {
   static constexpr Rgba clique_outlier{255, 60, 60, 255};
   static constexpr Rgba other{200, 200, 200, 70};
   static constexpr Rgba background{22, 24, 28, 255};
+  static constexpr Rgba plain{110, 110, 115, 255};  ///< the target under residual colouring
+  /// The XYZ axes at the target sensor: light grey and lettered, unlike any line colour.
+  static constexpr Rgba axis{225, 225, 235, 230};
 };
+
+/// What the source's verification points are coloured by: the view's diagnosis choice, or the
+/// shown level's candidate when the clouds are coloured by residual.
+Contribution shown_contribution(const ViewState& view);
 
 /// Whether a correspondence agrees with the ground truth: its residual under T_gt is within
 /// `bound` [m] (the studio uses the success criterion's translation tolerance, as KITTI's ground
@@ -66,6 +59,10 @@ class SceneView {
   /// Cloud uploads so far (a test of "no re-upload per frame").
   int cloud_uploads() const { return cloud_uploads_; }
   const ClassColors& class_colors() const { return class_colors_; }
+  /// The classes the class colouring draws (for the legend; from the clouds' labels).
+  const std::vector<DrawnClass>& drawn_classes() const { return drawn_; }
+  /// The scale of the height or intensity colouring drawn (for the legend).
+  const ColorScale& color_scale() const { return scale_; }
   /// Height of the ground under the target: its 2 % height quantile [m] (cached per data).
   float ground_z(const Snapshot& snapshot);
 
@@ -80,6 +77,9 @@ class SceneView {
   void resize(int width, int height);
   /// The verification points coloured by their contribution to D (ViewState::diagnosis).
   void update_contribution(const Snapshot& s, const ViewState& view);
+  /// The dense clouds and their colours, when the data, the scheme, the mode or (height) the
+  /// source's pose changed.
+  void update_clouds(const Snapshot& s, const ViewState& view, const Transform& source_pose);
 
   const Gl* gl_ = nullptr;
   ClassColors class_colors_;
@@ -92,8 +92,9 @@ class SceneView {
   std::string contribution_key_;
   std::uint64_t ground_generation_ = 0;
   float ground_z_ = 0.0f;
-  std::uint64_t cloud_generation_ = 0;
-  std::string cloud_scheme_;
+  std::string cloud_key_, source_key_;  // what the clouds' colours were made for
+  std::vector<DrawnClass> drawn_;
+  ColorScale scale_;
   std::uint64_t overlay_request_ = 0;
   std::string overlay_key_;
   int cloud_uploads_ = 0;

@@ -12,6 +12,7 @@
 
 #include "pagor/graph/trim.hpp"
 #include "scene/diagnosis_overlay.hpp"
+#include "scene/picking.hpp"
 #include "scene/plan_overlay.hpp"
 #include "scene/scene_overlay.hpp"
 
@@ -151,8 +152,49 @@ Transform shown_source_pose(const ViewState& view, const Snapshot& s) {
   return Transform::Identity();
 }
 
+namespace {
+
+constexpr float kPointPickPx = 8.0f;
+
+// The picks' facts, top right of the view.
+void pick_box(ImDrawList* dl, ImVec2 origin, float w, const std::vector<Pick>& picks) {
+  std::string text;
+  for (std::size_t k = 0; k < picks.size(); ++k)
+    text += (k ? "\n\n" : "") + std::to_string(k + 1) + ": " + pick_text(picks[k]);
+  if (picks.size() == 2) {
+    char buf[96];
+    std::snprintf(buf, sizeof(buf), "\n\n1 to 2: %.3f m", pick_distance(picks[0], picks[1]));
+    text += buf;
+  }
+  const ImVec2 size = ImGui::CalcTextSize(text.c_str());
+  const ImVec2 at(origin.x + w - size.x - 14, origin.y + 10);
+  dl->AddRectFilled(ImVec2(at.x - 5, at.y - 4), ImVec2(at.x + size.x + 5, at.y + size.y + 4),
+                    IM_COL32(0, 0, 0, 170), 4.0f);
+  dl->AddText(at, IM_COL32(240, 240, 240, 255), text.c_str());
+}
+
+// A click (pressed and released without a drag) picks; Shift keeps the first pick to measure.
+void handle_pick(const Snapshot& s, const ViewState& view, const Transform& pose, const ViewRect& r,
+                 const Eigen::Vector2f& mouse, std::vector<Pick>& picks) {
+  const ImGuiIO& io = ImGui::GetIO();
+  // Shift as it was when the button went down (it is often let go with the button).
+  static bool shift_at_press = false;
+  if (ImGui::IsMouseClicked(ImGuiMouseButton_Left)) shift_at_press = io.KeyShift;
+  if (!ImGui::IsMouseReleased(ImGuiMouseButton_Left) || io.MouseDragMaxDistanceSqr[0] > 16.0f)
+    return;
+  const std::optional<Pick> p = pick_point(s, view, pose, r, mouse, kPointPickPx);
+  if (!p) {
+    picks.clear();
+    return;
+  }
+  if (!(shift_at_press || io.KeyShift) || picks.size() >= 2) picks.clear();
+  picks.push_back(*p);
+}
+
+}  // namespace
+
 void scene_window(SceneView& scene, const Snapshot* s, const ViewState& view,
-                  CameraControl camera_control) {
+                  CameraControl camera_control, std::vector<Pick>& picks) {
   Camera& camera = camera_control.camera;
   const ImVec2 size = ImGui::GetContentRegionAvail();
   const int w = std::max(1, static_cast<int>(size.x)), h = std::max(1, static_cast<int>(size.y));
@@ -186,11 +228,14 @@ void scene_window(SceneView& scene, const Snapshot* s, const ViewState& view,
   }
   draw_correspondence_lines(dl, rect, *s, view, pose, shown, scene.class_colors());
   if (view.legend && w >= 360 && h >= 220) {  // a small view keeps its picture
-    draw_legend(dl, ImVec2(origin.x + 10, origin.y + 10), *s, view, scene.class_colors());
+    draw_legend(dl, ImVec2(origin.x + 10, origin.y + 10), *s, view, scene.class_colors(),
+                scene.drawn_classes(), scene.color_scale());
     const float dh = diagnosis_legend_height(*s, view);
     if (dh > 0)  // bottom right, clear of the scale bar
       draw_diagnosis_legend(dl, ImVec2(origin.x + w - 196, origin.y + h - dh - 8), *s, view, shown);
   }
+  draw_picks(dl, rect, picks);
+  if (!picks.empty()) pick_box(dl, origin, static_cast<float>(w), picks);
   dl->PopClipRect();
   if (!hovered) return;
 
@@ -206,6 +251,7 @@ void scene_window(SceneView& scene, const Snapshot* s, const ViewState& view,
   // The camera as moved by this frame's input.
   const ViewRect now{origin, static_cast<float>(w), static_cast<float>(h),
                      camera.projection(static_cast<float>(w) / h) * camera.view()};
+  handle_pick(*s, view, pose, now, mouse, picks);
   bool best_source = false;
   int best_index = view.layers.landmarks ? nearest_landmark(*s, pose, now, mouse, best_source) : -1;
   if (best_index >= 0) {

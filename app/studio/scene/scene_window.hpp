@@ -19,9 +19,11 @@ struct CameraControl {
 };
 
 /// Renders `snapshot` (null: nothing yet) through `scene` into the current window's free area,
-/// draws the overlays, and handles camera input and hover.
+/// draws the overlays, and handles camera input, hover and picking: a click picks the point
+/// under the mouse into `picks` (Shift+click adds a second one to measure to; a click on nothing
+/// clears them).
 void scene_window(SceneView& scene, const Snapshot* snapshot, const ViewState& view,
-                  CameraControl camera);
+                  CameraControl camera, std::vector<Pick>& picks);
 
 /// The transform the source cloud is drawn under, per `view.pose`.
 Transform shown_source_pose(const ViewState& view, const Snapshot& snapshot);

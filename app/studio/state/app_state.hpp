@@ -3,18 +3,24 @@
 /// The studio's state: what data is open, every parameter, the camera and what is shown. Panels
 /// draw from it and edit it; the session file is this state on disk.
 
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "pagor/config.hpp"
 #include "pagor/sets/dataset.hpp"
+#include "pagor/sets/pair_set.hpp"
 #include "state/camera.hpp"
 #include "state/message.hpp"
 
 namespace pagor::studio {
 
-enum class ColorMode { by_class, by_cloud };
+/// What the dense clouds are coloured by: semantic class, cloud (source blue, target orange),
+/// height z in the target frame, the lidar's intensity, or (source) the residual of each
+/// verification point: its distance to the nearest target point under the shown pose, capped at
+/// mu. The legend shows the same.
+enum class ColorMode { by_class, by_cloud, height, intensity, residual };
 /// Where the source is drawn: under the shown level's candidate, the truth, its own frame, or
 /// the refined selection (the candidate where refinement did not apply).
 enum class PoseShown { selected, ground_truth, identity, refined };
@@ -94,22 +100,69 @@ struct BenchViewState {
   RowFilter show = RowFilter::all;  ///< which rows the table lists
   int sort = 0;                     ///< column index of benchmark_view's columns
   bool descending = false;
-  int budget_mib = 1024;                 ///< memory budget of the per-pair caches [MiB]
-  std::string plot_path = "pagor-plot";  ///< exports go to PATH-<plot>.png / .csv
-  std::string sweep_mu = "0.5,1,2";      ///< sweep: mu values [m]
-  std::string sweep_thresholds;          ///< sweep: threshold sets ("a,b;c,d"), empty: current
-  int sweep_pair = 0;                    ///< sweep: the pair whose D is plotted
+  int budget_mib = 1024;                       ///< memory budget of the per-pair caches [MiB]
+  std::string plot_path = "pagor-plot";        ///< exports go to PATH-<plot>.png / .csv
+  std::string sweep_path = "verification.mu";  ///< sweep: the parameter (configuration key path)
+  std::string sweep_values = "0.5,1,2";        ///< its values: "a,b,c"; threshold sets "a,b;c"
+  std::string sweep_path2;                     ///< a second parameter for a 2-D sweep (empty: 1-D)
+  std::string sweep_values2;                   ///< its values
+  int flip_a = 0, flip_b = 1;                  ///< the two sweep settings the flip view compares
+};
+
+/// A point picked in the 3D view (click; Shift+click adds a second to measure between).
+struct Pick {
+  bool source = false;       ///< picked from the source cloud (else the target)
+  std::size_t index = 0;     ///< the point's index in its cloud
+  Eigen::Vector3f at;        ///< where it is drawn: the target frame [m]
+  Eigen::Vector3f raw;       ///< its coordinates in its own cloud's frame [m]
+  std::string class_name;    ///< its class under the label scheme ("" without labels)
+  long label = -1;           ///< its raw label's semantic id (-1 without labels)
+  float nearest_target = 0;  ///< distance to the nearest target point [m] (the target itself: 0)
+};
+
+/// What a file dialog opens the chosen file as.
+enum class FilePurpose {
+  any,            ///< by its kind: a cloud, labels, a config, a session, a manifest, ...
+  source_cloud,   ///< files mode's source cloud
+  target_cloud,   ///< files mode's target cloud
+  source_labels,  ///< files mode's source .label file
+  target_labels,  ///< files mode's target .label file
+  ground_truth,   ///< files mode's 4x4 T_target_source
+  pairs,          ///< a pairs file or manifest to step through
+  config,         ///< a configuration JSON
+  session,        ///< a session JSON
+  bench,          ///< the benchmark view's set or results file
+  kitti_root,     ///< a KITTI root directory
+};
+
+/// The studio's own file browser (panels/file_dialog.cpp).
+struct FileDialogState {
+  bool open = false;
+  FilePurpose purpose = FilePurpose::any;
+  std::string directory;  ///< listed directory (absolute)
+  std::string name;       ///< the file name typed or clicked
+  std::string filter;     ///< only names containing this
+  /// The listing shown, read once per directory, filter and purpose (`listed` names them).
+  std::vector<std::pair<std::string, bool>> listing;  ///< (name, is a directory)
+  std::string listed;
+  bool truncated = false;  ///< the directory holds more than the listing shows
 };
 
 struct AppState {
   PairSource data;       ///< as the user wrote it; relative paths are taken from `base_dir`
   std::string base_dir;  ///< directory of the loaded session file (empty: working directory)
   bool have_data = false;
-  std::string pairs_file;                  ///< optional: steps through its pairs
-  std::vector<std::pair<int, int>> pairs;  ///< read from pairs_file
-  int pair_index = -1;
+  std::string pairs_file;  ///< optional: a KITTI pairs file or a manifest to step through
+  PairSet pairs;           ///< read from pairs_file (read_step_pairs)
+  int pair_index = -1;     ///< the pair of `pairs` shown, -1: none of them
+  /// A ground truth that came with the data without a file (a row of `pagor bench --out`
+  /// results); dropped when other data is opened.
+  std::optional<Transform> inline_truth;
 
   Config config = default_config();
+  /// The preset the configuration starts from ("default", "paper", "indoor"): what "defaults" and
+  /// each parameter's reset go back to, and what a parameter is marked modified against.
+  std::string preset = "default";
   MainView main_view = MainView::pair;
   BenchViewState bench;
   ViewState view;
@@ -121,8 +174,12 @@ struct AppState {
   std::string screenshot_path = "pagor-studio.png";
   Message message;  ///< the last message for the user (StudioActions::notify), in the status bar
   bool want_screenshot = false;
-  bool show_help = false;          ///< the shortcut overlay (F1 or H)
-  int width = 1280, height = 720;  ///< window or image size [px]
+  std::vector<Pick> picks;          ///< at most two: coordinates, and the distance between
+  FileDialogState dialog;           ///< the file browser
+  std::vector<std::string> recent;  ///< recently opened files, newest first (absolute)
+  std::string recent_file;          ///< where `recent` is kept between runs (empty: not kept)
+  bool show_help = false;           ///< the shortcut overlay (F1 or H)
+  int width = 1280, height = 720;   ///< window or image size [px]
 };
 
 /// Writes the state as a session file (schema pagor.session/1). Throws pagor::InputError.
@@ -142,8 +199,36 @@ PairSource resolved_data(const AppState& state);
 /// Whether `data` is an indoor pair: a scan against a floor plan (dataset.hpp).
 bool is_indoor(const PairSource& data);
 
-/// Index of `data`'s KITTI frame pair in `pairs`, or -1.
-int index_of_pair(const std::vector<std::pair<int, int>>& pairs, const PairSource& data);
+/// Reads pairs to step through: a KITTI pairs file ('source target' frame numbers per line, in
+/// the sequence `kitti_root`/`sequence`) or any manifest (pair_set.hpp), told apart by the first
+/// pair line. Throws InputError naming the file (and line).
+PairSet read_step_pairs(const std::string& path, const std::string& kitti_root,
+                        const std::string& sequence);
+
+/// Index of `data` in `pairs` (the same KITTI frames, or the same two files), or -1.
+int index_of_pair(const PairSet& pairs, const PairSource& data);
+
+/// Makes `state.data` the pair `entry` (absolute paths, so a session elsewhere still finds them),
+/// with its ground truth; the view follows the new pair's selected level.
+void show_pair(AppState& state, const PairEntry& entry);
+
+/// Moves through `state.pairs` by `delta` (clamped; from no pair, +1 and -1 both open the first)
+/// and shows that pair. False when there are no pairs.
+bool step_pair_index(AppState& state, int delta);
+
+/// `path` made absolute and normal (relative to the working directory); unchanged when empty or
+/// when the working directory cannot be read.
+std::string absolute_path(const std::string& path);
+
+/// The preset a configuration document names (its top-level "preset"), else `fallback`.
+std::string preset_of(const std::string& config_json, const std::string& fallback = "default");
+
+/// Adds `path` (made absolute) to the front of `state.recent` (at most 12, no duplicates) and
+/// writes the list to `state.recent_file` when one is set (errors are ignored: a list that cannot
+/// be kept is no reason to stop).
+void remember_file(AppState& state, const std::string& path);
+/// Reads `state.recent_file` into `state.recent` (a missing file: an empty list).
+void load_recent_files(AppState& state);
 
 /// The level the view shows: `view.level` if valid, else the selected one (or -1).
 int shown_level(const ViewState& view, int selected, int levels);

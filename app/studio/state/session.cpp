@@ -10,20 +10,24 @@
 #include "pagor/io/kitti.hpp"
 #include "render/headless.hpp"
 #include "state/app_state.hpp"
+#include "state/session_json.hpp"
 #include "widgets/number_format.hpp"
 
 namespace pagor::studio {
 namespace {
 
 using json = nlohmann::json;
+using namespace session_json;
 
 constexpr long long kMaxFrame = 999999;           // KITTI frame numbers have six digits
 constexpr long long kMaxSeed = 9007199254740991;  // 2^53 - 1: exact in every JSON reader
 constexpr double kMaxCoordinate = 1e7;            // [m]
 constexpr float kMinDistance = 0.5f, kMaxDistance = 5000.0f;  // as Camera::zoom clamps [m]
 
+constexpr const char* kColorNames[] = {"class", "cloud", "height", "intensity", "residual"};
+
 const char* color_name(ColorMode c) {
-  return c == ColorMode::by_class ? "class" : "cloud";
+  return kColorNames[static_cast<int>(c)];
 }
 const char* pose_name(PoseShown p) {
   return p == PoseShown::selected       ? "selected"
@@ -50,7 +54,21 @@ json diagnosis_view_json(const DiagnosisView& d) {
           {"contribution", contribution_name(d.contribution)}};
 }
 
-json data_json(const PairSource& d) {
+json matrix_json(const Transform& T) {
+  json rows = json::array();
+  for (int r = 0; r < 4; ++r) rows.push_back({T(r, 0), T(r, 1), T(r, 2), T(r, 3)});
+  return rows;
+}
+
+json data_json(const PairSource& d, const std::optional<Transform>& inline_truth) {
+  if (d.kind == PairSource::Kind::files && inline_truth)
+    return {{"kind", "files"},
+            {"source", d.source},
+            {"source_labels", d.source_labels},
+            {"target", d.target},
+            {"target_labels", d.target_labels},
+            {"ground_truth", d.ground_truth},
+            {"ground_truth_T", matrix_json(*inline_truth)}};
   switch (d.kind) {
     case PairSource::Kind::kitti:
       return {{"kind", "kitti"},
@@ -70,86 +88,33 @@ json data_json(const PairSource& d) {
   return {};
 }
 
-// Typed readers: each names the file and key path of a wrong value, and never converts out of
-// range.
-std::string key_path(const std::string& where, const char* key) {
-  return where + "." + key;
-}
-
-const json* find(const json& j, const char* key) {
-  const auto it = j.find(key);
-  return it == j.end() || it->is_null() ? nullptr : &*it;
-}
-
-std::string get_string(const json& j, const char* key, const std::string& where,
-                       const std::string& fallback) {
-  const json* v = find(j, key);
-  if (!v) return fallback;
-  if (!v->is_string())
-    throw InputError(key_path(where, key) + ": expected a string, got " + v->dump());
-  return v->get<std::string>();
-}
-
-bool get_bool(const json& j, const char* key, const std::string& where, bool fallback) {
-  const json* v = find(j, key);
-  if (!v) return fallback;
-  if (!v->is_boolean())
-    throw InputError(key_path(where, key) + ": expected true or false, got " + v->dump());
-  return v->get<bool>();
-}
-
-// An integer in [lo, hi]; a float or a value out of range is an error, never converted.
-long long integer_value(const json& v, const std::string& path, long long lo, long long hi) {
-  const std::string range = "[" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
-  if (!v.is_number_integer())
-    throw InputError(path + ": expected an integer in " + range + ", got " + v.dump());
-  if (v.is_number_unsigned() && v.get<std::uint64_t>() > static_cast<std::uint64_t>(hi))
-    throw InputError(path + ": " + v.dump() + " is outside " + range);
-  const long long x =
-      v.is_number_unsigned() ? static_cast<long long>(v.get<std::uint64_t>()) : v.get<long long>();
-  if (x < lo || x > hi) throw InputError(path + ": " + v.dump() + " is outside " + range);
-  return x;
-}
-
-int get_int(const json& j, const char* key, const std::string& where, int fallback, int lo,
-            int hi) {
-  const json* v = find(j, key);
-  return v ? static_cast<int>(integer_value(*v, key_path(where, key), lo, hi)) : fallback;
-}
-
-float get_float(const json& j, const char* key, const std::string& where, float fallback, float lo,
-                float hi) {
-  const json* v = find(j, key);
-  if (!v) return fallback;
-  const std::string path = key_path(where, key);
-  if (!v->is_number()) throw InputError(path + ": expected a number, got " + v->dump());
-  const double x = v->get<double>();
-  if (!(x >= lo && x <= hi))
-    throw InputError(path + ": " + v->dump() + " is outside [" + json(lo).dump() + ", " +
-                     json(hi).dump() + "]");
-  return static_cast<float>(x);
-}
-
-void reject_unknown(const json& j, const std::string& where,
-                    std::initializer_list<const char*> known) {
-  for (const auto& item : j.items()) {
-    bool ok = false;
-    for (const char* k : known) ok = ok || item.key() == k;
-    if (!ok) throw InputError(where + "." + item.key() + ": unknown key");
-  }
-}
-
-// A float as the double its shortest decimal names, for writing.
-json number(float f) {
-  return shortest(f);
-}
-
 std::string resolve(const std::string& path, const std::filesystem::path& base) {
   if (path.empty() || std::filesystem::path(path).is_absolute()) return path;
   return (base / path).lexically_normal().string();
 }
 
-PairSource read_data(const json& d, const std::string& where) {
+// A 4x4 rigid transform written as rows; an error names the key.
+Transform read_matrix(const json& m, const std::string& where) {
+  Transform T;
+  if (!m.is_array() || m.size() != 4) throw InputError(where + ": expected 4 rows of 4 numbers");
+  for (int r = 0; r < 4; ++r) {
+    const json& row = m[static_cast<std::size_t>(r)];
+    if (!row.is_array() || row.size() != 4)
+      throw InputError(where + "[" + std::to_string(r) + "]: expected 4 numbers");
+    for (int c = 0; c < 4; ++c) {
+      const json& x = row[static_cast<std::size_t>(c)];
+      if (!x.is_number())
+        throw InputError(where + "[" + std::to_string(r) + "][" + std::to_string(c) +
+                         "]: expected a number, got " + x.dump());
+      T(r, c) = x.get<double>();
+    }
+  }
+  check_rigid(T, where);
+  return T;
+}
+
+PairSource read_data(const json& d, const std::string& where,
+                     std::optional<Transform>& inline_truth) {
   if (!d.is_object()) throw InputError(where + ": expected an object");
   const std::string kind = get_string(d, "kind", where, "");
   PairSource src;
@@ -167,7 +132,11 @@ PairSource read_data(const json& d, const std::string& where) {
         static_cast<int>(integer_value((*pair)[1], where + ".pair[1]", 0, kMaxFrame));
   } else if (kind == "files") {
     reject_unknown(d, where,
-                   {"kind", "source", "source_labels", "target", "target_labels", "ground_truth"});
+                   {"kind", "source", "source_labels", "target", "target_labels", "ground_truth",
+                    "ground_truth_T"});
+    inline_truth.reset();
+    if (const json* m = find(d, "ground_truth_T"))
+      inline_truth = read_matrix(*m, where + ".ground_truth_T");
     src.kind = PairSource::Kind::files;
     src.source = get_string(d, "source", where, "");
     src.source_labels = get_string(d, "source_labels", where, "");
@@ -204,17 +173,6 @@ void read_camera(const json& c, const std::string& where, Camera& cam) {
   cam.yaw_deg = get_float(c, "yaw_deg", where, cam.yaw_deg, -3600.0f, 3600.0f);
   cam.pitch_deg = get_float(c, "pitch_deg", where, cam.pitch_deg, -89.9f, 89.9f);
   cam.top_down = get_bool(c, "top_down", where, cam.top_down);
-}
-
-// One of `names` (their index), naming the file and key when it is none of them.
-int get_choice(const json& j, const char* key, const std::string& where,
-               const std::vector<std::string>& names) {
-  const std::string value = get_string(j, key, where, names.front());
-  const auto it = std::find(names.begin(), names.end(), value);
-  if (it != names.end()) return static_cast<int>(it - names.begin());
-  std::string list;
-  for (const auto& n : names) list += (list.empty() ? "\"" : ", \"") + n + "\"";
-  throw InputError(key_path(where, key) + ": expected one of " + list + ", got \"" + value + "\"");
 }
 
 void read_diagnosis_view(const json& d, const std::string& where, ViewState& view) {
@@ -260,10 +218,8 @@ void read_view(const json& v, const std::string& where, ViewState& view) {
       get_float(v, "line_width", where, view.line_width, L::min_line_width, L::max_line_width);
   view.grid = get_bool(v, "grid", where, view.grid);
   view.legend = get_bool(v, "legend", where, view.legend);
-  const std::string color = get_string(v, "color", where, "class");
-  if (color != "class" && color != "cloud")
-    throw InputError(where + ".color: expected \"class\" or \"cloud\", got \"" + color + "\"");
-  view.color = color == "cloud" ? ColorMode::by_cloud : ColorMode::by_class;
+  view.color = static_cast<ColorMode>(get_choice(
+      v, "color", where, std::vector<std::string>(std::begin(kColorNames), std::end(kColorNames))));
   const std::string pose = get_string(v, "pose", where, "selected");
   if (pose != "selected" && pose != "ground_truth" && pose != "identity" && pose != "refined")
     throw InputError(where +
@@ -280,86 +236,13 @@ void read_view(const json& v, const std::string& where, ViewState& view) {
 
 }  // namespace
 
-bool is_indoor(const PairSource& data) {
-  return data.kind == PairSource::Kind::files && is_floor_plan_path(data.target);
-}
-
-std::string resolve_path(const AppState& s, const std::string& path) {
-  return resolve(path, std::filesystem::path(s.base_dir));
-}
-
-PairSource resolved_data(const AppState& s) {
-  const std::filesystem::path base(s.base_dir);
-  PairSource d = s.data;
-  for (std::string* p :
-       {&d.kitti_root, &d.source, &d.source_labels, &d.target, &d.target_labels, &d.ground_truth})
-    *p = resolve(*p, base);
-  return d;
-}
-
-int index_of_pair(const std::vector<std::pair<int, int>>& pairs, const PairSource& data) {
-  const auto it =
-      std::find(pairs.begin(), pairs.end(), std::make_pair(data.source_frame, data.target_frame));
-  return it == pairs.end() ? -1 : static_cast<int>(it - pairs.begin());
-}
-
-int shown_level(const ViewState& view, int selected, int levels) {
-  if (view.level >= 0 && view.level < levels) return view.level;
-  return selected < levels ? selected : -1;
-}
-
 namespace {
 
-json bench_json(const AppState& s) {
-  const BenchViewState& b = s.bench;
-  return {{"shown", s.main_view == MainView::benchmark},
-          {"open", b.open},
-          {"source", b.source == BenchSource::kitti_pairs ? "kitti_pairs"
-                     : b.source == BenchSource::results   ? "results"
-                                                          : "manifest"},
-          {"path", b.path},
-          {"kitti_root", b.kitti_root},
-          {"sequence", b.sequence},
-          {"config_path", b.config_path},
-          {"filter", b.filter},
-          {"show", static_cast<int>(b.show)},
-          {"sort", b.sort},
-          {"descending", b.descending},
-          {"budget_mib", b.budget_mib},
-          {"plot_path", b.plot_path},
-          {"sweep_mu", b.sweep_mu},
-          {"sweep_thresholds", b.sweep_thresholds}};
-}
-
-void read_bench(const json& j, const std::string& where, AppState& s) {
-  if (!j.is_object()) throw InputError(where + ": expected an object");
-  reject_unknown(
-      j, where,
-      {"shown", "open", "source", "path", "kitti_root", "sequence", "config_path", "filter", "show",
-       "sort", "descending", "budget_mib", "plot_path", "sweep_mu", "sweep_thresholds"});
-  BenchViewState& b = s.bench;
-  const std::string source = get_string(j, "source", where, "manifest");
-  if (source != "manifest" && source != "kitti_pairs" && source != "results")
-    throw InputError(where + ": source: expected manifest, kitti_pairs or results, got \"" +
-                     source + "\"");
-  b.source = source == "kitti_pairs" ? BenchSource::kitti_pairs
-             : source == "results"   ? BenchSource::results
-                                     : BenchSource::manifest;
-  b.path = get_string(j, "path", where, b.path);
-  b.kitti_root = get_string(j, "kitti_root", where, b.kitti_root);
-  b.sequence = get_string(j, "sequence", where, b.sequence);
-  b.config_path = get_string(j, "config_path", where, b.config_path);
-  b.open = get_bool(j, "open", where, false) && !b.path.empty();
-  b.filter = get_string(j, "filter", where, "");
-  b.show = static_cast<RowFilter>(
-      get_int(j, "show", where, 0, 0, static_cast<int>(RowFilter::rejected)));
-  b.sort = get_int(j, "sort", where, 0, 0, 9);  // a column of the benchmark table
-  b.descending = get_bool(j, "descending", where, false);
-  b.budget_mib = get_int(j, "budget_mib", where, b.budget_mib, 64, 8192);
-  b.plot_path = get_string(j, "plot_path", where, b.plot_path);
-  b.sweep_mu = get_string(j, "sweep_mu", where, b.sweep_mu);
-  b.sweep_thresholds = get_string(j, "sweep_thresholds", where, b.sweep_thresholds);
-  s.main_view = get_bool(j, "shown", where, false) && b.open ? MainView::benchmark : MainView::pair;
+// The configuration with the preset it starts from (the reference of resets and marks).
+json session_config(const AppState& s) {
+  json c = json::parse(config_to_json(s.config));
+  c["preset"] = s.preset;
+  return c;
 }
 
 }  // namespace
@@ -367,9 +250,9 @@ void read_bench(const json& j, const std::string& where, AppState& s) {
 void save_session(const AppState& s, const std::string& path) {
   const Camera& c = s.camera;
   json j = {{"schema", "pagor.session/1"},
-            {"data", s.have_data ? data_json(s.data) : json()},
+            {"data", s.have_data ? data_json(s.data, s.inline_truth) : json()},
             {"pairs_file", s.pairs_file},
-            {"config", json::parse(config_to_json(s.config))},
+            {"config", session_config(s)},
             {"camera",
              {{"target", {number(c.target.x()), number(c.target.y()), number(c.target.z())}},
               {"distance", number(c.distance)},
@@ -426,18 +309,22 @@ void load_session(const std::string& path, AppState& s) {
   const std::filesystem::path base = std::filesystem::path(path).parent_path();
   AppState next = s;
 
-  if (const json* c = find(j, "config")) next.config = parse_config(c->dump(), path + " (config)");
+  if (const json* c = find(j, "config")) {
+    next.config = parse_config(c->dump(), path + " (config)");
+    next.preset = preset_of(c->dump());
+  }
   if (const json* d = find(j, "data")) {
-    next.data = read_data(*d, path + ": data");
+    next.data = read_data(*d, path + ": data", next.inline_truth);
     next.have_data = true;
   }
   next.pairs_file = get_string(j, "pairs_file", path + ":", "");
   next.base_dir = base.string();
-  next.pairs.clear();
+  next.pairs = PairSet{};
   next.pair_index = -1;
   if (!next.pairs_file.empty()) {
-    next.pairs = read_pairs_file(resolve(next.pairs_file, base));
-    next.pair_index = index_of_pair(next.pairs, next.data);
+    next.pairs = read_step_pairs(resolve(next.pairs_file, base),
+                                 resolve(next.data.kitti_root, base), next.data.sequence);
+    next.pair_index = index_of_pair(next.pairs, resolved_data(next));
   }
   if (const json* c = find(j, "camera")) {
     read_camera(*c, path + ": camera", next.camera);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <nlohmann/json.hpp>
 
 namespace pagor::studio {
 namespace {
@@ -40,52 +41,85 @@ Plot sweep_success_plot(const SweepResult& result) {
 
 namespace {
 
-// What a line plot puts on x: mu, or the single threshold, when the settings differ in that
-// alone (and take at least two values).
-enum class Axis { none, mu, epsilon };
+// What a line plot of a sweep puts on x: the innermost dimension that varies, when its values
+// are numbers (or single thresholds), and what tells its series apart: the other varying
+// dimension (at most one more).
+struct SweepAxes {
+  int x = -1;       // index into each setting's values; -1: no line plot
+  int series = -1;  // -1: one series
+};
 
-Axis line_axis(const SweepResult& result) {
-  if (result.settings.size() < 2) return Axis::none;
-  const auto without = [](Config c, Axis a) {
-    if (a == Axis::mu) c.verification.mu = 0;
-    if (a == Axis::epsilon) c.graph.thresholds = {1.0};
-    return config_to_json(c, -1);
-  };
-  for (Axis a : {Axis::mu, Axis::epsilon}) {
-    const std::string first = without(result.settings[0].setting.config, a);
-    bool same = true;
+std::optional<double> number_of(const std::string& json_text) {
+  const auto v = nlohmann::json::parse(json_text, nullptr, false);
+  if (v.is_number()) return v.get<double>();
+  if (v.is_array() && v.size() == 1 && v[0].is_number()) return v[0].get<double>();
+  return std::nullopt;
+}
+
+SweepAxes sweep_axes(const SweepResult& result) {
+  SweepAxes a;
+  if (result.settings.size() < 2) return a;
+  const auto& first = result.settings[0].setting.values;
+  std::vector<int> varying;
+  for (std::size_t k = 0; k < first.size(); ++k)
     for (const SweepSettingResult& r : result.settings)
-      same = same && without(r.setting.config, a) == first &&
-             (a != Axis::epsilon || r.setting.config.graph.thresholds.size() == 1);
-    if (same) return a;
-  }
-  return Axis::none;
+      if (r.setting.values.size() == first.size() && r.setting.values[k] != first[k]) {
+        varying.push_back(static_cast<int>(k));
+        break;
+      }
+  if (varying.empty() || varying.size() > 2) return a;
+  const int x = varying.back();
+  for (const SweepSettingResult& r : result.settings)
+    if (!number_of(r.setting.values[static_cast<std::size_t>(x)].second)) return a;
+  a.x = x;
+  if (varying.size() == 2) a.series = varying.front();
+  return a;
 }
 
-double axis_value(const Config& c, Axis a) {
-  return a == Axis::mu ? c.verification.mu : c.graph.thresholds.front();
+void set_axis(Plot& p, const SweepResult& result, int x) {
+  const Config& c = result.settings[0].setting.config;
+  const std::string path = result.settings[0].setting.values[static_cast<std::size_t>(x)].first;
+  const std::string name = sweep_dimension_name(path);
+  p.x_label = name == "eps" ? "epsilon" : name;
+  for (const ConfigField& f : config_fields(c))
+    if (f.path == path)
+      p.x_unit = std::string(f.info.unit) == "trim"
+                     ? (c.graph.trim == TrimKind::ratio ? "ratio" : "m")
+                     : f.info.unit;
+  p.title = name == "mu"    ? "Success against mu"
+            : name == "eps" ? "Success against a single epsilon"
+                            : "Success against " + name;
 }
 
-void set_axis(Plot& p, Axis a, const Config& c) {
-  p.x_label = a == Axis::mu ? "mu" : "epsilon";
-  p.x_unit = a == Axis::mu ? "m" : (c.graph.trim == TrimKind::ratio ? "ratio" : "m");
+double x_of(const SweepSettingResult& r, int x) {
+  return *number_of(r.setting.values[static_cast<std::size_t>(x)].second);
 }
 
 }  // namespace
 
 Plot sweep_line_plot(const SweepResult& result) {
   Plot p = percent_plot(PlotKind::lines, "success");
-  const Axis a = line_axis(result);
-  if (a == Axis::none) return p;
-  p.title = a == Axis::mu ? "Success against mu" : "Success against a single epsilon";
-  set_axis(p, a, result.settings[0].setting.config);
-  p.series = {{"success", {}, {}}, {"upper bound", {}, {}}};
+  const SweepAxes a = sweep_axes(result);
+  if (a.x < 0) return p;
+  set_axis(p, result, a.x);
+  if (a.series < 0) p.series = {{"success", {}, {}}, {"upper bound", {}, {}}};
   for (const SweepSettingResult& r : result.settings) {
-    const double x = axis_value(r.setting.config, a);
-    p.series[0].x.push_back(x);
-    p.series[1].x.push_back(x);
-    p.series[0].y.push_back(percent(r.summary.success_rate()));
-    p.series[1].y.push_back(percent(r.summary.upper_bound_rate()));
+    const double x = x_of(r, a.x);
+    if (a.series < 0) {
+      p.series[0].x.push_back(x);
+      p.series[1].x.push_back(x);
+      p.series[0].y.push_back(percent(r.summary.success_rate()));
+      p.series[1].y.push_back(percent(r.summary.upper_bound_rate()));
+      continue;
+    }
+    // Two dimensions: a success series per value of the outer one.
+    const auto& [path, value] = r.setting.values[static_cast<std::size_t>(a.series)];
+    const std::string label = sweep_dimension_name(path) + "=" + value;
+    auto it = std::find_if(p.series.begin(), p.series.end(),
+                           [&](const PlotSeries& s) { return s.label == label; });
+    if (it == p.series.end()) it = p.series.insert(p.series.end(), PlotSeries{label, {}, {}});
+    it->x.push_back(x);
+    it->y.push_back(percent(r.summary.success_rate()));
   }
   return p;
 }
@@ -95,16 +129,16 @@ Plot sweep_pair_plot(const SweepResult& result, std::size_t pair) {
   p.kind = PlotKind::lines;
   p.value_label = "D of the selected pose";
   p.value_unit = "m";
-  const Axis a = line_axis(result);
-  if (a == Axis::none || result.settings[0].outcomes.size() <= pair) return p;
+  const SweepAxes a = sweep_axes(result);
+  if (a.x < 0 || a.series >= 0 || result.settings[0].outcomes.size() <= pair) return p;
+  set_axis(p, result, a.x);
   p.title = "Pair " + result.settings[0].outcomes[pair].name + ": D and success";
-  set_axis(p, a, result.settings[0].setting.config);
   p.series = {{"success", {}, {}, true}, {"failure", {}, {}, true}};
   for (const SweepSettingResult& r : result.settings) {
     const PairOutcome& o = r.outcomes[pair];
     if (!o.loaded || !std::isfinite(o.score)) continue;
     PlotSeries& s = p.series[o.success ? 0 : 1];
-    s.x.push_back(axis_value(r.setting.config, a));
+    s.x.push_back(x_of(r, a.x));
     s.y.push_back(o.score);
   }
   return p;

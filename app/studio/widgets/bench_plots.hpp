@@ -18,12 +18,14 @@ namespace pagor::studio {
 /// Bars per setting: success rate and upper bound over the pairs with ground truth [%].
 Plot sweep_success_plot(const SweepResult& result);
 
-/// Lines over mu or a single threshold, when the sweep varies only that: success [%] per value.
-/// Empty series when the sweep varies anything else.
+/// Lines over the innermost swept parameter when its values are numbers (or single thresholds):
+/// success [%] per value, with the upper bound when it is the only dimension that varies, or one
+/// success series per value of a second varying dimension. Empty series otherwise (more than two
+/// varying dimensions, or values that are not numbers).
 Plot sweep_line_plot(const SweepResult& result);
 
-/// One pair over mu or a single threshold (as sweep_line_plot): D of the selected pose [m],
-/// as points split by success and failure. Empty series when the sweep varies anything else.
+/// One pair over the swept parameter (1-D sweeps, as sweep_line_plot): D of the selected pose [m],
+/// as points split by success and failure. Empty series otherwise.
 Plot sweep_pair_plot(const SweepResult& result, std::size_t pair);
 
 /// Bars per level: how often it was selected and how often its candidate alone would succeed

@@ -18,6 +18,27 @@ std::string fit(ImFont* font, float size, std::string s, float width) {
   return s + "...";
 }
 
+// Round ticks inside [lo, hi] whose labels fit `span` pixels along the axis (horizontal: side by
+// side with a gap; vertical: a line each with a gap): at most 5, fewer when they would overlap.
+std::vector<double> fitted_ticks(double lo, double hi, bool integer, float span, bool horizontal,
+                                 ImFont* font, float fs) {
+  std::vector<double> best;
+  for (int count = 5; count >= 1; --count) {
+    std::vector<double> ticks;
+    for (double t : nice_ticks(lo, hi, count, integer))
+      if (t >= lo - 1e-9 * (hi - lo) && t <= hi + 1e-9 * (hi - lo)) ticks.push_back(t);
+    if (ticks.empty()) continue;
+    const double step = ticks.size() > 1 ? ticks[1] - ticks[0] : hi - lo;
+    float need = 0;
+    for (double t : ticks)
+      need = std::max(need, horizontal ? text_w(font, fs, tick_text(t, step)) : fs);
+    best = ticks;
+    const float pitch = ticks.size() > 1 ? span / static_cast<float>((hi - lo) / step) : span;
+    if (need + fs * 0.8f <= pitch || ticks.size() <= 2) return ticks;
+  }
+  return best;
+}
+
 // Where everything goes, shared by drawing and hovering.
 struct Geometry {
   ImVec2 area_min, area_max;  // the data area [px]
@@ -92,6 +113,14 @@ Geometry layout(const Plot& plot, ImVec2 min, ImVec2 max, ImFont* font, float fs
   g.area_min = ImVec2(left, top);
   const float right = plot.kind == PlotKind::bars ? fs * 2.4f : fs;  // bars: their values
   g.area_max = ImVec2(std::max(left + 10, max.x - kPad - right), std::max(top + 10, bottom));
+  // As many ticks as their labels have room for (a small plot gets fewer, never overlapping).
+  const float width = g.area_max.x - g.area_min.x, height = g.area_max.y - g.area_min.y;
+  if (plot.kind == PlotKind::bars)
+    g.ticks = fitted_ticks(g.lo, g.hi, plot.integer_values, width, true, font, fs);
+  else {
+    g.ticks = fitted_ticks(g.lo, g.hi, plot.integer_values, height, false, font, fs);
+    g.x_ticks = fitted_ticks(g.x_lo, g.x_hi, false, width, true, font, fs);
+  }
   return g;
 }
 
@@ -118,7 +147,7 @@ void bar_rect(const Plot& plot, const Geometry& g, std::size_t c, std::size_t k,
   b = ImVec2(std::max(x0, x1), y + bar * 0.92f);
 }
 
-void draw_legend(ImDrawList* d, const Plot& plot, const Geometry& g, ImVec2 min, ImFont* font,
+void draw_legend(PlotCanvas* d, const Plot& plot, const Geometry& g, ImVec2 min, ImFont* font,
                  float fs) {
   float x = min.x + kPad;
   for (std::size_t k = 0; k < plot.series.size(); ++k) {
@@ -132,15 +161,45 @@ void draw_legend(ImDrawList* d, const Plot& plot, const Geometry& g, ImVec2 min,
   }
 }
 
-void draw_bars(ImDrawList* d, const Plot& plot, const Geometry& g, ImFont* font, float fs) {
+// Every tick label of the plot with where it goes: the value axis (x for bars, y for lines) and,
+// for lines, the x axis; what draw_bars and draw_lines write, and what a test checks.
+std::vector<TickLabel> labels_of(const Plot& plot, const Geometry& g, ImFont* font, float fs) {
+  std::vector<TickLabel> out;
+  const auto add = [&](const std::string& text, ImVec2 at) {
+    out.push_back({text, at, ImVec2(at.x + text_w(font, fs, text), at.y + fs)});
+  };
   const double step = g.ticks.size() > 1 ? g.ticks[1] - g.ticks[0] : 1.0;
+  for (double t : g.ticks) {
+    const std::string s = tick_text(t, step);
+    if (plot.kind == PlotKind::bars) {
+      const float x = value_to_px(g, t, true);
+      add(s, ImVec2(x - text_w(font, fs, s) * 0.5f, g.area_max.y + 3));
+    } else if (t >= g.lo - 1e-9 && t <= g.hi + 1e-9) {
+      const float y = value_to_px(g, t, false);
+      add(s, ImVec2(g.area_min.x - kPad - text_w(font, fs, s), y - fs * 0.5f));
+    }
+  }
+  if (plot.kind != PlotKind::lines) return out;
+  const double xstep = g.x_ticks.size() > 1 ? g.x_ticks[1] - g.x_ticks[0] : 1.0;
+  for (double t : g.x_ticks) {
+    if (t < g.x_lo - 1e-9 || t > g.x_hi + 1e-9) continue;
+    const std::string s = tick_text(t, xstep);
+    add(s, ImVec2(x_to_px(g, t) - text_w(font, fs, s) * 0.5f, g.area_max.y + 3));
+  }
+  return out;
+}
+
+void draw_tick_labels(PlotCanvas* d, const Plot& plot, const Geometry& g, ImFont* font, float fs) {
+  for (const TickLabel& l : labels_of(plot, g, font, fs))
+    d->AddText(font, fs, l.min, kText, l.text.c_str());
+}
+
+void draw_bars(PlotCanvas* d, const Plot& plot, const Geometry& g, ImFont* font, float fs) {
   for (double t : g.ticks) {
     const float x = value_to_px(g, t, true);
     d->AddLine(ImVec2(x, g.area_min.y), ImVec2(x, g.area_max.y), kGrid);
-    const std::string s = tick_text(t, step);
-    d->AddText(font, fs, ImVec2(x - text_w(font, fs, s) * 0.5f, g.area_max.y + 3), kText,
-               s.c_str());
   }
+  draw_tick_labels(d, plot, g, font, fs);
   const float slot =
       (g.area_max.y - g.area_min.y) / std::max<std::size_t>(1, plot.categories.size());
   for (std::size_t c = 0; c < plot.categories.size(); ++c) {
@@ -172,25 +231,18 @@ void draw_bars(ImDrawList* d, const Plot& plot, const Geometry& g, ImFont* font,
              kText, title.c_str());
 }
 
-void draw_lines(ImDrawList* d, const Plot& plot, const Geometry& g, ImFont* font, float fs) {
-  const double step = g.ticks.size() > 1 ? g.ticks[1] - g.ticks[0] : 1.0;
+void draw_lines(PlotCanvas* d, const Plot& plot, const Geometry& g, ImFont* font, float fs) {
   for (double t : g.ticks) {
     if (t < g.lo - 1e-9 || t > g.hi + 1e-9) continue;
     const float y = value_to_px(g, t, false);
     d->AddLine(ImVec2(g.area_min.x, y), ImVec2(g.area_max.x, y), kGrid);
-    const std::string s = tick_text(t, step);
-    d->AddText(font, fs, ImVec2(g.area_min.x - kPad - text_w(font, fs, s), y - fs * 0.5f), kText,
-               s.c_str());
   }
-  const double xstep = g.x_ticks.size() > 1 ? g.x_ticks[1] - g.x_ticks[0] : 1.0;
   for (double t : g.x_ticks) {
     if (t < g.x_lo - 1e-9 || t > g.x_hi + 1e-9) continue;
     const float x = x_to_px(g, t);
     d->AddLine(ImVec2(x, g.area_min.y), ImVec2(x, g.area_max.y), kGrid);
-    const std::string s = tick_text(t, xstep);
-    d->AddText(font, fs, ImVec2(x - text_w(font, fs, s) * 0.5f, g.area_max.y + 3), kText,
-               s.c_str());
   }
+  draw_tick_labels(d, plot, g, font, fs);
   d->PushClipRect(ImVec2(g.area_min.x - 5, g.area_min.y - 5),
                   ImVec2(g.area_max.x + 5, g.area_max.y + 5), true);
   for (std::size_t k = 0; k < plot.series.size(); ++k) {
@@ -238,7 +290,12 @@ std::vector<double> nice_ticks(double lo, double hi, int count, bool integer) {
   return ticks;
 }
 
-void draw_plot(ImDrawList* d, ImVec2 min, ImVec2 max, const Plot& plot, float fs) {
+void draw_plot(ImDrawList* list, ImVec2 min, ImVec2 max, const Plot& plot, float fs) {
+  DrawListCanvas canvas(list);
+  draw_plot(&canvas, min, max, plot, fs);
+}
+
+void draw_plot(PlotCanvas* d, ImVec2 min, ImVec2 max, const Plot& plot, float fs) {
   ImFont* font = ImGui::GetFont();
   d->PushClipRect(min, max, true);
   d->AddRectFilled(min, max, kBackground);
@@ -298,6 +355,12 @@ void plot_widget(const char* id, const Plot& plot, ImVec2 size) {
   ImGui::PopID();
 }
 
+std::vector<TickLabel> tick_labels(const Plot& plot, ImVec2 min, ImVec2 max, float fs) {
+  if (plot.kind == PlotKind::map) return {};
+  ImFont* font = ImGui::GetFont();
+  return labels_of(plot, layout(plot, min, max, font, fs), font, fs);
+}
+
 std::string plot_csv(const Plot& plot) {
   const auto quoted = [](const std::string& s) {
     std::string q = "\"";
@@ -314,7 +377,8 @@ std::string plot_csv(const Plot& plot) {
     for (std::size_t c = 0; c < plot.categories.size(); ++c) {
       out += quoted(plot.categories[c]);
       for (const PlotSeries& s : plot.series)
-        out += "," + (c < s.y.size() && std::isfinite(s.y[c]) ? value_text(s.y[c], 10) : std::string());
+        out += "," +
+               (c < s.y.size() && std::isfinite(s.y[c]) ? value_text(s.y[c], 10) : std::string());
       out += "\n";
     }
     return out;

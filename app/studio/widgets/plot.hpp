@@ -14,6 +14,8 @@
 
 namespace pagor::studio {
 
+class PlotCanvas;
+
 enum class PlotKind {
   bars,   ///< one horizontal bar per category and series; values along x
   lines,  ///< y over a numeric x, one polyline with markers per series
@@ -77,10 +79,25 @@ std::vector<double> nice_ticks(double lo, double hi, int count = 5, bool integer
 /// Draws the plot into `rect` [px] of a draw list; `font_size` is the text height [px]. The
 /// background is filled, so the result is a self-contained picture.
 void draw_plot(ImDrawList* draw, ImVec2 min, ImVec2 max, const Plot& plot, float font_size);
+/// The same on any canvas (plot_canvas.hpp).
+void draw_plot(PlotCanvas* canvas, ImVec2 min, ImVec2 max, const Plot& plot, float font_size);
+
+/// The plot as an SVG document of width x height pixels (the same drawing as on screen, text as
+/// text). Needs an ImGui frame (its font measures the text).
+std::string plot_svg(const Plot& plot, int width, int height, float font_size);
 
 /// The plot as an ImGui item of `size` (width <= 0: the available width); hovering a bar or
 /// point shows its category or x, series and value in a tooltip.
 void plot_widget(const char* id, const Plot& plot, ImVec2 size);
+
+/// A tick label as drawn: its text and rectangle [px].
+struct TickLabel {
+  std::string text;
+  ImVec2 min, max;
+};
+/// The tick labels a bar or line plot draws into [min, max] (both axes): as many as have room,
+/// so that none overlaps another. Needs an ImGui frame (its font).
+std::vector<TickLabel> tick_labels(const Plot& plot, ImVec2 min, ImVec2 max, float font_size);
 
 /// The plot's numbers as CSV: bars `category,<series...>`, lines `x,series,y`, maps
 /// `series,x,y,colour value,tip` (header included).

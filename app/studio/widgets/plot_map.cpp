@@ -98,7 +98,7 @@ ImU32 point_color(const Plot& plot, const PlotSeries& s, std::size_t k, std::siz
   return s.color ? *s.color : series_color(k);
 }
 
-void marker(ImDrawList* d, ImVec2 p, PlotMarker m, ImU32 c) {
+void marker(PlotCanvas* d, ImVec2 p, PlotMarker m, ImU32 c) {
   if (m == PlotMarker::cross) {
     d->AddLine(ImVec2(p.x - kCrossPx, p.y - kCrossPx), ImVec2(p.x + kCrossPx, p.y + kCrossPx), c,
                2.0f);
@@ -109,7 +109,7 @@ void marker(ImDrawList* d, ImVec2 p, PlotMarker m, ImU32 c) {
   }
 }
 
-void draw_map_legend(ImDrawList* d, const Plot& plot, const MapGeometry& g, ImVec2 min, ImVec2 max,
+void draw_map_legend(PlotCanvas* d, const Plot& plot, const MapGeometry& g, ImVec2 min, ImVec2 max,
                      ImFont* font, float fs) {
   float x = min.x + kPad, y = g.legend_y + fs * 0.2f;
   for (std::size_t k = 0; k < plot.series.size(); ++k) {
@@ -130,7 +130,7 @@ void draw_map_legend(ImDrawList* d, const Plot& plot, const MapGeometry& g, ImVe
   }
 }
 
-void draw_axes(ImDrawList* d, const Plot& plot, const MapGeometry& g, ImFont* font, float fs) {
+void draw_axes(PlotCanvas* d, const Plot& plot, const MapGeometry& g, ImFont* font, float fs) {
   const double xs = g.x_ticks.size() > 1 ? g.x_ticks[1] - g.x_ticks[0] : 1.0;
   const double ys = g.y_ticks.size() > 1 ? g.y_ticks[1] - g.y_ticks[0] : 1.0;
   for (double t : g.x_ticks) {
@@ -159,7 +159,7 @@ void draw_axes(ImDrawList* d, const Plot& plot, const MapGeometry& g, ImFont* fo
              kText, xt.c_str());
 }
 
-void draw_color_bar(ImDrawList* d, const PlotColorBar& c, const MapGeometry& g, ImVec2 max,
+void draw_color_bar(PlotCanvas* d, const PlotColorBar& c, const MapGeometry& g, ImVec2 max,
                     ImFont* font, float fs) {
   const float x0 = g.bar_x, x1 = x0 + fs * 0.8f, top = g.area_min.y, bottom = g.area_max.y;
   const float step = (bottom - top) / kColorBarSteps;
@@ -195,7 +195,7 @@ ImU32 viridis(double t) {
   return IM_COL32(mix(0), mix(1), mix(2), 255);
 }
 
-void draw_map(ImDrawList* d, ImVec2 min, ImVec2 max, const Plot& plot, ImFont* font, float fs) {
+void draw_map(PlotCanvas* d, ImVec2 min, ImVec2 max, const Plot& plot, ImFont* font, float fs) {
   const MapGeometry g = map_layout(plot, min, max, font, fs);
   draw_map_legend(d, plot, g, min, max, font, fs);
   draw_axes(d, plot, g, font, fs);

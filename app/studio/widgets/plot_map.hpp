@@ -10,6 +10,7 @@
 #include <string>
 
 #include "widgets/plot.hpp"
+#include "widgets/plot_canvas.hpp"
 
 namespace pagor::studio::plot_detail {
 
@@ -47,7 +48,7 @@ inline float text_w(ImFont* font, float size, const std::string& s) {
 ImU32 viridis(double t);
 
 /// Draws a map plot below its title (legend, backdrop, points, axes, colour bar) in [min, max].
-void draw_map(ImDrawList* d, ImVec2 min, ImVec2 max, const Plot& plot, ImFont* font, float fs);
+void draw_map(PlotCanvas* d, ImVec2 min, ImVec2 max, const Plot& plot, ImFont* font, float fs);
 
 /// The tip of the map point nearest `mouse` within a few pixels (nullopt: none).
 std::optional<std::string> map_hover(const Plot& plot, ImVec2 min, ImVec2 max, ImFont* font,

@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdarg>
+#include <cstdio>
 #include <cstdlib>
 #include <unordered_map>
 
@@ -51,6 +53,8 @@ const char* to_string(WidgetKind kind) {
       return "header";
     case WidgetKind::splitter:
       return "splitter";
+    case WidgetKind::text:
+      return "text";
   }
   return "?";
 }
@@ -75,7 +79,7 @@ WidgetRecord& WidgetRegistry::add(WidgetKind kind, const char* label, ImGuiID id
                                   ImVec2 max, ImGuiWindow* window) {
   if (!window) window = ImGui::GetCurrentWindow();
   for (const WidgetRecord& r : items_)
-    if (r.id == id) {
+    if (r.id == id && kind != WidgetKind::text && r.kind != WidgetKind::text) {
       DuplicateId d{id, window->Name, r.label, label};
       duplicates_.push_back(d);
       const bool known = std::any_of(all_duplicates_.begin(), all_duplicates_.end(),
@@ -282,6 +286,117 @@ ImVec2 splitter(const char* label, ImVec2 size, bool vertical) {
   dl->AddRectFilled(ImGui::GetItemRectMin(), ImGui::GetItemRectMax(),
                     active ? IM_COL32(110, 140, 200, 255) : IM_COL32(55, 60, 70, 255));
   return active ? ImGui::GetIO().MouseDelta : ImVec2(0, 0);
+}
+
+std::string format(const char* fmt, ...) {
+  va_list args;
+  va_start(args, fmt);
+  char buf[1024];
+  std::vsnprintf(buf, sizeof(buf), fmt, args);
+  va_end(args);
+  return buf;
+}
+
+bool figure(const std::string& text, ImVec4 color, bool wrap) {
+  if (wrap) ImGui::PushTextWrapPos(0.0f);
+  if (color.w > 0) ImGui::PushStyleColor(ImGuiCol_Text, color);
+  ImGui::TextUnformatted(text.c_str());
+  if (color.w > 0) ImGui::PopStyleColor();
+  if (wrap) ImGui::PopTextWrapPos();
+  WidgetRecord& r = record_last(WidgetKind::text, "##figure", 0);
+  r.text = text;
+  return ImGui::IsItemHovered();
+}
+
+bool figure_dim(const std::string& text) {
+  return figure(text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
+}
+
+bool input_path(const char* label, std::string* path, const char* tip) {
+  const ImGuiID id = ImGui::GetID(label);
+  const float frame_w = ImGui::CalcItemWidth();
+  const bool r = ImGui::InputText(label, path);
+  WidgetRecord& rec = record_last(WidgetKind::input_text, label, id, frame_w);
+  rec.text = *path;
+  // Not being edited and too long for the frame: draw its end over the start, so that the file
+  // name shows ("...dir/file.pcd"); a click edits the whole path underneath.
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float room = frame_w - 2 * style.FramePadding.x;
+  if (!ImGui::IsItemActive() && ImGui::CalcTextSize(path->c_str()).x > room) {
+    std::size_t start = 0;
+    while (start < path->size() &&
+           ImGui::CalcTextSize(("..." + path->substr(start)).c_str()).x > room)
+      ++start;
+    const std::string tail = "..." + path->substr(start);
+    rec.text = tail;  // what the field shows
+    const ImVec2 a = ImGui::GetItemRectMin();
+    const ImVec2 b(a.x + frame_w, ImGui::GetItemRectMax().y);
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    // Opaque: the frame's colour is translucent, and the start of the path must not show through.
+    const ImVec4 w = style.Colors[ImGuiCol_WindowBg];
+    const ImVec4 f =
+        style.Colors[ImGui::IsItemHovered() ? ImGuiCol_FrameBgHovered : ImGuiCol_FrameBg];
+    const ImVec4 bg(w.x + (f.x - w.x) * f.w, w.y + (f.y - w.y) * f.w, w.z + (f.z - w.z) * f.w,
+                    1.0f);
+    dl->AddRectFilled(a, b, ImGui::GetColorU32(bg), style.FrameRounding);
+    dl->AddText(ImVec2(a.x + style.FramePadding.x, a.y + style.FramePadding.y),
+                ImGui::GetColorU32(ImGuiCol_Text), tail.c_str());
+  }
+  if (tip) tooltip((std::string(tip) + (path->empty() ? "" : "\n" + *path)).c_str());
+  return r;
+}
+
+bool input_double(const char* label, double* v, double lo, double hi, const char* fmt,
+                  const char* tip) {
+  const ImGuiID id = ImGui::GetID(label);
+  const float frame_w = ImGui::CalcItemWidth();
+  double value = *v;
+  const bool enter =
+      ImGui::InputDouble(label, &value, 0.0, 0.0, fmt, ImGuiInputTextFlags_EnterReturnsTrue);
+  bool changed = false;
+  if ((enter || ImGui::IsItemDeactivatedAfterEdit()) && value != *v) {
+    const double clamped = std::isnan(value) ? lo : std::clamp(value, lo, hi);
+    changed = clamped != *v;
+    *v = clamped;
+  }
+  WidgetRecord& rec = record_last(WidgetKind::input_int, label, id, frame_w);
+  rec.lo = static_cast<float>(lo);
+  rec.hi = static_cast<float>(hi);
+  maybe_tip(tip);
+  return changed;
+}
+
+bool input_int64(const char* label, long long* v, long long lo, long long hi, const char* tip) {
+  const ImGuiID id = ImGui::GetID(label);
+  const float frame_w = ImGui::CalcItemWidth();
+  long long value = *v;
+  const bool enter = ImGui::InputScalar(label, ImGuiDataType_S64, &value, nullptr, nullptr, "%lld",
+                                        ImGuiInputTextFlags_EnterReturnsTrue);
+  bool changed = false;
+  if ((enter || ImGui::IsItemDeactivatedAfterEdit()) && value != *v) {
+    const long long clamped = std::clamp(value, lo, hi);
+    changed = clamped != *v;
+    *v = clamped;
+  }
+  WidgetRecord& rec = record_last(WidgetKind::input_int, label, id, frame_w);
+  rec.lo = static_cast<float>(lo);
+  rec.hi = static_cast<float>(hi);
+  maybe_tip(tip);
+  return changed;
+}
+
+bool input_text_apply(const char* label, std::string* text, const char* tip) {
+  const ImGuiID id = ImGui::GetID(label);
+  const float frame_w = ImGui::CalcItemWidth();
+  // While the field is active ImGui edits its own copy; this one receives it on Enter or when the
+  // field is left after an edit.
+  std::string edited = *text;
+  const bool enter = ImGui::InputText(label, &edited, ImGuiInputTextFlags_EnterReturnsTrue);
+  const bool changed = (enter || ImGui::IsItemDeactivatedAfterEdit()) && edited != *text;
+  if (changed) *text = edited;
+  record_last(WidgetKind::input_text, label, id, frame_w);
+  maybe_tip(tip);
+  return changed;
 }
 
 }  // namespace pagor::studio::ui

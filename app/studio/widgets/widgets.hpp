@@ -26,7 +26,8 @@ enum class WidgetKind {
   selectable,
   tree_node,
   header,
-  splitter
+  splitter,
+  text  ///< not interactive: a line stating a figure (ui::figure), recorded so tests can read it
 };
 const char* to_string(WidgetKind kind);
 
@@ -40,9 +41,10 @@ struct WidgetRecord {
   ImVec2 clip_min, clip_max;  ///< visible part of its window [px]
   bool visible = false;       ///< inside its window's visible part
   bool has_tooltip = false;   ///< a sentence explains it on hover
-  bool enabled = true;        ///< false when drawn disabled
-  float lo = 0, hi = 0;       ///< slider / input range (0, 0 when none)
-  float frame_w = 0;          ///< width of the frame (sliders, fields: without the label) [px]
+  std::string text;  ///< text kind: the line as drawn; a path field: the part of the path it shows
+  bool enabled = true;   ///< false when drawn disabled
+  float lo = 0, hi = 0;  ///< slider / input range (0, 0 when none)
+  float frame_w = 0;     ///< width of the frame (sliders, fields: without the label) [px]
 };
 
 /// Two widgets of one frame with the same ImGui ID.
@@ -121,6 +123,31 @@ void tree_pop();
 bool header(const char* label, bool default_open);
 /// A draggable bar of `size` at the cursor; returns the drag in pixels this frame (0 when idle).
 ImVec2 splitter(const char* id, ImVec2 size, bool vertical);
+
+/// printf into a std::string.
+std::string format(const char* fmt, ...) IM_FMTARGS(1);
+
+/// A line of text that states a figure (a verdict, an error, a rate, a margin): drawn like
+/// ImGui::Text (in `color` unless its alpha is 0, wrapped at the window edge when `wrap`) and
+/// recorded in the registry as a `text` item, so that the driven-UI tests read what the studio
+/// says. Returns whether it is hovered.
+bool figure(const std::string& text, ImVec4 color = ImVec4(0, 0, 0, 0), bool wrap = false);
+/// The same, disabled-looking (grey).
+bool figure_dim(const std::string& text);
+
+/// A path field that shows the end of a long path (the file name) while it is not being edited;
+/// editing shows and edits the whole path as input_text does.
+bool input_path(const char* label, std::string* path, const char* tip = nullptr);
+/// A number typed in a field, clamped to [lo, hi]; true when it changed (on Enter, or when the
+/// field is left after an edit).
+bool input_double(const char* label, double* v, double lo, double hi, const char* fmt = "%.6g",
+                  const char* tip = nullptr);
+/// A 64-bit integer typed in a field, clamped to [lo, hi]; true when it changed (as input_double).
+bool input_int64(const char* label, long long* v, long long lo, long long hi,
+                 const char* tip = nullptr);
+/// A text field whose edit is applied when Enter is pressed or the field is left: `*text` changes
+/// only then (returns true).
+bool input_text_apply(const char* label, std::string* text, const char* tip = nullptr);
 
 /// A combo over every value of an enum that `to_string` names (so values the core adds appear
 /// without a change here). True when the value changed.

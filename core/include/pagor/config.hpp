@@ -8,6 +8,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "pagor/front/correspondences.hpp"
@@ -123,6 +124,11 @@ std::string field_json(const Config& config, const std::string& path);
 /// Sets the value at `path` from JSON text (checked like the document; the whole configuration is
 /// validated). Throws ConfigError naming the path; `config` is unchanged then.
 void set_field_json(Config& config, const std::string& path, const std::string& json_text);
+/// Sets several values at once, each (key path, JSON text), and validates the result once (so a
+/// pair of values that is only valid together, such as min_points and max_points, can be set).
+/// Throws ConfigError naming the path; `config` is unchanged then.
+void set_fields_json(Config& config,
+                     const std::vector<std::pair<std::string, std::string>>& values);
 /// A number, integer or flag parameter's value as a double (flags 0/1); nullopt for other kinds
 /// or an unknown path.
 std::optional<double> field_number(const Config& config, const std::string& path);

@@ -127,7 +127,8 @@ class Pipeline {
   std::optional<PoseError> selected_error() const;
   /// Errors of the selected candidate before refinement (needs ground truth and a selection).
   std::optional<PoseError> unrefined_error() const;
-  /// Whether any candidate succeeds (the paper's "upper bound"; needs ground truth).
+  /// Whether any candidate, or the selected pose after refinement, succeeds (the paper's "upper
+  /// bound", never below the success of the selection; needs ground truth).
   bool upper_bound_success() const;
 
   /// How many times a stage has run since construction.

@@ -1,5 +1,6 @@
 #include "pagor/sets/sweep.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -20,52 +21,151 @@ std::string number(double v) {
   return buf;
 }
 
-std::string thresholds_text(const std::vector<double>& t) {
-  std::string s;
-  for (std::size_t i = 0; i < t.size(); ++i) s += (i ? "/" : "") + number(t[i]);
-  return s;
+// A number as JSON: the shortest text that reads back as the same double.
+std::string json_number(double v) {
+  return nlohmann::json(v).dump();
 }
 
-// The values of one dimension: the grid's, or the base's alone.
-template <class T>
-std::vector<T> values_or(const std::vector<T>& grid, const T& base) {
-  return grid.empty() ? std::vector<T>{base} : grid;
+// The catalog entry of `path` in `config` (null when it names no parameter).
+const ConfigField* field_at(const std::vector<ConfigField>& fields, const std::string& path) {
+  for (const ConfigField& f : fields)
+    if (f.path == path) return &f;
+  return nullptr;
+}
+
+// A value as a label shows it, with the parameter's unit ("trim": the setting's TRIM unit).
+std::string value_text(const ConfigField& f, const std::string& json_text, const Config& config) {
+  const nlohmann::json v = nlohmann::json::parse(json_text);
+  const std::string unit = f.info.unit;
+  const std::string suffix = unit == "trim" ? trim_unit_suffix(config.graph.trim)
+                             : unit.empty() ? ""
+                                            : " " + unit;
+  if (v.is_string()) return v.get<std::string>();
+  if (v.is_boolean()) return v.get<bool>() ? "true" : "false";
+  if (v.is_number()) return number(v.get<double>()) + suffix;
+  std::string out;
+  if (v.is_array())
+    for (const auto& x : v) out += (out.empty() ? "" : "/") + number(x.get<double>());
+  return out + suffix;
+}
+
+// The dimensions in document order (the order of the catalog), each checked to name a parameter.
+std::vector<std::pair<const SweepDimension*, ConfigField>> ordered_dimensions(
+    const Config& base, const SweepGrid& grid) {
+  const std::vector<ConfigField> fields = config_fields(base);
+  std::vector<std::pair<std::size_t, std::pair<const SweepDimension*, ConfigField>>> order;
+  for (const SweepDimension& d : grid.dimensions) {
+    const ConfigField* f = field_at(fields, d.path);
+    if (!f) throw ConfigError("sweep: " + d.path + ": no such parameter");
+    if (d.values.empty()) throw ConfigError("sweep: " + d.path + ": no values");
+    order.push_back({static_cast<std::size_t>(f - fields.data()), {&d, *f}});
+  }
+  std::stable_sort(order.begin(), order.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<std::pair<const SweepDimension*, ConfigField>> out;
+  for (auto& o : order) out.push_back(std::move(o.second));
+  return out;
 }
 
 }  // namespace
 
+SweepGrid& SweepGrid::add(const std::string& path, const std::vector<double>& values) {
+  std::vector<std::string> json;
+  for (double v : values) json.push_back(json_number(v));
+  return add_json(path, std::move(json));
+}
+
+SweepGrid& SweepGrid::add_json(const std::string& path, std::vector<std::string> values) {
+  dimensions.push_back({path, std::move(values)});
+  return *this;
+}
+
+std::string sweep_dimension_name(const std::string& path) {
+  static const std::pair<const char*, const char*> kShort[] = {{"graph.thresholds", "eps"},
+                                                               {"verification.mu", "mu"},
+                                                               {"graph.trim", "trim"},
+                                                               {"gnc.model", "model"},
+                                                               {"clique.solver", "solver"}};
+  for (const auto& [p, name] : kShort)
+    if (path == p) return name;
+  return path;
+}
+
 std::vector<SweepSetting> sweep_settings(const Config& base, const SweepGrid& grid) {
+  const auto dims = ordered_dimensions(base, grid);
+  std::vector<std::size_t> at(dims.size(), 0);  // an odometer over the dimensions, last fastest
   std::vector<SweepSetting> out;
-  // Outer to inner: the dimensions whose change invalidates most come first, so consecutive
-  // settings (mu innermost) share the most cached stages.
-  for (TrimKind trim : values_or(grid.trims, base.graph.trim))
-    for (const auto& eps : values_or(grid.threshold_sets, base.graph.thresholds))
-      for (CliqueSolver solver : values_or(grid.solvers, base.clique.solver))
-        for (PoseModel model : values_or(grid.models, base.gnc.model))
-          for (double mu : values_or(grid.mus, base.verification.mu)) {
-            SweepSetting s;
-            s.config = base;
-            s.config.graph.trim = trim;
-            s.config.graph.thresholds = eps;
-            s.config.clique.solver = solver;
-            s.config.gnc.model = model;
-            s.config.verification.mu = mu;
-            const auto add = [&s](const std::string& part) {
-              s.label += (s.label.empty() ? "" : " ") + part;
-            };
-            if (grid.trims.size() > 1) add(std::string("trim=") + to_string(trim));
-            // Units as everywhere: difference TRIM thresholds and mu in metres.
-            if (grid.threshold_sets.size() > 1)
-              add("eps=" + thresholds_text(eps) + trim_unit_suffix(trim));
-            if (grid.solvers.size() > 1) add(std::string("solver=") + to_string(solver));
-            if (grid.models.size() > 1) add(std::string("model=") + to_string(model));
-            if (grid.mus.size() > 1) add("mu=" + number(mu) + " m");
-            if (s.label.empty()) s.label = "base";
-            validate(s.config,
-                     "sweep setting " + std::to_string(out.size() + 1) + " (" + s.label + ")");
-            out.push_back(std::move(s));
-          }
+  for (;;) {
+    SweepSetting s;
+    for (std::size_t k = 0; k < dims.size(); ++k)
+      s.values.push_back({dims[k].first->path, dims[k].first->values[at[k]]});
+    s.config = base;
+    const std::string where = "sweep setting " + std::to_string(out.size() + 1);
+    try {
+      set_fields_json(s.config, s.values);
+    } catch (const ConfigError& e) {
+      std::string values;
+      for (const auto& [path, v] : s.values) values += (values.empty() ? "" : " ") + path + "=" + v;
+      throw ConfigError(where + " (" + values + "): " + e.what());
+    }
+    for (std::size_t k = 0; k < dims.size(); ++k)
+      if (dims[k].first->values.size() > 1)
+        s.label += (s.label.empty() ? "" : " ") + sweep_dimension_name(dims[k].first->path) + "=" +
+                   value_text(dims[k].second, s.values[k].second, s.config);
+    if (s.label.empty()) s.label = "base";
+    out.push_back(std::move(s));
+    std::size_t k = dims.size();
+    while (k > 0 && ++at[k - 1] == dims[k - 1].first->values.size()) at[--k] = 0;
+    if (k == 0) break;
+  }
   return out;
+}
+
+SweepDimension parse_sweep_dimension(const Config& base, const std::string& path,
+                                     const std::string& values, const std::string& what) {
+  const std::vector<ConfigField> fields = config_fields(base);
+  const ConfigField* f = field_at(fields, path);
+  if (!f) throw InputError(what + ": " + path + ": no such parameter (pagor config --describe)");
+  SweepDimension d{path, {}};
+  switch (f->kind) {
+    case FieldKind::number:
+    case FieldKind::integer:
+    case FieldKind::flag:
+      for (double v : parse_number_list(values, what)) d.values.push_back(json_number(v));
+      break;
+    case FieldKind::choice: {
+      std::stringstream in(values);
+      std::string item;
+      while (std::getline(in, item, ',')) {
+        if (std::find(f->choices.begin(), f->choices.end(), item) == f->choices.end()) {
+          std::string names;
+          for (const auto& c : f->choices) names += (names.empty() ? "\"" : ", \"") + c + "\"";
+          throw InputError(what + ": element " + std::to_string(d.values.size() + 1) + " '" + item +
+                           "' is not one of " + names);
+        }
+        d.values.push_back(nlohmann::json(item).dump());
+      }
+      if (d.values.empty()) throw InputError(what + ": no values in '" + values + "'");
+      break;
+    }
+    case FieldKind::numbers:
+      for (const auto& set : parse_threshold_sets(values, what))
+        d.values.push_back(nlohmann::json(set).dump());
+      break;
+    case FieldKind::text:
+    case FieldKind::other:
+      throw InputError(what + ": " + path + " cannot be swept (not a number, a choice or a list " +
+                       "of numbers)");
+  }
+  return d;
+}
+
+SweepDimension parse_sweep_spec(const Config& base, const std::string& spec,
+                                const std::string& what) {
+  const auto eq = spec.find('=');
+  if (eq == std::string::npos || eq == 0)
+    throw InputError(what + ": expected PATH=v1,v2,..., got '" + spec + "'");
+  return parse_sweep_dimension(base, spec.substr(0, eq), spec.substr(eq + 1), what);
 }
 
 SweepResult run_sweep(SetRunner& runner, const std::vector<SweepSetting>& settings,
@@ -181,6 +281,9 @@ std::string sweep_json_lines(const SweepResult& result) {
                         {"recall", json_rate(s.recall())},
                         {"mean_time_ms", s.mean_total_ms},
                         {"wall_ms", r.wall_ms}};
+    nlohmann::json values = nlohmann::json::object();  // every dimension's value, by key path
+    for (const auto& [path, v] : r.setting.values) values[path] = nlohmann::json::parse(v);
+    j["values"] = std::move(values);
     nlohmann::json pairs = nlohmann::json::array();
     for (const PairOutcome& o : r.outcomes)
       pairs.push_back({{"pair", o.name},

@@ -47,7 +47,7 @@ std::vector<VariantResult> compare_variants(
   std::vector<SweepSetting> settings;
   for (const Variant& v : variants) {
     validate(v.config, v.name);
-    settings.push_back({v.name, v.config});
+    settings.push_back({v.name, v.config, {}});
   }
   PairSet positives = set;  // known negatives have no pose to get right
   positives.pairs.erase(std::remove_if(positives.pairs.begin(), positives.pairs.end(),

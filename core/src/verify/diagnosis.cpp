@@ -176,10 +176,15 @@ void judge(const DiagnosisInput& in, const DiagnosisParams& params, Diagnosis& d
       best_right = static_cast<int>(l);
   }
   const auto sel = d.selected;
-  if (sel >= 0 && sel < static_cast<int>(n) && at(sel).error && at(sel).error->success) {
+  if (d.selected_error && d.selected_error->success) {
     d.verdict = V::success;
-    d.explanation = format("level %d selected and right (%.2f m, %.2f deg)", sel,
-                           at(sel).error->translation, at(sel).error->rotation_deg);
+    const auto& e = *d.selected_error;
+    const auto& c = at(sel).error;  // the candidate before refinement
+    d.explanation = format("level %d selected and right (%.2f m, %.2f deg)", sel, e.translation,
+                           e.rotation_deg);
+    if (c && !c->success)
+      d.explanation += format(" after refinement; its candidate was off by %.2f m, %.2f deg",
+                              c->translation, c->rotation_deg);
     return;
   }
   if (judge_labels(in, d)) return;
@@ -301,7 +306,9 @@ Diagnosis diagnose(const DiagnosisInput& in, const Transform& T_gt, const Diagno
   d.selected = in.verification->selected;
   if (d.selected >= 0 && d.selected < static_cast<int>(d.levels.size())) {
     const auto& sel = d.levels[static_cast<std::size_t>(d.selected)];
-    d.score_misled = !(sel.error && sel.error->success) && d.gt_score > sel.score;
+    d.selected_error =
+        in.selected_pose ? pose_error(*in.selected_pose, T_gt, in.config->evaluation) : sel.error;
+    d.score_misled = !(d.selected_error && d.selected_error->success) && d.gt_score > sel.score;
   }
   judge(in, params, d);
   d.time_ms =
@@ -321,6 +328,7 @@ std::optional<Diagnosis> diagnose(const Pipeline& p, const DiagnosisParams& para
   in.verification = &p.verification();
   in.verifier = p.verifier();
   in.config = &p.config();
+  in.selected_pose = p.selected_transform();
   return diagnose(in, *p.ground_truth(), params);
 }
 

@@ -10,6 +10,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "pagor/config.hpp"
@@ -19,25 +20,53 @@
 
 namespace pagor {
 
-/// The values each dimension takes; an empty dimension keeps the base configuration's value.
+/// One dimension of a grid: a parameter by its key path in the configuration's catalog
+/// (config.hpp: `config_fields`, e.g. "verification.mu", "landmarks.classes[0].voxel_size") and
+/// the values it takes, each as JSON (`0.5`, `"exact"`, `[0.02, 0.04]`).
+struct SweepDimension {
+  std::string path;
+  std::vector<std::string> values;
+};
+
+/// The dimensions of a grid, in any order; each setting takes one value of every dimension. An
+/// empty grid gives the base configuration alone.
 struct SweepGrid {
-  std::vector<std::vector<double>> threshold_sets;  ///< graph.thresholds [TRIM unit]
-  std::vector<double> mus;                          ///< verification.mu [m]
-  std::vector<TrimKind> trims;                      ///< graph.trim
-  std::vector<PoseModel> models;                    ///< gnc.model
-  std::vector<CliqueSolver> solvers;                ///< clique.solver
+  std::vector<SweepDimension> dimensions;
+  /// Adds a dimension of numbers (a number, integer or flag parameter).
+  SweepGrid& add(const std::string& path, const std::vector<double>& values);
+  /// Adds a dimension of JSON values (names of a choice, lists of numbers, ...).
+  SweepGrid& add_json(const std::string& path, std::vector<std::string> values);
 };
 
 /// One point of the grid.
 struct SweepSetting {
-  std::string label;  ///< the values of the dimensions that vary, e.g. "mu=0.5 solver=exact"
-  Config config;
+  std::string label;  ///< the values of the dimensions that vary, e.g. "mu=0.5 m solver=exact"
+  Config config;      ///< the base with `values` set
+  /// The value of every dimension in this setting (key path, JSON): what "apply" sets on another
+  /// configuration, leaving everything else as it is.
+  std::vector<std::pair<std::string, std::string>> values;
 };
 
 /// Every combination of the grid on top of `base`, ordered so that consecutive settings
-/// invalidate as few stages as possible (mu varies fastest, the TRIM kind slowest). An empty grid
-/// gives one setting, `base`. Throws ConfigError naming the setting when one is invalid.
+/// invalidate as few stages as possible: the dimensions in the configuration's document order
+/// (pipeline order), the first varying slowest (so mu varies faster than the thresholds, which
+/// vary faster than the TRIM kind). Throws ConfigError naming the setting when one is invalid,
+/// and naming the path when it is no parameter of `base`.
 std::vector<SweepSetting> sweep_settings(const Config& base, const SweepGrid& grid);
+
+/// Parses one dimension's values as text for the parameter at `path` of `base`: numbers
+/// "0.5,1,2" for a number, integer or flag; names "ratio,difference" for a choice; sets of numbers
+/// separated by ';' ("0.02,0.04;0.05") for a list of numbers. Throws InputError naming `what` and
+/// the element, or a path that names no parameter (or one that cannot be swept).
+SweepDimension parse_sweep_dimension(const Config& base, const std::string& path,
+                                     const std::string& values, const std::string& what);
+/// Parses "PATH=VALUES" (as parse_sweep_dimension). Throws InputError naming `what`.
+SweepDimension parse_sweep_spec(const Config& base, const std::string& spec,
+                                const std::string& what);
+
+/// The short name of a swept parameter in labels: "eps" (graph.thresholds), "mu", "trim",
+/// "model", "solver", else the path itself.
+std::string sweep_dimension_name(const std::string& path);
 
 /// One setting's outcomes over the set.
 struct SweepSettingResult {

@@ -101,6 +101,9 @@ struct Diagnosis {
   std::vector<LevelDiagnosis> levels;
   double gt_score = 0.0;  ///< D of the ground-truth pose [m] (+inf without a verifier)
   int selected = -1;      ///< the selected level
+  /// Errors of the selected pose, after refinement when it applied (nullopt: none selected); the
+  /// verdict is `success` exactly when this pose is right.
+  std::optional<PoseError> selected_error;
   /// The ground truth scores worse than the selected (wrong) candidate: D itself misled.
   bool score_misled = false;
   double time_ms = 0.0;  ///< wall time [ms]
@@ -122,6 +125,8 @@ struct DiagnosisInput {
   const VerificationResult* verification = nullptr;
   const Verifier* verifier = nullptr;  ///< may be null: the ground truth's D is then +inf
   const Config* config = nullptr;
+  /// The selected pose after refinement (nullopt: the selected level's candidate as it is).
+  std::optional<Transform> selected_pose;
 };
 
 /// Diagnoses the stages' outputs against `T_target_source_gt`. Every pointer but `verifier`

@@ -1,0 +1,146 @@
+#include "panels/pyramid_chart.hpp"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "widgets/widgets.hpp"
+
+namespace pagor::studio {
+namespace {
+
+const ImVec4 kGood(0.35f, 0.9f, 0.45f, 1.0f), kBad(1.0f, 0.45f, 0.45f, 1.0f),
+    kAmber(1.0f, 0.8f, 0.3f, 1.0f);
+constexpr std::size_t kWarningLines = 2;
+
+// What refinement did to the selected pose: D and, with ground truth, the errors before/after.
+void refinement_lines(const Snapshot& s) {
+  const RefinementResult& r = s.refinement;
+  if (!r.ran) {
+    ui::figure_dim("refinement: off");
+    return;
+  }
+  if (!r.applied) {
+    ui::figure_dim("refinement: not applied (" + r.reason + ")");
+    return;
+  }
+  const std::string change =
+      r.score_before > 0
+          ? ui::format("%.1f %%", 100.0 * (r.score_after - r.score_before) / r.score_before)
+          : std::string("n/a");
+  ui::figure(ui::format("refinement: D %.0f -> %.0f m (%s), moved %.2f m / %.2f\xc2\xb0",
+                        r.score_before, r.score_after, change.c_str(), r.correction_translation,
+                        r.correction_rotation));
+  if (s.unrefined_error && s.selected_error)
+    ui::figure(ui::format("  errors before %.2f m / %.2f\xc2\xb0, after %.2f m / %.2f\xc2\xb0",
+                          s.unrefined_error->translation, s.unrefined_error->rotation_deg,
+                          s.selected_error->translation, s.selected_error->rotation_deg));
+}
+
+// The labels under the bars: every level's when they fit, else every k-th (never overlapping).
+int label_stride(int n, float slot) {
+  const float label_w = ImGui::CalcTextSize("L00 *").x + 4.0f;
+  int stride = 1;
+  while (stride < n && slot * stride < label_w) ++stride;
+  return stride;
+}
+
+}  // namespace
+
+std::string level_gap_text(const Snapshot& s) {
+  const auto m = score_margin(s);
+  if (!m) return "D gap to the runner-up level: n/a (fewer than two valid levels)";
+  return ui::format("D gap to the runner-up level: %.0f m (L%d %.0f m, L%d %.0f m)",
+                    m->second - m->best, m->best_level, m->best, m->second_level, m->second);
+}
+
+std::string acceptance_text(const Snapshot& s) {
+  const Acceptance& a = s.acceptance;
+  const AcceptanceParams& p = s.config.acceptance;
+  std::string t = ui::format(
+      "%s: %.0f %% of structure within %.2f m, %d inliers, acceptance margin %.0f %% of "
+      "\xce\xbc\xc2\xb7points (needs %.0f %%)",
+      a.accepted ? "ACCEPTED" : "REJECTED", 100.0 * a.overlap, p.inlier_distance, a.inliers,
+      100.0 * a.margin, 100.0 * p.min_margin);
+  if (!a.accepted) t += "; " + a.reason;
+  return t;
+}
+
+void bar_chart(const Snapshot& s, int shown, const RunChanges& changes) {
+  ImGui::TextDisabled("score D per level [m], lower is better, axis from 0");
+  const int n = static_cast<int>(s.levels.size());
+  double top = 0;
+  for (const auto& l : s.levels)
+    if (l.pose.valid && std::isfinite(l.score)) top = std::max(top, l.score);
+  const ImVec2 origin = ImGui::GetCursorScreenPos();
+  const float width = ImGui::GetContentRegionAvail().x, label_h = 16.0f;
+  const float height = std::clamp(
+      ImGui::GetContentRegionAvail().y * 0.55f - label_h - ImGui::GetTextLineHeightWithSpacing(),
+      40.0f, 220.0f);
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  dl->AddRectFilled(origin, ImVec2(origin.x + width, origin.y + height + label_h),
+                    IM_COL32(30, 32, 38, 255));
+  const float base = origin.y + height;
+  dl->AddLine(ImVec2(origin.x, base), ImVec2(origin.x + width, base), IM_COL32(160, 160, 160, 255));
+  const float slot = width / std::max(n, 1);
+  const int stride = label_stride(n, slot);
+  for (int i = 0; i < n; ++i) {
+    const auto& l = s.levels[static_cast<std::size_t>(i)];
+    const float x0 = origin.x + slot * i + slot * 0.15f,
+                x1 = origin.x + slot * (i + 1) - slot * 0.15f;
+    char text[48];
+    if (l.pose.valid && std::isfinite(l.score) && top > 0) {
+      const float h = static_cast<float>(l.score / top) * (height - 18.0f);
+      const ImU32 color = !l.error           ? IM_COL32(90, 130, 200, 255)
+                          : l.error->success ? IM_COL32(80, 200, 110, 255)
+                                             : IM_COL32(215, 80, 80, 255);
+      dl->AddRectFilled(ImVec2(x0, base - h), ImVec2(x1, base), color);
+      if (i == shown)
+        dl->AddRect(ImVec2(x0 - 2, base - h - 2), ImVec2(x1 + 2, base),
+                    IM_COL32(255, 255, 255, 255), 0, 0, 2.0f);
+      const auto k = static_cast<std::size_t>(i);
+      if (k < changes.levels.size() && changes.levels[k].d_delta &&
+          std::abs(*changes.levels[k].d_delta) > 1e-9)
+        std::snprintf(text, sizeof(text), "%.0f (%+.0f)", l.score, *changes.levels[k].d_delta);
+      else
+        std::snprintf(text, sizeof(text), "%.0f", l.score);
+      if (ImGui::CalcTextSize(text).x > slot * 0.95f)  // too narrow for the delta
+        std::snprintf(text, sizeof(text), "%.0f", l.score);
+      if (ImGui::CalcTextSize(text).x <= slot * stride * 0.95f && i % stride == 0)
+        dl->AddText(ImVec2(x0, base - h - 15.0f), IM_COL32(220, 220, 220, 255), text);
+    } else if (i % stride == 0) {
+      dl->AddText(ImVec2(x0, base - 16.0f), IM_COL32(255, 110, 110, 255), "invalid");
+    }
+    if (i % stride != 0 && i != s.selected) continue;
+    std::snprintf(text, sizeof(text), "L%d%s", i, i == s.selected ? " *" : "");
+    dl->AddText(ImVec2(x0, base + 1.0f), IM_COL32(200, 200, 200, 255), text);
+  }
+  ImGui::Dummy(ImVec2(width, height + label_h));
+  ui::figure_dim(level_gap_text(s));
+  if (s.selected >= 0) {  // the verdict a loop-closure user acts on; wrapped in a narrow column
+    ui::figure(acceptance_text(s), s.acceptance.accepted ? kGood : kBad, true);
+    ImGui::PushTextWrapPos(0.0f);
+    refinement_lines(s);
+    ImGui::PopTextWrapPos();
+  }
+}
+
+void diagnosis_verdict_line(const Snapshot& s) {
+  if (!s.diagnosis) return;
+  const Diagnosis& d = *s.diagnosis;
+  const bool ok = d.verdict == DiagnosisVerdict::success;
+  ui::figure(std::string("diagnosis: ") + verdict_name(d.verdict) + ": " + d.explanation,
+             ok ? kGood : kBad, true);
+}
+
+void warning_lines(const Snapshot& s) {
+  for (std::size_t i = 0; i < s.warnings.size() && i < kWarningLines; ++i)
+    ui::figure("warning: " + s.warnings[i], kAmber, true);
+  if (s.warnings.size() > kWarningLines)
+    ui::figure_dim(
+        ui::format("(%zu more warnings: hover the status bar)", s.warnings.size() - kWarningLines));
+}
+
+}  // namespace pagor::studio

@@ -1,0 +1,178 @@
+// Tuning in the studio: every parameter of the catalog in the generated editor (its range, scale,
+// mark and reset), landmark classes added and removed, and sweeps over any one or two parameters
+// with the flip view between two settings.
+
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <fstream>
+
+#include "panels/param_editor.hpp"
+#include "runners/bench_worker.hpp"
+#include "studio_test_util.hpp"
+#include "ui_driver.hpp"
+
+using namespace pagor;
+using namespace pagor::test;
+using studio::ui::WidgetKind;
+
+namespace {
+
+bool marked(const studio::ui::WidgetRecord& w) {
+  return w.label.rfind("* ", 0) == 0;
+}
+
+void settle_bench(UiDriver& d) {
+  for (int i = 0; i < 6000 && !d.studio().bench().wait_idle(0.05); ++i) d.frame();
+  for (int i = 0; i < 6000 && d.studio().bench().status().sweeping; ++i) d.frame();
+  d.frames(3);
+}
+
+}  // namespace
+
+TEST_CASE("every number of the catalog gets a widget over its own range and scale") {
+  for (const ConfigField& f : config_fields(default_config())) {
+    if (f.kind != FieldKind::number && f.kind != FieldKind::integer) continue;
+    INFO(f.path);
+    const studio::NumberWidget w = studio::number_widget(f);
+    // Inside the range, open ends excluded; a log scale starts above zero.
+    CHECK(f.info.range.contains(w.lo));
+    CHECK(f.info.range.contains(w.hi));
+    CHECK(w.lo < w.hi);
+    CHECK((w.kind == studio::NumberWidget::log_slider) == f.info.log_scale);
+    if (w.kind == studio::NumberWidget::log_slider) CHECK(w.lo > 0);
+    // The preset's value is reachable.
+    const double v = *field_number(default_config(), f.path);
+    if (std::isnan(f.info.off) || v != f.info.off) CHECK((v >= w.lo && v <= w.hi));
+  }
+  // Units: a length in metres, a TRIM threshold by the TRIM kind.
+  for (const ConfigField& f : config_fields(default_config())) {
+    if (f.path == "verification.mu") CHECK(studio::field_label(f, TrimKind::ratio) == "mu [m]");
+    if (f.path == "graph.thresholds") {
+      CHECK(studio::field_label(f, TrimKind::difference) == "thresholds [m]");
+      CHECK(studio::field_label(f, TrimKind::ratio) == "thresholds");
+    }
+    if (f.path == "verification.voxel_size")
+      CHECK(studio::field_tooltip(f, TrimKind::ratio).find("or 0 (off)") != std::string::npos);
+  }
+}
+
+TEST_CASE("a parameter edited in the editor is marked, reset to the preset, and undone") {
+  TempDir tmp;
+  UiDriver d(synthetic_state(tmp), 900, 1000);
+  d.settle();
+  d.open_all_nodes();
+  const auto* mu = d.find_param("verification.mu");
+  REQUIRE(mu);
+  CHECK_FALSE(marked(*mu));
+  CHECK(mu->has_tooltip);
+  CHECK(mu->lo == Approx(0.0).margin(1e-3));  // (0, 1000] on a log scale
+  CHECK(mu->hi == Approx(1000.0));
+  const ImGuiID id = mu->id;
+  REQUIRE(d.type_into_slider(id, U"2.5"));
+  d.frames(2);
+  CHECK(d.state().config.verification.mu == 2.5);
+  const auto* now = d.find_id(id);
+  REQUIRE(now);
+  CHECK(marked(*now));
+  // Its reset button (the small button after it) brings the preset's value back.
+  ImGuiID reset = 0;
+  for (const auto& w : d.widgets())
+    if (w.kind == WidgetKind::button && w.enabled && w.label == "\xe2\x86\xba" &&
+        std::abs(w.min.y - now->min.y) < 6)
+      reset = w.id;
+  REQUIRE(reset);
+  REQUIRE(d.click_id(reset));
+  CHECK(d.state().config.verification.mu == default_config().verification.mu);
+  // Ctrl+Z goes back through the edit.
+  d.press_key('Z', true);
+  CHECK(d.state().config.verification.mu == 2.5);
+  d.press_key('Z', true);
+  CHECK(d.state().config.verification.mu == default_config().verification.mu);
+  // A value a cross-field rule refuses is said and not kept.
+  const auto* fr = d.find_param("landmarks.classes[4].feature_radius");
+  REQUIRE(fr);                                   // building: FPFH
+  REQUIRE(d.type_into_slider(fr->id, U"0.01"));  // below its normal radius
+  d.frames(2);
+  CHECK(d.state().config.landmarks.classes[4].feature_radius ==
+        default_config().landmarks.classes[4].feature_radius);
+  CHECK(d.state().message.level == studio::MessageLevel::error);
+  CHECK(d.state().message.text.find("feature_radius") != std::string::npos);
+}
+
+TEST_CASE("landmark classes: removed, added from the label scheme, the configuration valid") {
+  TempDir tmp;
+  UiDriver d(synthetic_state(tmp), 900, 1000);
+  d.settle();
+  d.open_all_nodes();
+  auto& classes = d.state().config.landmarks.classes;
+  const std::size_t n = classes.size();
+  REQUIRE(classes[3].name == "traffic-sign");
+  // The remove button on the fourth class's line.
+  std::vector<ImGuiID> removes;
+  for (const auto& w : d.widgets())
+    if (w.label == "remove") removes.push_back(w.id);
+  REQUIRE(removes.size() == n);
+  REQUIRE(d.click_id(removes[3]));
+  REQUIRE(classes.size() == n - 1);
+  CHECK(std::none_of(classes.begin(), classes.end(),
+                     [](const ClassParams& c) { return c.name == "traffic-sign"; }));
+  d.frames(2);
+  // Added back from the scheme's classes: with the preset's parameters for that class.
+  REQUIRE(d.click_widget("add class"));
+  d.frames(1);
+  REQUIRE(d.click_widget("traffic-sign"));
+  REQUIRE(classes.size() == n);
+  CHECK(classes.back().name == "traffic-sign");
+  CHECK(config_to_json(d.state().config).find("traffic-sign") != std::string::npos);
+  validate(d.state().config);
+  d.settle();
+  CHECK(d.studio().worker().status().error.empty());
+}
+
+TEST_CASE("a 2-D sweep over any parameters from the UI, and the flip view opens a pair with B") {
+  TempDir tmp;
+  studio::AppState s = synthetic_state(tmp);
+  s.config = load_config(PAGOR_SOURCE_DIR "/bench/manifests/semreg-dev.json");
+  s.bench.path = PAGOR_SOURCE_DIR "/tests/studio/bench_pairs.txt";
+  s.bench.sweep_path = "gnc.noise_bound";
+  s.bench.sweep_values = "0.05,1";
+  s.bench.sweep_path2 = "verification.mu";
+  s.bench.sweep_values2 = "0.3,1";
+  UiDriver d(s, 1400, 1100);
+  d.settle();
+  REQUIRE(d.click_widget("benchmark view...", "Pagor Studio"));
+  d.frames(2);
+  REQUIRE(d.click_widget("open and run##bench", "Benchmark"));
+  settle_bench(d);
+  REQUIRE(d.click_widget("run sweep##sweep", "Benchmark"));
+  settle_bench(d);
+  const auto record = d.studio().bench().sweep_result();
+  REQUIRE(record);
+  const SweepResult& r = record->result;
+  REQUIRE(r.settings.size() == 4);
+  CHECK(r.settings[0].setting.label == "gnc.noise_bound=0.05 m mu=0.3 m");
+  CHECK(r.settings[3].setting.config.gnc.noise_bound == 1.0);
+  // The flip view between the first and last settings lists the pairs that changed.
+  d.state().bench.flip_a = 0;
+  d.state().bench.flip_b = 3;
+  d.frames(2);
+  const auto flips = studio::flipped_pairs(r, 0, 3);
+  for (std::size_t i = 0; i < r.settings[0].outcomes.size(); ++i) {
+    const PairOutcome& a = r.settings[0].outcomes[i];
+    const PairOutcome& b = r.settings[3].outcomes[i];
+    const bool changed =
+        a.success != b.success || a.accepted != b.accepted || a.diagnosis != b.diagnosis;
+    CHECK(changed == (std::find(flips.begin(), flips.end(), i) != flips.end()));
+  }
+  CHECK_FALSE(d.texts(std::to_string(flips.size()) + " of 3 pairs changed", "Benchmark").empty());
+  if (!flips.empty()) {
+    const std::string name = r.settings[3].outcomes[flips[0]].name;
+    REQUIRE(d.click_widget(name + "##flip" + std::to_string(flips[0]), "Benchmark"));
+    d.settle();
+    CHECK(d.state().main_view == studio::MainView::pair);
+    CHECK(d.state().config.gnc.noise_bound == 1.0);
+    CHECK(d.state().config.verification.mu == 1.0);
+  } else {
+    WARN("no pair changed between the settings: the flip view is empty");
+  }
+}
