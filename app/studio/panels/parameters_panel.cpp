@@ -221,6 +221,10 @@ bool landmark_section(Config& c) {
                     "Enter applies. Up to 5000 here: a run cannot be interrupted inside a "
                     "stage and larger graphs take minutes (0, no cap, only from a config "
                     "file).");
+  changed |= ui::checkbox("fuse with landmarks", &c.correspondences.fuse_matches,
+                          "With a matcher's correspondences (--correspondences FILE): keep the "
+                          "landmark correspondences too, both in one pyramid, counted per origin "
+                          "above the levels (off: the matcher's replace them).");
   for (ClassParams& p : c.landmarks.classes) {
     ImGui::PushID(p.name.c_str());
     const std::string text = p.name + " (" + to_string(p.method) + ")";

@@ -4,6 +4,7 @@
 #include <new>
 
 #include "pagor/errors.hpp"
+#include "pagor/io/correspondence_file.hpp"
 
 namespace pagor::studio {
 
@@ -111,6 +112,9 @@ void Worker::handle(const Request& request) {
       ++data_generation_;
       pipeline_.set_input(*source_, *target_);
       pipeline_.set_ground_truth(ground_truth_);
+      pipeline_.set_matches(request.data->correspondences.empty()
+                                ? std::vector<Correspondence>()
+                                : read_correspondence_file(request.data->correspondences).items);
     } catch (const Error& e) {
       fail(e.what());
       return;

@@ -63,7 +63,8 @@ json data_json(const PairSource& d) {
               {"source_labels", d.source_labels},
               {"target", d.target},
               {"target_labels", d.target_labels},
-              {"ground_truth", d.ground_truth}};
+              {"ground_truth", d.ground_truth},
+              {"correspondences", d.correspondences}};
     case PairSource::Kind::synthetic:
       return {{"kind", "synthetic"}, {"seed", d.synthetic_seed}};
   }
@@ -167,13 +168,15 @@ PairSource read_data(const json& d, const std::string& where) {
         static_cast<int>(integer_value((*pair)[1], where + ".pair[1]", 0, kMaxFrame));
   } else if (kind == "files") {
     reject_unknown(d, where,
-                   {"kind", "source", "source_labels", "target", "target_labels", "ground_truth"});
+                   {"kind", "source", "source_labels", "target", "target_labels", "ground_truth",
+                    "correspondences"});
     src.kind = PairSource::Kind::files;
     src.source = get_string(d, "source", where, "");
     src.source_labels = get_string(d, "source_labels", where, "");
     src.target = get_string(d, "target", where, "");
     src.target_labels = get_string(d, "target_labels", where, "");
     src.ground_truth = get_string(d, "ground_truth", where, "");
+    src.correspondences = get_string(d, "correspondences", where, "");
   } else if (kind == "synthetic") {
     reject_unknown(d, where, {"kind", "seed"});
     src.kind = PairSource::Kind::synthetic;
@@ -292,7 +295,8 @@ PairSource resolved_data(const AppState& s) {
   const std::filesystem::path base(s.base_dir);
   PairSource d = s.data;
   for (std::string* p :
-       {&d.kitti_root, &d.source, &d.source_labels, &d.target, &d.target_labels, &d.ground_truth})
+       {&d.kitti_root, &d.source, &d.source_labels, &d.target, &d.target_labels, &d.ground_truth,
+        &d.correspondences})
     *p = resolve(*p, base);
   return d;
 }
