@@ -6,7 +6,8 @@
 # - semreg-dev raw-id: its labels rewritten as raw SemanticKITTI ids with random instance bits
 #   (written to a temporary directory as .label files beside a generated manifest);
 # - semreg-dev unlabelled: `label_scheme: none`, the clouds read as x y z only;
-# - gedi-dev: the matcher's correspondences with the semreg-dev clouds for verification.
+# - gedi-dev alone: the matcher's correspondences with the semreg-dev clouds for verification;
+# - gedi-dev fused: the same with --fuse, the clouds' landmark correspondences beside them.
 # Every semreg-dev variant runs 15 negatives: each source against every target five or more pairs
 # later (~100-200 m away, nothing shared); precision counts an accepted negative as wrong.
 # Usage: bench/front_end_report.sh [build/app/pagor]
@@ -103,24 +104,35 @@ bench "semreg-dev raw ids" '{}' --manifest "$tmp/raw.txt"
 bench "semreg-dev unlabelled" '{"label_scheme": "none"}' --manifest "$tmp/semreg.txt"
 
 [ -d "$SHARED/gedi-dev" ] || exit 0
-succ=0 times=()
-for p in "${pairs[@]}"; do
-  "$PAGOR" register --correspondences "$SHARED/gedi-dev/$p.txt" \
-    --source "$SHARED/semreg-dev/$p/source.pcd" --target "$SHARED/semreg-dev/$p/target.pcd" \
-    --ground-truth "$SHARED/gedi-dev/$p.T.txt" --json "$tmp/g.json" > /dev/null 2>&1
-  python3 - "$tmp/g.json" "$p" >> "$tmp/gedi.txt" <<'EOF'
+# $1 name, rest: more arguments of `register --correspondences` (e.g. --fuse).
+gedi() {
+  local name=$1 p
+  shift
+  rm -f "$tmp/gedi.txt"
+  for p in "${pairs[@]}"; do
+    "$PAGOR" register --correspondences "$SHARED/gedi-dev/$p.txt" "$@" \
+      --source "$SHARED/semreg-dev/$p/source.pcd" --target "$SHARED/semreg-dev/$p/target.pcd" \
+      --ground-truth "$SHARED/gedi-dev/$p.T.txt" --json "$tmp/g.json" > /dev/null 2>&1
+    python3 - "$tmp/g.json" "$p" >> "$tmp/gedi.txt" <<'EOF'
 import json, sys
 j = json.load(open(sys.argv[1]))
 sel = j["selected_level"]
 ok = sel is not None and bool(j["levels"][sel].get("success"))
-print(sys.argv[2], int(ok), sum(v for k, v in j["timings_ms"].items()))
+print(sys.argv[2], int(ok), int(j["acceptance"]["accepted"]), j["timings_ms"]["total"])
 EOF
-done
-python3 - "$tmp/gedi.txt" <<'EOF'
+  done
+  python3 - "$tmp/gedi.txt" "$name" <<'EOF'
 import statistics, sys
 rows = [l.split() for l in open(sys.argv[1])]
 ok = [r[0] for r in rows if r[1] == "1"]
+true_acc = sum(r[1] == "1" and r[2] == "1" for r in rows)
+accepted = sum(r[2] == "1" for r in rows)
+prec = "%.0f %%" % (100.0 * true_acc / accepted) if accepted else "n/a"
+rec = "%.0f %%" % (100.0 * true_acc / len(ok)) if ok else "n/a"
 fails = " ".join(r[0] for r in rows if r[1] != "1") or "-"
-print("%-28s %7s %7s %9s %7s %6s %9.0f  %s" % ("gedi-dev alone (matcher)", "%d/%d" % (len(ok), len(rows)),
-      "-", "n/a", "n/a", "-", statistics.median(float(r[2]) for r in rows), fails))
+print("%-28s %7s %7s %9s %7s %6s %9.0f  %s" % (sys.argv[2], "%d/%d" % (len(ok), len(rows)),
+      "-", prec, rec, "-", statistics.median(float(r[3]) for r in rows), fails))
 EOF
+}
+gedi "gedi-dev alone (matcher)"
+gedi "gedi-dev fused (--fuse)" --fuse

@@ -7,7 +7,10 @@
 #include <catch2/catch.hpp>
 #include <filesystem>
 
+#include <nlohmann/json.hpp>
+
 #include "pagor/errors.hpp"
+#include "pagor/io/clouds.hpp"
 #include "pagor/io/correspondence_file.hpp"
 #include "pagor/pipeline.hpp"
 #include "pagor/report.hpp"
@@ -79,8 +82,14 @@ TEST_CASE("a matcher's correspondences register without clouds") {
     CHECK(q.precision > 0.9);
   }
   const std::string report = registration_report_json(p, "matches", "matches");
-  CHECK(report.find("\"matcher\": 1000") != std::string::npos);
   CHECK(report.find("\"selected_by\": \"without_clouds\"") != std::string::npos);
+  const auto origin = nlohmann::json::parse(report)["correspondences"]["origin"];
+  CHECK(origin["matcher"]["count"] == 1000);
+  CHECK(origin["landmark"]["count"] == 0);
+  const auto sel = static_cast<std::size_t>(p.selected_level());
+  CHECK(origin["matcher"]["selected_clique"] == p.cliques()[sel].vertices.size());
+  CHECK(origin["matcher"]["selected_inliers"] == p.poses()[sel].inliers.size());
+  CHECK(origin["landmark"]["selected_clique"] == 0);
   // The diagnosis counts the matcher's correspondences as a class of their own.
   const auto d = diagnose(p);
   REQUIRE(d);
@@ -166,6 +175,9 @@ TEST_CASE("matches with clouds are verified on them; clearing them brings the la
       }
     }
     CHECK(correspondence_class_name(set.items.back(), p.source_landmarks()) == "matcher");
+    const OriginCounts all = count_by_origin(set.items);
+    CHECK(all.matcher == m.size());
+    CHECK(all.landmark == set.items.size() - m.size());
     REQUIRE(p.selected_error());
     CHECK(p.selected_error()->success);
   }
@@ -197,5 +209,54 @@ TEST_CASE("gedi-dev: a learned matcher's correspondences of real KITTI pairs") {
   REQUIRE(p.selected_error());
   CHECK(p.selected_error()->success);
   for (const CliqueResult& c : p.cliques()) CHECK(is_clique(p.graph(), c.level, c.vertices));
+}
+#endif
+
+#if defined(PAGOR_GEDI_DIR) && defined(PAGOR_SEMREG_DIR)
+// Pair 08: 730 correspondences of which 57 true; the matcher alone misses it, the landmarks of
+// its class-poor clouds are few. Fused, both take part in the selected clique and the pose is right.
+TEST_CASE("gedi-dev fused with the landmarks of the semreg-dev clouds") {
+  const std::string pair = "08";
+  const std::string clouds = std::string(PAGOR_SEMREG_DIR) + "/" + pair;
+  const CorrespondenceFile input = read_correspondence_file(std::string(PAGOR_GEDI_DIR) + "/" +
+                                                            pair + ".txt");
+  Config c = default_config();
+  c.correspondences.fuse_matches = true;
+  Pipeline p(c);
+  p.set_matches(input.items);
+  p.set_input(load_cloud(clouds + "/source.pcd").cloud, load_cloud(clouds + "/target.pcd").cloud);
+  p.set_ground_truth(read_transform_file(std::string(PAGOR_GEDI_DIR) + "/" + pair + ".T.txt"));
+  p.run();
+  const OriginCounts all = count_by_origin(p.correspondences().items);
+  CHECK(all.matcher == input.items.size());
+  CHECK(all.landmark > 0);
+  REQUIRE(p.selected_level() >= 0);
+  REQUIRE(p.selected_error());
+  CHECK(p.selected_error()->success);
+  CHECK(p.acceptance().accepted);
+  const auto sel = static_cast<std::size_t>(p.selected_level());
+  const OriginCounts clique = count_by_origin(p.correspondences().items, p.cliques()[sel].vertices);
+  CHECK(clique.landmark > 0);
+  CHECK(clique.matcher > 0);
+  CHECK(clique.landmark + clique.matcher == p.cliques()[sel].vertices.size());
+
+  // The diagnosis and the report say the same per origin.
+  const std::optional<Diagnosis> d = diagnose(p);
+  REQUIRE(d);
+  const LevelDiagnosis& l = d->levels[sel];
+  CHECK(l.clique_origin.landmark == clique.landmark);
+  CHECK(l.clique_origin.matcher == clique.matcher);
+  CHECK(l.clique_true_origin.landmark > 0);
+  CHECK(l.clique_true_origin.matcher > 0);
+  CHECK(l.clique_true_origin.landmark + l.clique_true_origin.matcher == l.clique_true);
+  CHECK(d->explanation.find("landmark") != std::string::npos);
+  const auto report = nlohmann::json::parse(registration_report_json(p, "s", "t", d));
+  const auto& origin = report["correspondences"]["origin"];
+  CHECK(origin["landmark"]["count"] == all.landmark);
+  CHECK(origin["matcher"]["count"] == all.matcher);
+  CHECK(origin["landmark"]["selected_clique"] == clique.landmark);
+  CHECK(origin["matcher"]["selected_clique"] == clique.matcher);
+  CHECK(report["diagnosis"]["levels"][sel]["origin"]["matcher"]["clique_true"] ==
+        l.clique_true_origin.matcher);
 }
 #endif

@@ -138,6 +138,9 @@ std::vector<Option> register_options() {
   o.push_back({"correspondences", 1, "FILE",
                "register these correspondences (px py pz qx qy qz [weight [inlier 0/1]] per "
                "line) instead of extracting landmarks; clouds, if given, only verify"});
+  o.push_back({"fuse", 0, "",
+               "with --correspondences and clouds: the clouds' landmark correspondences join the "
+               "file's in one pyramid (sets correspondences.fuse_matches)"});
   return o;
 }
 

@@ -1,6 +1,7 @@
 // pagor register --correspondences FILE: the back end on any matcher's correspondences, through
 // the Pipeline (set_matches). Graph -> clique -> pose per level; with clouds also verification,
-// refinement and acceptance; with --ground-truth the errors per level and of the selection; with
+// refinement and acceptance, and with --fuse the clouds' landmark correspondences beside the
+// matcher's in one pyramid (correspondences.fuse_matches), counted per origin; with --ground-truth the errors per level and of the selection; with
 // ground-truth inlier flags in the file each level's precision and recall. The JSON result is
 // the main report (pagor.register/1) with the file's details under `correspondences`.
 
@@ -20,6 +21,36 @@ namespace {
 
 using json = nlohmann::json;
 
+// The file's inlier flags speak of the matcher's correspondences, which follow the landmark ones
+// when fused: the positions in the file of the matcher's among `indices` (into the pipeline's).
+std::vector<int> file_indices(const Pipeline& p, const std::vector<int>& indices) {
+  const auto& items = p.correspondences().items;
+  const int first = static_cast<int>(items.size() - p.correspondences().matches);
+  std::vector<int> out;
+  for (int i : indices)
+    if (i >= first && i < static_cast<int>(items.size())) out.push_back(i - first);
+  return out;
+}
+
+// Per origin: the correspondences, and of the selected level's clique how many (and, with a
+// diagnosis, how many true ones) come from each.
+void print_origins(const Pipeline& p, const std::optional<Diagnosis>& diagnosis) {
+  const OriginCounts all = count_by_origin(p.correspondences().items);
+  std::printf("\ncorrespondences by origin: landmark %zu, matcher %zu\n", all.landmark,
+              all.matcher);
+  const int sel = p.selected_level();
+  if (sel < 0) return;
+  const OriginCounts clique =
+      count_by_origin(p.correspondences().items, p.cliques()[static_cast<std::size_t>(sel)].vertices);
+  std::printf("selected clique by origin: landmark %zu, matcher %zu", clique.landmark,
+              clique.matcher);
+  if (diagnosis && sel < static_cast<int>(diagnosis->levels.size())) {
+    const OriginCounts& t = diagnosis->levels[static_cast<std::size_t>(sel)].clique_true_origin;
+    std::printf(" (true: landmark %zu, matcher %zu)", t.landmark, t.matcher);
+  }
+  std::printf("\n");
+}
+
 void print_levels(const Pipeline& p, const CorrespondenceFile& input) {
   const bool flags = !input.inlier.empty();
   const bool scored = p.has_clouds();
@@ -37,7 +68,7 @@ void print_levels(const Pipeline& p, const CorrespondenceFile& input) {
                 g.active_vertices(static_cast<int>(l)), g.edges_at_level[l],
                 p.cliques()[l].vertices.size(), p.poses()[l].inliers.size());
     if (flags) {
-      const InlierQuality q = inlier_quality(p.cliques()[l].vertices, input.inlier);
+      const InlierQuality q = inlier_quality(file_indices(p, p.cliques()[l].vertices), input.inlier);
       std::printf(" %9.3f %7.3f", q.precision, q.recall);
     }
     if (scored) {
@@ -101,7 +132,7 @@ json report_json(const Pipeline& p, const CorrespondenceFile& input, const std::
   c["flagged_inliers"] = input.inlier.empty() ? json() : json(flagged);
   if (!input.inlier.empty())
     for (std::size_t l = 0; l < p.cliques().size(); ++l) {
-      const InlierQuality q = inlier_quality(p.cliques()[l].vertices, input.inlier);
+      const InlierQuality q = inlier_quality(file_indices(p, p.cliques()[l].vertices), input.inlier);
       json& level = report["levels"][l];
       level["precision"] = q.precision;
       level["recall"] = q.recall;
@@ -113,7 +144,13 @@ json report_json(const Pipeline& p, const CorrespondenceFile& input, const std::
 
 }  // namespace
 
-int run_register_correspondences(const Args& args, const Config& config) {
+int run_register_correspondences(const Args& args, Config config) {
+  if (args.has("fuse")) {
+    if (!pair_source_from_args(args))
+      throw UsageError("--fuse needs the clouds (--source S --target T or --kitti-root DIR --pair "
+                       "S T): their landmarks join the matcher's correspondences");
+    config.correspondences.fuse_matches = true;
+  }
   const std::string file = args.get("correspondences");
   CorrespondenceFile input = read_correspondence_file(file);
   std::printf("correspondences: %zu from %s%s%s\n", input.items.size(), file.c_str(),
@@ -139,6 +176,7 @@ int run_register_correspondences(const Args& args, const Config& config) {
   print_levels(pipeline, input);
   print_outcome(pipeline);
   const std::optional<Diagnosis> diagnosis = diagnose(pipeline);
+  print_origins(pipeline, diagnosis);
   if (diagnosis)
     std::printf("diagnosis: %s: %s\n", verdict_sentence(diagnosis->verdict),
                 diagnosis->explanation.c_str());

@@ -33,7 +33,7 @@ int run_config(const Args& args);
 std::vector<Option> register_options();
 int run_register(const Args& args);
 /// `register --correspondences FILE` (cmd_register_correspondences.cpp).
-int run_register_correspondences(const Args& args, const Config& config);
+int run_register_correspondences(const Args& args, Config config);
 std::vector<Option> bench_options();
 int run_bench(const Args& args);
 std::vector<Option> sweep_options();

@@ -53,6 +53,24 @@ json refinement_json(const Pipeline& p) {
   return j;
 }
 
+// Per origin: the correspondences, the selected clique's members and its pose's inliers.
+json origin_json(const Pipeline& p) {
+  const auto& items = p.correspondences().items;
+  const OriginCounts all = count_by_origin(items);
+  OriginCounts clique, inliers;
+  const int sel = p.selected_level();
+  if (sel >= 0 && static_cast<std::size_t>(sel) < p.cliques().size()) {
+    clique = count_by_origin(items, p.cliques()[static_cast<std::size_t>(sel)].vertices);
+    if (static_cast<std::size_t>(sel) < p.poses().size())
+      inliers = count_by_origin(items, p.poses()[static_cast<std::size_t>(sel)].inliers);
+  }
+  const auto one = [](std::size_t n, std::size_t c, std::size_t i) {
+    return json{{"count", n}, {"selected_clique", c}, {"selected_inliers", i}};
+  };
+  return {{"landmark", one(all.landmark, clique.landmark, inliers.landmark)},
+          {"matcher", one(all.matcher, clique.matcher, inliers.matcher)}};
+}
+
 json report_object(const Pipeline& p, const std::string& source_name,
                    const std::string& target_name) {
   // Poses as the user's files have them (the pipeline's are between the clouds' own frames).
@@ -141,7 +159,7 @@ json report_object(const Pipeline& p, const std::string& source_name,
         {"candidates", corr.candidates},
         {"capped", corr.capped},
         {"per_class", per_class},
-        {"origin", {{"landmark", corr.items.size() - corr.matches}, {"matcher", corr.matches}}}}},
+        {"origin", origin_json(p)}}},
       {"landmarks",
        {{"source", counts_by_class(p.source_landmarks())},
         {"target", counts_by_class(p.target_landmarks())}}},

@@ -85,3 +85,41 @@ TEST_CASE("an unlabelled pair runs on class-agnostic landmarks instead of being 
   CHECK(snap->selected >= 0);
 }
 #endif
+
+#if defined(PAGOR_GEDI_DIR) && defined(PAGOR_SEMREG_DIR)
+TEST_CASE("a matcher's correspondences replace the landmark ones, or join them when fused") {
+  Worker worker;
+  PairSource d;
+  d.kind = PairSource::Kind::files;
+  d.source = std::string(PAGOR_SEMREG_DIR) + "/08/source.pcd";
+  d.target = std::string(PAGOR_SEMREG_DIR) + "/08/target.pcd";
+  d.ground_truth = std::string(PAGOR_SEMREG_DIR) + "/08/T_target_source.txt";
+  d.correspondences = std::string(PAGOR_GEDI_DIR) + "/08.txt";
+  Config config = default_config();
+  worker.submit(d, config);
+  REQUIRE(worker.wait_idle(kTimeout));
+  REQUIRE(worker.status().error.empty());
+  auto snap = worker.snapshot();
+  REQUIRE(snap);
+  const OriginCounts alone = count_by_origin(snap->correspondences);
+  CHECK(alone.landmark == 0);
+  CHECK(alone.matcher == 730);
+
+  config.correspondences.fuse_matches = true;
+  worker.submit(std::nullopt, config);
+  REQUIRE(worker.wait_idle(kTimeout));
+  REQUIRE(worker.status().error.empty());
+  snap = worker.snapshot();
+  REQUIRE(snap);
+  const OriginCounts fused = count_by_origin(snap->correspondences);
+  CHECK(fused.landmark > 0);
+  CHECK(fused.matcher == 730);
+  REQUIRE(snap->selected >= 0);
+  const OriginCounts clique = count_by_origin(
+      snap->correspondences, snap->levels[static_cast<std::size_t>(snap->selected)].clique);
+  CHECK(clique.landmark > 0);
+  CHECK(clique.matcher > 0);
+  REQUIRE(snap->selected_error);
+  CHECK(snap->selected_error->success);
+}
+#endif

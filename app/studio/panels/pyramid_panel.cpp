@@ -161,6 +161,21 @@ void level_details(const Snapshot& s, int shown) {
   }
 }
 
+// With a matcher's correspondences: how many of each origin, and of the shown level's clique.
+void origin_line(const Snapshot& s, int shown) {
+  const OriginCounts all = count_by_origin(s.correspondences);
+  if (all.matcher == 0) return;
+  if (shown < 0 || shown >= static_cast<int>(s.levels.size())) {
+    ImGui::TextDisabled("by origin: landmark %zu, matcher %zu", all.landmark, all.matcher);
+    return;
+  }
+  const OriginCounts clique =
+      count_by_origin(s.correspondences, s.levels[static_cast<std::size_t>(shown)].clique);
+  ImGui::TextDisabled("by origin: landmark %zu, matcher %zu; level %d clique: landmark %zu, "
+                      "matcher %zu",
+                      all.landmark, all.matcher, shown, clique.landmark, clique.matcher);
+}
+
 }  // namespace
 
 void pyramid_panel(const Snapshot* s, const RunChanges& changes, const std::string& stale_reason,
@@ -180,6 +195,7 @@ void pyramid_panel(const Snapshot* s, const RunChanges& changes, const std::stri
   warning_lines(*s);
   result_exports(*s, exports);
   const int shown = shown_level(view, s->selected, static_cast<int>(s->levels.size()));
+  origin_line(*s, shown);
   const float chart_w = std::min(330.0f, ImGui::GetContentRegionAvail().x * 0.34f);
   ImGui::BeginChild("levels", ImVec2(ImGui::GetContentRegionAvail().x - chart_w - 8.0f, 0));
   const int clicked = levels_table(*s, shown, changes);

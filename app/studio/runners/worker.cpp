@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "pagor/errors.hpp"
+#include "pagor/io/correspondence_file.hpp"
 #include "pagor/report.hpp"
 
 namespace pagor::studio {
@@ -123,6 +124,9 @@ void Worker::handle(const Request& request) {
       ++data_generation_;
       pipeline_.set_input(*source_, *target_);
       pipeline_.set_ground_truth(ground_truth_);
+      pipeline_.set_matches(request.data->correspondences.empty()
+                                ? std::vector<Correspondence>()
+                                : read_correspondence_file(request.data->correspondences).items);
     } catch (const Error& e) {
       fail(e.what());
       return;

@@ -12,7 +12,8 @@
 ///   ground_truth      T_target_source, translation_error_m, rotation_error_deg, success,
 ///                     upper_bound (null without ground truth)
 ///   correspondences   count, candidates, capped, per_class {name: count} (landmark ones),
-///                     origin {landmark: count, matcher: count}
+///                     origin {landmark, matcher: {count, selected_clique, selected_inliers}}
+///                     (the selected level's clique members and GNC inliers of each origin)
 ///   landmarks         source / target: {class name: count}
 ///   timings_ms        landmarks, correspondences, graph, clique, gnc, verification, evaluation,
 ///   total warnings[], config (the full configuration used)

@@ -201,6 +201,27 @@ std::string correspondence_class_name(const Correspondence& c, const LandmarkSet
   return c.class_index >= 0 && k < source.classes.size() ? source.classes[k].name : "?";
 }
 
+namespace {
+void count(const Correspondence& c, OriginCounts& n) {
+  ++(c.origin == CorrespondenceOrigin::matcher ? n.matcher : n.landmark);
+}
+}  // namespace
+
+OriginCounts count_by_origin(const std::vector<Correspondence>& items) {
+  OriginCounts n;
+  for (const Correspondence& c : items) count(c, n);
+  return n;
+}
+
+OriginCounts count_by_origin(const std::vector<Correspondence>& items,
+                             const std::vector<int>& indices) {
+  OriginCounts n;
+  for (int i : indices)
+    if (i >= 0 && static_cast<std::size_t>(i) < items.size())
+      count(items[static_cast<std::size_t>(i)], n);
+  return n;
+}
+
 CorrespondenceSet with_matches(std::vector<Correspondence> matches, CorrespondenceSet out,
                                int source_ids, int target_ids) {
   const auto t0 = Clock::now();

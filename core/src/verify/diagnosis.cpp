@@ -122,7 +122,12 @@ void diagnose_levels(const DiagnosisInput& in, const Transform& T_gt, const Diag
     }
     const auto& clique = (*in.cliques)[l].vertices;
     ld.clique_size = clique.size();
-    for (int v : clique) ld.clique_true += d.is_true(static_cast<std::size_t>(v));
+    std::vector<int> true_members;
+    for (int v : clique)
+      if (d.is_true(static_cast<std::size_t>(v))) true_members.push_back(v);
+    ld.clique_true = true_members.size();
+    ld.clique_origin = count_by_origin(items, clique);
+    ld.clique_true_origin = count_by_origin(items, true_members);
     ld.precision = clique.empty() ? 0.0 : double(ld.clique_true) / double(clique.size());
     ld.recall = ld.consistent_true == 0
                     ? 1.0
@@ -245,6 +250,17 @@ void judge(const DiagnosisInput& in, const DiagnosisParams& params, Diagnosis& d
       most_consistent, richest, r.clique_true, r.clique_size);
 }
 
+// Fused correspondences: which origin the selected clique's members and true ones come from.
+void explain_origins(const DiagnosisInput& in, Diagnosis& d) {
+  const OriginCounts all = count_by_origin(in.correspondences->items);
+  if (all.landmark == 0 || all.matcher == 0) return;
+  if (d.selected < 0 || d.selected >= static_cast<int>(d.levels.size())) return;
+  const LevelDiagnosis& l = d.levels[static_cast<std::size_t>(d.selected)];
+  d.explanation += format("; selected clique: %zu landmark (%zu true), %zu matcher (%zu true)",
+                          l.clique_origin.landmark, l.clique_true_origin.landmark,
+                          l.clique_origin.matcher, l.clique_true_origin.matcher);
+}
+
 }  // namespace
 
 const char* verdict_name(DiagnosisVerdict v) {
@@ -311,6 +327,7 @@ Diagnosis diagnose(const DiagnosisInput& in, const Transform& T_gt, const Diagno
     d.score_misled = !(d.selected_error && d.selected_error->success) && d.gt_score > sel.score;
   }
   judge(in, params, d);
+  explain_origins(in, d);
   d.time_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   return d;
@@ -357,7 +374,14 @@ nlohmann::json level_json(const LevelDiagnosis& l) {
                       {"pose_valid", l.pose_valid},
                       {"gnc_inliers", l.gnc_inliers},
                       {"gnc_true_inliers", l.gnc_true_inliers},
-                      {"score_D", finite_or_null(l.score)}};
+                      {"score_D", finite_or_null(l.score)},
+                      {"origin",
+                       {{"landmark",
+                         {{"clique", l.clique_origin.landmark},
+                          {"clique_true", l.clique_true_origin.landmark}}},
+                        {"matcher",
+                         {{"clique", l.clique_origin.matcher},
+                          {"clique_true", l.clique_true_origin.matcher}}}}}};
   if (l.error) {
     j["translation_error_m"] = l.error->translation;
     j["rotation_error_deg"] = l.error->rotation_deg;

@@ -63,6 +63,19 @@ struct CorrespondenceSet {
   double time_ms = 0.0;  ///< wall time [ms]
 };
 
+/// Correspondences counted by origin (CorrespondenceOrigin).
+struct OriginCounts {
+  std::size_t landmark = 0;  ///< the front end's
+  std::size_t matcher = 0;   ///< a matcher's
+};
+
+/// How many of `items` come from each origin.
+OriginCounts count_by_origin(const std::vector<Correspondence>& items);
+/// How many of the correspondences `indices` names (a clique, a pose's inliers) come from each
+/// origin; an index outside `items` is not counted.
+OriginCounts count_by_origin(const std::vector<Correspondence>& items,
+                             const std::vector<int>& indices);
+
 /// Name of the class a correspondence is shown and counted under: its landmarks' class in
 /// `source` (the landmark set it was made from), "matcher" for a matcher's correspondence, "?" for
 /// a class index `source` does not have.
