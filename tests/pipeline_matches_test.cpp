@@ -214,12 +214,13 @@ TEST_CASE("gedi-dev: a learned matcher's correspondences of real KITTI pairs") {
 
 #if defined(PAGOR_GEDI_DIR) && defined(PAGOR_SEMREG_DIR)
 // Pair 08: 730 correspondences of which 57 true; the matcher alone misses it, the landmarks of
-// its class-poor clouds are few. Fused, both take part in the selected clique and the pose is right.
+// its class-poor clouds are few. Fused, both take part in the selected clique and the pose is
+// right.
 TEST_CASE("gedi-dev fused with the landmarks of the semreg-dev clouds") {
   const std::string pair = "08";
   const std::string clouds = std::string(PAGOR_SEMREG_DIR) + "/" + pair;
-  const CorrespondenceFile input = read_correspondence_file(std::string(PAGOR_GEDI_DIR) + "/" +
-                                                            pair + ".txt");
+  const CorrespondenceFile input =
+      read_correspondence_file(std::string(PAGOR_GEDI_DIR) + "/" + pair + ".txt");
   Config c = default_config();
   c.correspondences.fuse_matches = true;
   Pipeline p(c);

@@ -1,9 +1,10 @@
 // pagor register --correspondences FILE: the back end on any matcher's correspondences, through
 // the Pipeline (set_matches). Graph -> clique -> pose per level; with clouds also verification,
 // refinement and acceptance, and with --fuse the clouds' landmark correspondences beside the
-// matcher's in one pyramid (correspondences.fuse_matches), counted per origin; with --ground-truth the errors per level and of the selection; with
-// ground-truth inlier flags in the file each level's precision and recall. The JSON result is
-// the main report (pagor.register/1) with the file's details under `correspondences`.
+// matcher's in one pyramid (correspondences.fuse_matches), counted per origin; with --ground-truth
+// the errors per level and of the selection; with ground-truth inlier flags in the file each
+// level's precision and recall. The JSON result is the main report (pagor.register/1) with the
+// file's details under `correspondences`.
 
 #include <cmath>
 #include <cstdio>
@@ -40,8 +41,8 @@ void print_origins(const Pipeline& p, const std::optional<Diagnosis>& diagnosis)
               all.matcher);
   const int sel = p.selected_level();
   if (sel < 0) return;
-  const OriginCounts clique =
-      count_by_origin(p.correspondences().items, p.cliques()[static_cast<std::size_t>(sel)].vertices);
+  const OriginCounts clique = count_by_origin(p.correspondences().items,
+                                              p.cliques()[static_cast<std::size_t>(sel)].vertices);
   std::printf("selected clique by origin: landmark %zu, matcher %zu", clique.landmark,
               clique.matcher);
   if (diagnosis && sel < static_cast<int>(diagnosis->levels.size())) {
@@ -68,7 +69,8 @@ void print_levels(const Pipeline& p, const CorrespondenceFile& input) {
                 g.active_vertices(static_cast<int>(l)), g.edges_at_level[l],
                 p.cliques()[l].vertices.size(), p.poses()[l].inliers.size());
     if (flags) {
-      const InlierQuality q = inlier_quality(file_indices(p, p.cliques()[l].vertices), input.inlier);
+      const InlierQuality q =
+          inlier_quality(file_indices(p, p.cliques()[l].vertices), input.inlier);
       std::printf(" %9.3f %7.3f", q.precision, q.recall);
     }
     if (scored) {
@@ -132,7 +134,8 @@ json report_json(const Pipeline& p, const CorrespondenceFile& input, const std::
   c["flagged_inliers"] = input.inlier.empty() ? json() : json(flagged);
   if (!input.inlier.empty())
     for (std::size_t l = 0; l < p.cliques().size(); ++l) {
-      const InlierQuality q = inlier_quality(file_indices(p, p.cliques()[l].vertices), input.inlier);
+      const InlierQuality q =
+          inlier_quality(file_indices(p, p.cliques()[l].vertices), input.inlier);
       json& level = report["levels"][l];
       level["precision"] = q.precision;
       level["recall"] = q.recall;
@@ -147,8 +150,9 @@ json report_json(const Pipeline& p, const CorrespondenceFile& input, const std::
 int run_register_correspondences(const Args& args, Config config) {
   if (args.has("fuse")) {
     if (!pair_source_from_args(args))
-      throw UsageError("--fuse needs the clouds (--source S --target T or --kitti-root DIR --pair "
-                       "S T): their landmarks join the matcher's correspondences");
+      throw UsageError(
+          "--fuse needs the clouds (--source S --target T or --kitti-root DIR --pair "
+          "S T): their landmarks join the matcher's correspondences");
     config.correspondences.fuse_matches = true;
   }
   const std::string file = args.get("correspondences");

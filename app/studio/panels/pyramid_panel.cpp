@@ -171,9 +171,10 @@ void origin_line(const Snapshot& s, int shown) {
   }
   const OriginCounts clique =
       count_by_origin(s.correspondences, s.levels[static_cast<std::size_t>(shown)].clique);
-  ImGui::TextDisabled("by origin: landmark %zu, matcher %zu; level %d clique: landmark %zu, "
-                      "matcher %zu",
-                      all.landmark, all.matcher, shown, clique.landmark, clique.matcher);
+  ImGui::TextDisabled(
+      "by origin: landmark %zu, matcher %zu; level %d clique: landmark %zu, "
+      "matcher %zu",
+      all.landmark, all.matcher, shown, clique.landmark, clique.matcher);
 }
 
 }  // namespace

@@ -77,7 +77,7 @@ struct LevelDiagnosis {
   std::size_t clique_true = 0;  ///< clique members that are true
   double precision = 0.0;       ///< clique_true / clique_size (0 for an empty clique)
   double recall = 0.0;          ///< clique_true / consistent_true, at most 1 (1 when none exist)
-  OriginCounts clique_origin;       ///< clique members by origin (landmark, matcher)
+  OriginCounts clique_origin;   ///< clique members by origin (landmark, matcher)
   OriginCounts clique_true_origin;  ///< true clique members by origin
   bool pose_valid = false;
   std::size_t gnc_inliers = 0;       ///< GNC inliers of the level's pose
@@ -146,7 +146,8 @@ std::vector<float> point_contributions(const Verifier& verifier, const Transform
 
 /// The diagnosis as one JSON object (the `diagnosis` field of pagor.register/1): verdict,
 /// explanation, at_fault_level, residual_tolerance_m, true_correspondences, best_achievable,
-/// classes[], levels[] (each with origin {landmark, matcher: {clique, clique_true}}), verification {gt_score_D, candidates_D[], selected, score_misled}.
+/// classes[], levels[] (each with origin {landmark, matcher: {clique, clique_true}}), verification
+/// {gt_score_D, candidates_D[], selected, score_misled}.
 std::string diagnosis_json(const Diagnosis& diagnosis, int indent = -1);
 
 }  // namespace pagor
