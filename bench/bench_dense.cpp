@@ -63,7 +63,7 @@ SolverRun run_solver(const Problem& pr, const Config& config, int reps) {
                  ? first.median()
                  : measure([&] { r.cliques = solve_pyramid(g, config.clique); }, reps).median();
   r.gnc = measure([&] { r.poses = poses_of(pr, r.cliques, config.gnc); }, reps).median();
-  r.selected = select_without_clouds(r.poses).selected;
+  r.selected = select_without_clouds(r.poses, pr.items, config.gnc.noise_bound).selected;
   if (r.selected >= 0)
     r.error = pose_error(r.poses[static_cast<std::size_t>(r.selected)].T_target_source, pr.T_gt,
                          config.evaluation);

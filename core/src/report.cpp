@@ -40,6 +40,20 @@ json refinement_json(const Pipeline& p) {
   return j;
 }
 
+// The configured pose model and, for `auto` with clouds, the scans' ground planes that decided it.
+json gravity_json(const Pipeline& p) {
+  json j = {{"configured", to_string(p.config().gnc.model)},
+            {"used", to_string(p.gnc_params().model)}};
+  if (const auto& g = p.ground_planes()) {
+    const auto plane = [](const GroundPlane& x) {
+      return json{{"found", x.found}, {"tilt_deg", x.tilt_deg}, {"share", x.share}};
+    };
+    j["source_ground"] = plane(g->first);
+    j["target_ground"] = plane(g->second);
+  }
+  return j;
+}
+
 }  // namespace
 
 std::string registration_report_json(const Pipeline& p, const std::string& source_name,
@@ -60,10 +74,17 @@ std::string registration_report_json(const Pipeline& p, const std::string& sourc
                   {"clique_gradient_steps", c.gradient_steps},
                   {"clique_penalty_updates", c.penalty_updates},
                   {"pose_valid", pose.valid},
+                  {"pose_model", to_string(pose.model)},
                   {"inliers", pose.inliers.size()},
                   {"T_target_source", pose.valid ? matrix_json(pose.T_target_source) : json()},
                   {"score_D", std::isfinite(D) ? json(D) : json()}};
     if (!pose.valid) level["failure"] = pose.failure;
+    const VerificationResult& v = p.verification();
+    if (l < v.support.size()) {  // selected without clouds
+      level["support"] = v.support[l];
+      level["support_score"] =
+          std::isfinite(v.support_scores[l]) ? json(v.support_scores[l]) : json();
+    }
     if (l < p.level_errors().size() && p.level_errors()[l]) {
       const auto& e = *p.level_errors()[l];
       level["translation_error_m"] = e.translation;
@@ -111,6 +132,7 @@ std::string registration_report_json(const Pipeline& p, const std::string& sourc
       {"selected_level", p.selected_level() >= 0 ? json(p.selected_level()) : json()},
       {"levels", levels},
       {"selected_by", p.has_clouds() ? "score_D" : "without_clouds"},
+      {"pose_model", gravity_json(p)},
       {"acceptance",
        {{"accepted", p.acceptance().accepted},
         {"verified", p.acceptance().verified},

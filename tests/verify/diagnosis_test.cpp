@@ -7,9 +7,9 @@
 #include <nlohmann/json.hpp>
 #include <random>
 
-#include "pagor/verify/diagnosis.hpp"
 #include "pagor/pipeline.hpp"
 #include "pagor/sets/synthetic.hpp"
+#include "pagor/verify/diagnosis.hpp"
 #include "util/random_draw.hpp"
 
 using namespace pagor;
@@ -173,8 +173,11 @@ TEST_CASE("diagnosis: a planted repetitive structure makes the clique miss the t
 }
 
 TEST_CASE("diagnosis: a pose model that cannot hold the truth is wrong from a right clique") {
-  // The target sensor is rolled by 12 deg; a 4-DoF pose keeps roll at 0.
-  const auto d = run(shared_scene(3), pose(30, 12, {5, 2, 0}));
+  // The target sensor is rolled by 12 deg; a 4-DoF pose keeps roll at 0. (The default model,
+  // auto, sees the scene is not level and fits SE(3): there the pair succeeds.)
+  Config four_dof = default_config();
+  four_dof.gnc.model = PoseModel::four_dof;
+  const auto d = run(shared_scene(3), pose(30, 12, {5, 2, 0}), four_dof);
   REQUIRE(d);
   CHECK(d->verdict == DiagnosisVerdict::pose_wrong);
   REQUIRE(d->at_fault_level >= 0);
@@ -182,6 +185,9 @@ TEST_CASE("diagnosis: a pose model that cannot hold the truth is wrong from a ri
   CHECK(l.precision >= 0.5);
   REQUIRE(l.error);
   CHECK(l.error->rotation_deg > 5.0);
+  const auto automatic = run(shared_scene(3), pose(30, 12, {5, 2, 0}));
+  REQUIRE(automatic);
+  CHECK(automatic->verdict == DiagnosisVerdict::success);
 }
 
 TEST_CASE("diagnosis: a verification trap picks a wrong candidate although one was right") {
