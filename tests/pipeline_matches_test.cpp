@@ -86,6 +86,40 @@ TEST_CASE("a matcher's correspondences register without clouds, with the default
   CHECK(d->verdict == DiagnosisVerdict::success);
 }
 
+TEST_CASE("the exact solver's proof, bound and budget reach the report") {
+  const AssociationProblem problem = dense_problem();
+  Config config = default_config();
+  config.clique.solver = CliqueSolver::exact;
+  Pipeline p(config);
+  p.set_matches(problem.correspondences);
+  p.run();
+  for (const CliqueResult& c : p.cliques()) {
+    CHECK(is_clique(p.graph(), c.level, c.vertices));
+    CHECK(c.optimal);  // a planted clique of 100 among random points: proven at once
+    CHECK(c.upper_bound == static_cast<int>(c.vertices.size()));
+    CHECK(c.budget == CliqueBudget::none);
+  }
+  std::string report = registration_report_json(p, "matches", "matches");
+  CHECK(report.find("\"clique_proven\": true") != std::string::npos);
+  CHECK(report.find("\"clique_budget_hit\": \"none\"") != std::string::npos);
+  // A budget of one node: a level that the colouring bound does not prove at once stops, and says
+  // so.
+  config.clique.exact_max_nodes = 1;
+  p.set_config(config);
+  p.run();
+  int stopped = 0;
+  for (const CliqueResult& c : p.cliques()) {
+    CHECK(is_clique(p.graph(), c.level, c.vertices));
+    CHECK(c.upper_bound >= static_cast<int>(c.vertices.size()));
+    if (!c.optimal) {
+      CHECK(c.budget == CliqueBudget::nodes);
+      ++stopped;
+    }
+  }
+  report = registration_report_json(p, "matches", "matches");
+  CHECK((stopped == 0) == (report.find("\"clique_budget_hit\": \"nodes\"") == std::string::npos));
+}
+
 TEST_CASE("negative matcher ids become their positions; shared ids are never consistent") {
   std::vector<Correspondence> m(4);
   const Eigen::Vector3d t(1, 2, 3);

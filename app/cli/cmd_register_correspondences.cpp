@@ -59,6 +59,7 @@ void print_levels(const Pipeline& p, const CorrespondenceFile& input) {
     }
     std::printf("\n");
   }
+  print_clique_search(p);
   std::printf("  (* selected: %s)\n",
               scored ? "lowest D on the clouds"
                      : "lowest S = sum of min(residual, noise bound) over all correspondences; "
