@@ -77,7 +77,11 @@ std::string sizes_true(const std::vector<CliqueResult>& cliques, const std::vect
     std::size_t hit = 0;
     for (int v : c.vertices) hit += inlier[static_cast<std::size_t>(v)] != 0;
     out += (out.empty() ? "" : ",") + std::to_string(c.vertices.size()) + "/" +
-           std::to_string(hit) + (c.optimal ? "" : "?");
+           std::to_string(hit) + (c.optimal ? "" : "?") +
+           (c.start == CliqueStart::fallback ? "c" : "") +
+           (c.budget == CliqueBudget::none    ? ""
+            : c.budget == CliqueBudget::nodes ? "n"
+                                              : "t");
   }
   return out;
 }
@@ -166,7 +170,8 @@ void bench_dense(const Options& o) {
   std::printf(
       "\n## 10. Dense problems, default configuration, back end only (graph + clique + GNC per "
       "level, selection without clouds), 1 thread; sizes as clique/true members, ? = not proven "
-      "maximum\n");
+      "maximum, c = the warm start lost to the cold one, n/t = a node/time budget stopped the "
+      "search\n");
   const std::vector<Problem> gedi = gedi_problems(o.gedi_root);
   if (gedi.empty())
     std::printf("(no gedi-dev problems under %s)\n", o.gedi_root.c_str());

@@ -235,4 +235,31 @@ TEST_CASE("gedi-dev: a learned matcher's correspondences of real KITTI pairs, al
     if (n == 8) CHECK(p.selected_level() <= 1);
   }
 }
+
+TEST_CASE("gedi-dev: a warm start that loses to the cold one falls back to it, and says so") {
+  // Pair 03, level 2: the warm start settles on 66 where the cold one finds 68.
+  const CorrespondenceFile input =
+      read_correspondence_file(std::string(PAGOR_GEDI_DIR) + "/03.txt");
+  const Config config = default_config();
+  const PyramidGraph g = build_pyramid_graph(input.items, config.graph, 1);
+  CliqueParams cp = config.clique;
+  cp.cascade_check_nodes = 0;  // the fallback alone
+  const auto cascaded = solve_pyramid(g, cp);
+  cp.solver = CliqueSolver::independent;
+  const auto independent = solve_pyramid(g, cp);
+  int fallbacks = 0;
+  for (std::size_t l = 0; l < cascaded.size(); ++l) {
+    INFO("level " << l);
+    CHECK(is_clique(g, static_cast<int>(l), cascaded[l].vertices));
+    CHECK(cascaded[l].vertices.size() >= independent[l].vertices.size());
+    CHECK(cascaded[l].start == (l == 0                                       ? CliqueStart::cold
+                                : cascaded[l].start == CliqueStart::fallback ? CliqueStart::fallback
+                                                                             : CliqueStart::warm));
+    if (cascaded[l].start == CliqueStart::fallback) {
+      ++fallbacks;
+      CHECK(cascaded[l].vertices == independent[l].vertices);  // the cold start's clique
+    }
+  }
+  CHECK(fallbacks > 0);
+}
 #endif

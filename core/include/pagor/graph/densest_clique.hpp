@@ -88,6 +88,9 @@ struct CliqueParams {
   double exact_time_budget_ms = 1000.0;
   int greedy_starts = 4;  ///< greedy cliques grown from the highest cores for the lower bound
   int max_swaps = 64;     ///< improving swaps (one member out, two in) tried on the rounded clique
+  /// cascaded: a warm-started level whose clique a colouring does not prove maximum is also solved
+  /// from the cold start (as the independent solver does); the larger clique is kept
+  bool cascade_fallback = true;
   /// cascaded: node budget of the exact search for a larger clique that ends each warm-started
   /// level (a warm start can settle in a worse local optimum than a cold one); 0: no search
   long cascade_check_nodes = 200000;
@@ -143,6 +146,10 @@ struct CliqueParams {
     v(&CliqueParams::max_swaps,
       {"max_swaps", "Improving swaps (one member out, two in) tried on the rounded clique.", "",
        Range::closed(0, 100000)});
+    v(&CliqueParams::cascade_fallback,
+      {"cascade_fallback",
+       "Cascaded: a warm-started level whose clique a colouring does not prove maximum is also "
+       "solved from the cold start; the larger clique is kept (start 'fallback' when it wins)."});
     v(&CliqueParams::cascade_check_nodes,
       {"cascade_check_nodes",
        "Cascaded: node budget of the exact search for a larger clique that ends each "
