@@ -116,36 +116,26 @@ CliqueResult solve_clipper(const PyramidGraph& g, int level, const std::vector<d
   CliqueResult r = relax_level(g, level, u0, p, known_clique, d0);
   const bool warm = p.prune && !known_clique.empty() && g.vertices > 0;
   // A warm start can settle in a worse local optimum than a cold one (KITTI 20 -> 30, level 2:
-  // 29 against 30; gedi-dev 03, level 2: 66 against 68). Unless a colouring of the core proves
-  // the warm clique maximum, the level is also solved from the cold start, exactly as the
+  // 29 against 30; gedi-dev 03, level 2: 66 against 68). A warm level therefore ends with a
+  // bounded exact search for a larger clique (cheap here: the clique found prunes every vertex
+  // whose core number is below its size; a greedy colouring may prove it maximum at once). Unless
+  // that proves the clique maximum, the level is also solved from the cold start, exactly as the
   // independent solver does, and the larger clique is kept: the cascade never loses to it.
   if (warm && !r.optimal) {
-    bool proven = false;
-    int bound = 0;
-    detail::larger_clique(g, level, r.vertices, 0, proven, &bound);  // no search: colouring only
-    if (proven) {
-      r.optimal = true;
-      r.upper_bound = static_cast<int>(r.vertices.size());
-    } else if (p.cascade_fallback) {
+    r.vertices = detail::larger_clique(g, level, std::move(r.vertices), p.cascade_check_nodes,
+                                       r.optimal, &r.upper_bound);  // 0 nodes: colouring only
+    if (!r.optimal && p.cascade_check_nodes > 0) r.budget = CliqueBudget::nodes;
+    if (!r.optimal && p.cascade_fallback) {
       CliqueResult cold = relax_level(g, level, random_start(g.vertices, p.seed), p, {}, 0.0);
-      cold.gradient_steps += r.gradient_steps;
-      cold.penalty_updates += r.penalty_updates;
+      r.gradient_steps += cold.gradient_steps;
+      r.penalty_updates += cold.penalty_updates;
       if (cold.vertices.size() > r.vertices.size()) {
-        cold.start = CliqueStart::fallback;
-        r = std::move(cold);
-      } else {
-        r.gradient_steps = cold.gradient_steps;
-        r.penalty_updates = cold.penalty_updates;
+        r.vertices = std::move(cold.vertices);
+        r.u = std::move(cold.u);  // the next level starts from where the cold start ended
+        r.penalty = cold.penalty;
+        r.start = CliqueStart::fallback;
       }
     }
-  }
-  // Then a bounded exact search for a larger clique: cheap here, as the clique found prunes every
-  // vertex whose core number is below its size. Within the budget the clique is maximum.
-  if (warm && !r.optimal && p.cascade_check_nodes > 0) {
-    // a budget hit keeps the best clique found
-    r.vertices = detail::larger_clique(g, level, std::move(r.vertices), p.cascade_check_nodes,
-                                       r.optimal, &r.upper_bound);
-    if (!r.optimal) r.budget = CliqueBudget::nodes;
   }
   r.time_ms = ms_since(t0);
   return r;

@@ -88,8 +88,9 @@ struct CliqueParams {
   double exact_time_budget_ms = 1000.0;
   int greedy_starts = 4;  ///< greedy cliques grown from the highest cores for the lower bound
   int max_swaps = 64;     ///< improving swaps (one member out, two in) tried on the rounded clique
-  /// cascaded: a warm-started level whose clique a colouring does not prove maximum is also solved
-  /// from the cold start (as the independent solver does); the larger clique is kept
+  /// cascaded: a warm-started level whose clique its check (a colouring, then the search of
+  /// cascade_check_nodes) does not prove maximum is also solved from the cold start (as the
+  /// independent solver does); the larger clique is kept
   bool cascade_fallback = true;
   /// cascaded: node budget of the exact search for a larger clique that ends each warm-started
   /// level (a warm start can settle in a worse local optimum than a cold one); 0: no search
@@ -148,8 +149,9 @@ struct CliqueParams {
        Range::closed(0, 100000)});
     v(&CliqueParams::cascade_fallback,
       {"cascade_fallback",
-       "Cascaded: a warm-started level whose clique a colouring does not prove maximum is also "
-       "solved from the cold start; the larger clique is kept (start 'fallback' when it wins)."});
+       "Cascaded: a warm-started level whose clique its check (a colouring, then the search of "
+       "cascade_check_nodes) does not prove maximum is also solved from the cold start; the "
+       "larger clique is kept (start 'fallback' when it wins)."});
     v(&CliqueParams::cascade_check_nodes,
       {"cascade_check_nodes",
        "Cascaded: node budget of the exact search for a larger clique that ends each "
