@@ -9,6 +9,7 @@ namespace pagor::bench {
 struct Options {
   std::string kitti_root;   ///< KITTI root holding sequences/00
   std::string semreg_root;  ///< semreg-dev: NN/source.pcd and NN/target.pcd
+  std::string gedi_root;    ///< gedi-dev: NN.txt (correspondences) and NN.T.txt
   std::string write_dir;    ///< association problems are written here when set
   int reps = 15;            ///< measured runs per figure (medians)
 };
@@ -22,5 +23,6 @@ void bench_studio(const Options& o);         ///< 6. studio re-run latency
 void bench_association(const Options& o);    ///< 7. issue 11's association problems
 void bench_cascade_kitti(const Options& o);  ///< 8. cascade on the KITTI pairs' graphs
 void bench_front(const Options& o);          ///< 9. landmarks and correspondences per class
+void bench_dense(const Options& o);          ///< 10. dense real and generated problems
 
 }  // namespace pagor::bench

@@ -103,7 +103,7 @@ TEST_CASE("the paper preset is the published configuration, and a document can s
   CHECK(paper.verification.mu == 1.0);
   CHECK_FALSE(paper.landmarks.adapt_to_spacing);
   CHECK(paper.landmarks.fallback.mode == FallbackMode::never);
-  CHECK(preset_config("default").gnc.model == PoseModel::four_dof);
+  CHECK(preset_config("default").gnc.model == PoseModel::automatic);
 
   const Config c = parse_config(R"({"preset": "paper", "gnc": {"noise_bound": 0.5}})");
   CHECK(c.gnc.model == PoseModel::se3);

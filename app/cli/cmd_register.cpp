@@ -76,6 +76,7 @@ void print_registration(const Pipeline& p) {
     }
     std::printf("\n");
   }
+  print_clique_search(p);
   std::printf("  (* selected: lowest D; D = sum of min(distance, %.2f m) over %zu source points)\n",
               p.config().verification.mu, p.verifier() ? p.verifier()->source_points().size() : 0u);
 

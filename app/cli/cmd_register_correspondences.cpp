@@ -59,7 +59,10 @@ void print_levels(const Pipeline& p, const CorrespondenceFile& input) {
   std::printf("\n  %-5s %-8s %8s %9s %7s %8s", "level", "epsilon", "vertices", "edges", "clique",
               "inliers");
   if (flags) std::printf(" %9s %7s", "precision", "recall");
-  if (scored) std::printf(" %13s", "score D [m]");
+  if (scored)
+    std::printf(" %13s", "score D [m]");
+  else
+    std::printf(" %8s %10s", "support", "S [m]");
   if (gt) std::printf(" %10s %11s %4s", "t err [m]", "r err [deg]", "ok");
   std::printf("\n");
   const PyramidGraph& g = p.graph();
@@ -73,21 +76,27 @@ void print_levels(const Pipeline& p, const CorrespondenceFile& input) {
           inlier_quality(file_indices(p, p.cliques()[l].vertices), input.inlier);
       std::printf(" %9.3f %7.3f", q.precision, q.recall);
     }
-    if (scored) {
-      const double D = p.verification().scores[l];
-      if (std::isfinite(D))
-        std::printf(" %13.1f", D);
-      else
-        std::printf(" %13s", "invalid");
-    }
+    const VerificationResult& v = p.verification();
+    const double D = scored ? v.scores[l] : v.support_scores[l];
+    if (scored && std::isfinite(D))
+      std::printf(" %13.1f", D);
+    else if (scored)
+      std::printf(" %13s", "invalid");
+    else if (std::isfinite(D))
+      std::printf(" %8d %10.1f", v.support[l], D);
+    else
+      std::printf(" %8s %10s", "-", "invalid");
     if (gt && l < p.level_errors().size() && p.level_errors()[l]) {
       const PoseError& e = *p.level_errors()[l];
       std::printf(" %10.2f %11.2f %4s", e.translation, e.rotation_deg, e.success ? "yes" : "no");
     }
     std::printf("\n");
   }
+  print_clique_search(p);
   std::printf("  (* selected: %s)\n",
-              scored ? "lowest D on the clouds" : "without clouds (no D to verify on)");
+              scored ? "lowest D on the clouds"
+                     : "lowest S = sum of min(residual, noise bound) over all correspondences; "
+                       "support: those within the bound (no clouds to verify on)");
 }
 
 void print_outcome(const Pipeline& p) {

@@ -9,6 +9,7 @@
 #include "common/args.hpp"
 #include "common/pair_args.hpp"
 #include "pagor/config.hpp"
+#include "pagor/pipeline.hpp"
 #include "pagor/sets/dataset.hpp"
 #include "pagor/sets/pair_set.hpp"
 
@@ -61,6 +62,10 @@ LoadedCloud load_single_cloud(const Args& args, std::string& name);
 /// with the configuration's file in front (or "built-in defaults"), so the message names both
 /// the file and the key.
 void with_config_origin(const Args& args, const std::function<void()>& stage);
+
+/// Prints one line per level whose clique search says more than its size: a proof of maximality
+/// (exact solver), or a budget that cut the search short, with the bound it reached.
+void print_clique_search(const Pipeline& p);
 
 /// Prints a warning line on stderr.
 void warn(const std::string& message);

@@ -1,10 +1,11 @@
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 
 #include "command.hpp"
-#include "pagor/io/atomic_file.hpp"
 #include "pagor/errors.hpp"
+#include "pagor/io/atomic_file.hpp"
 #include "pagor/io/kitti.hpp"
 #include "pagor/sets/synthetic.hpp"
 
@@ -58,6 +59,20 @@ void with_config_origin(const Args& args, const std::function<void()>& stage) {
   } catch (const ConfigError& e) {
     throw ConfigError((args.has("config") ? args.get("config") : "built-in defaults") + ": " +
                       e.what());
+  }
+}
+
+void print_clique_search(const Pipeline& p) {
+  const bool exact = p.config().clique.solver == CliqueSolver::exact;
+  for (const CliqueResult& c : p.cliques()) {
+    if (c.budget != CliqueBudget::none)
+      std::printf("  level %d: clique search stopped by its %s budget: %zu members, at most %d\n",
+                  c.level, c.budget == CliqueBudget::nodes ? "node" : "time", c.vertices.size(),
+                  c.upper_bound);
+    else if (exact && c.optimal)
+      std::printf("  level %d: clique of %zu proven maximum\n", c.level, c.vertices.size());
+    if (c.start == CliqueStart::fallback)
+      std::printf("  level %d: the warm start lost to a cold one and was dropped\n", c.level);
   }
 }
 

@@ -154,9 +154,14 @@ int run_headless(const cli::Args& args, AppState state) {
   if (studio.state().bench.open) studio.open_benchmark_now();
   const double timeout =
       args.has("timeout") ? cli::parse_int(args.get("timeout"), "--timeout") : 600;
-  // Wait for the pipeline, with a progress line on stderr.
+  // Wait for the pipeline, with a progress line on stderr, never past the timeout.
   const auto t0 = std::chrono::steady_clock::now();
-  while (!studio.worker().wait_idle(0.5)) {
+  const auto wait = [&] {
+    const double left =
+        timeout - std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return std::clamp(left, 0.0, 0.5);
+  };
+  while (!studio.worker().wait_idle(wait())) {
     const WorkerStatus st = studio.worker().status();
     std::fprintf(stderr, "\r%-60s",
                  (st.activity + " " + std::to_string(int(st.fraction * 100)) + " %").c_str());
@@ -164,7 +169,7 @@ int run_headless(const cli::Args& args, AppState state) {
       give_up("the computation did not finish within " + std::to_string(int(timeout)) +
               " s (--timeout)");
   }
-  while (!studio.bench().wait_idle(0.5)) {  // the benchmark view's pairs, when one is open
+  while (!studio.bench().wait_idle(wait())) {  // the benchmark view's pairs, when one is open
     const BenchStatus st = studio.bench().status();
     std::fprintf(stderr, "\rbenchmark: %d / %d pairs%-30s", st.done, st.total, "");
     if (std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() > timeout)

@@ -47,7 +47,7 @@ Config default_config() {
   building.normal_radius = 1.2;
   building.feature_radius = 3.0;
   c.landmarks.classes = {car, trunk, pole, sign, building};
-  c.gnc.model = PoseModel::four_dof;
+  c.gnc.model = PoseModel::automatic;
   return c;
 }
 

@@ -60,6 +60,7 @@ void Pipeline::set_input(PointCloud source, PointCloud target,
   target_ = std::move(target);
   input_scheme_ = std::move(label_scheme);
   has_clouds_ = true;
+  ground_.reset();
   mark_stale(Stage::landmarks);
   mark_stale(Stage::verification_prep);
 }
@@ -210,30 +211,19 @@ void Pipeline::run_stage(Stage stage) {
     case Stage::clique:
       cliques_ = solve_pyramid(graph_, config_.clique);
       break;
-    case Stage::gnc: {
-      poses_.clear();
-      for (const CliqueResult& c : cliques_) {
-        std::vector<Eigen::Vector3d> p, q;
-        for (int v : c.vertices) {
-          p.push_back(correspondences_.items[static_cast<std::size_t>(v)].p);
-          q.push_back(correspondences_.items[static_cast<std::size_t>(v)].q);
-        }
-        PoseEstimate e = estimate_pose_gnc(p, q, config_.gnc);
-        for (int& i : e.inliers)
-          i = c.vertices[static_cast<std::size_t>(i)];  // -> correspondence ids
-        poses_.push_back(std::move(e));
-      }
+    case Stage::gnc:
+      run_gnc();
       break;
-    }
     case Stage::verification_prep:
       refiner_.reset();  // it refers to the verifier
       verifier_.reset();
       if (has_clouds_) verifier_.emplace(source_, target_, config_.verification.voxel_size);
       break;
     case Stage::verification:
-      verification_ = verifier_
-                          ? verify_candidates(*verifier_, poses_, config_.verification, threads_)
-                          : select_without_clouds(poses_);
+      verification_ =
+          verifier_
+              ? verify_candidates(*verifier_, poses_, config_.verification, threads_)
+              : select_without_clouds(poses_, correspondences_.items, config_.gnc.noise_bound);
       break;
     case Stage::refinement:
       run_refinement();
@@ -279,6 +269,31 @@ void Pipeline::warn_if_numberings_differ() {
                                        "' (each cloud is read in its own)");
 }
 
+GncParams Pipeline::gnc_params() const {
+  GncParams p = config_.gnc;
+  if (p.model == PoseModel::automatic && ground_ &&
+      gravity_aligned(ground_->first, ground_->second, p.level_tolerance))
+    p.model = PoseModel::four_dof;
+  return p;
+}
+
+void Pipeline::run_gnc() {
+  if (config_.gnc.model == PoseModel::automatic && has_clouds_ && !ground_)
+    ground_.emplace(ground_plane(source_), ground_plane(target_));
+  const GncParams params = gnc_params();
+  poses_.clear();
+  for (const CliqueResult& c : cliques_) {
+    std::vector<Eigen::Vector3d> p, q;
+    for (int v : c.vertices) {
+      p.push_back(correspondences_.items[static_cast<std::size_t>(v)].p);
+      q.push_back(correspondences_.items[static_cast<std::size_t>(v)].q);
+    }
+    PoseEstimate e = estimate_pose_gnc(p, q, params);
+    for (int& i : e.inliers) i = c.vertices[static_cast<std::size_t>(i)];  // -> correspondence ids
+    poses_.push_back(std::move(e));
+  }
+}
+
 void Pipeline::run_refinement() {
   refinement_ = RefinementResult{};
   const RefinementParams& params = config_.refinement;
@@ -286,8 +301,9 @@ void Pipeline::run_refinement() {
   if (!refiner_ || refiner_->normal_radius() != params.normal_radius)
     refiner_.emplace(*verifier_, params.normal_radius);
   const auto sel = static_cast<std::size_t>(verification_.selected);
+  // The model the selected pose was fitted in (with `automatic`, the one GNC kept).
   refinement_ = refiner_->refine(poses_[sel].T_target_source, verification_.scores[sel],
-                                 config_.gnc.model, params, config_.verification, threads_);
+                                 poses_[sel].model, params, config_.verification, threads_);
 }
 
 void Pipeline::judge_acceptance() {
@@ -301,9 +317,12 @@ void Pipeline::judge_acceptance() {
                                                     : "nothing to verify on: no clouds were given";
     return;
   }
+  const PoseModel model = verification_.selected >= 0
+                              ? poses_[static_cast<std::size_t>(verification_.selected)].model
+                              : config_.gnc.model;
   if (!refinement_.applied) {
     acceptance_ = judge_selection(*verifier_, poses_, verification_, config_.verification,
-                                  config_.evaluation, config_.acceptance, config_.gnc.model);
+                                  config_.evaluation, config_.acceptance, model);
     return;
   }
   // Judge the pose the user gets: the refined one, with its own D.
@@ -314,7 +333,7 @@ void Pipeline::judge_acceptance() {
   verification.scores[sel] = refinement_.score_after;
   verification.selected_distances = refinement_.distances_after;
   acceptance_ = judge_selection(*verifier_, candidates, verification, config_.verification,
-                                config_.evaluation, config_.acceptance, config_.gnc.model);
+                                config_.evaluation, config_.acceptance, model);
 }
 
 std::optional<Transform> Pipeline::selected_transform() const {

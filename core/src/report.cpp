@@ -71,6 +71,20 @@ json origin_json(const Pipeline& p) {
           {"matcher", one(all.matcher, clique.matcher, inliers.matcher)}};
 }
 
+// The configured pose model and, for `auto` with clouds, the scans' ground planes that decided it.
+json gravity_json(const Pipeline& p) {
+  json j = {{"configured", to_string(p.config().gnc.model)},
+            {"used", to_string(p.gnc_params().model)}};
+  if (const auto& g = p.ground_planes()) {
+    const auto plane = [](const GroundPlane& x) {
+      return json{{"found", x.found}, {"tilt_deg", x.tilt_deg}, {"share", x.share}};
+    };
+    j["source_ground"] = plane(g->first);
+    j["target_ground"] = plane(g->second);
+  }
+  return j;
+}
+
 json report_object(const Pipeline& p, const std::string& source_name,
                    const std::string& target_name) {
   // Poses as the user's files have them (the pipeline's are between the clouds' own frames).
@@ -92,11 +106,22 @@ json report_object(const Pipeline& p, const std::string& source_name,
                   {"clique_time_ms", c.time_ms},
                   {"clique_gradient_steps", c.gradient_steps},
                   {"clique_penalty_updates", c.penalty_updates},
+                  {"clique_proven", c.optimal},
+                  {"clique_upper_bound", c.upper_bound > 0 ? json(c.upper_bound) : json()},
+                  {"clique_budget_hit", to_string(c.budget)},
+                  {"clique_start", to_string(c.start)},
                   {"pose_valid", pose.valid},
+                  {"pose_model", to_string(pose.model)},
                   {"inliers", pose.inliers.size()},
                   {"T_target_source", pose.valid ? pose_json(pose.T_target_source) : json()},
                   {"score_D", std::isfinite(D) ? json(D) : json()}};
     if (!pose.valid) level["failure"] = pose.failure;
+    const VerificationResult& v = p.verification();
+    if (l < v.support.size()) {  // selected without clouds
+      level["support"] = v.support[l];
+      level["support_score"] =
+          std::isfinite(v.support_scores[l]) ? json(v.support_scores[l]) : json();
+    }
     if (l < p.level_errors().size() && p.level_errors()[l]) {
       const auto& e = *p.level_errors()[l];
       level["translation_error_m"] = e.translation;
@@ -144,6 +169,7 @@ json report_object(const Pipeline& p, const std::string& source_name,
       {"selected_level", p.selected_level() >= 0 ? json(p.selected_level()) : json()},
       {"levels", levels},
       {"selected_by", p.has_clouds() ? "score_D" : "without_clouds"},
+      {"pose_model", gravity_json(p)},
       {"acceptance",
        {{"accepted", p.acceptance().accepted},
         {"verified", p.acceptance().verified},

@@ -5,11 +5,11 @@
 #include <random>
 #include <set>
 
-#include "support/clique_reference.hpp"
 #include "pagor/graph/densest_clique.hpp"
+#include "pagor/graph/pyramid_graph.hpp"
 #include "pagor/io/kitti.hpp"
 #include "pagor/pipeline.hpp"
-#include "pagor/graph/pyramid_graph.hpp"
+#include "support/clique_reference.hpp"
 #include "util/random_draw.hpp"
 
 using namespace pagor;
@@ -32,9 +32,8 @@ std::vector<Correspondence> planted(int inliers, int outliers, double sigma, std
     x.source = x.target = id++;
     x.p = draw3(coord, rng);
     x.p.z() /= 8;
-    x.q = k < inliers
-              ? Eigen::Vector3d(R * x.p + t + draw3(noise, rng))
-              : Eigen::Vector3d(draw3(coord, rng).cwiseQuotient(Eigen::Vector3d(1, 1, 8)));
+    x.q = k < inliers ? Eigen::Vector3d(R * x.p + t + draw3(noise, rng))
+                      : Eigen::Vector3d(draw3(coord, rng).cwiseQuotient(Eigen::Vector3d(1, 1, 8)));
     c.push_back(x);
   }
   std::shuffle(c.begin(), c.end(), rng);  // inliers anywhere in the list
@@ -218,8 +217,10 @@ TEST_CASE("the cascade never returns a smaller clique than the independent solve
 // at least what the independent solves find, level by level (scenes where the upper levels need
 // the relaxation, unlike the association problems above).
 TEST_CASE("the cascade is never smaller than the independent solves, level by level") {
-  const auto check = [](const PyramidGraph& g, const std::string& what) {
+  const long check_nodes = GENERATE(0L, 200000L);  // the cold fallback alone, and with the check
+  const auto check = [check_nodes](const PyramidGraph& g, const std::string& what) {
     CliqueParams cp;
+    cp.cascade_check_nodes = check_nodes;
     const auto warm = solve_pyramid(g, cp);
     cp.solver = CliqueSolver::independent;
     const auto cold = solve_pyramid(g, cp);
@@ -228,6 +229,7 @@ TEST_CASE("the cascade is never smaller than the independent solves, level by le
                 << cold[l].vertices.size() << " independent");
       CHECK(is_clique(g, static_cast<int>(l), warm[l].vertices));
       CHECK(warm[l].vertices.size() >= cold[l].vertices.size());
+      CHECK((warm[l].start == CliqueStart::cold) == (l == 0));
     }
   };
   for (std::uint64_t seed = 1; seed <= 6; ++seed)

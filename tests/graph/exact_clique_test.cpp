@@ -4,8 +4,8 @@
 #include <random>
 
 #include "graph/clique_graph.hpp"
-#include "support/clique_reference.hpp"
 #include "pagor/graph/densest_clique.hpp"
+#include "support/clique_reference.hpp"
 #include "support/test_util.hpp"
 
 using namespace pagor;
@@ -134,6 +134,8 @@ TEST_CASE("the exact solver agrees with brute force on small graphs") {
     CHECK(r.optimal);
     CHECK(is_clique(g, 0, r.vertices));
     CHECK(r.vertices.size() == test::brute_force_clique(g));
+    CHECK(r.upper_bound == static_cast<int>(r.vertices.size()));  // proven: the bound is met
+    CHECK(r.budget == CliqueBudget::none);
   }
 }
 
@@ -177,8 +179,47 @@ TEST_CASE("the exact solver stops at its node budget and says so") {
   const PyramidGraph g = random_graph(200, 0.5, 0, 1);
   const CliqueResult r = exact_max_clique(g, 0, cp);
   CHECK_FALSE(r.optimal);
+  CHECK(r.budget == CliqueBudget::nodes);
   CHECK(is_clique(g, 0, r.vertices));
   CHECK_FALSE(r.vertices.empty());
+  CHECK(r.upper_bound >= static_cast<int>(r.vertices.size()));
+}
+
+TEST_CASE("an interrupted exact search returns a bound no smaller than the maximum clique") {
+  for (std::uint64_t seed : {1u, 2u, 3u, 4u}) {
+    const PyramidGraph g = random_graph(90, 0.45, 0, seed);
+    const int omega = test::plain_max_clique(g, 0);
+    for (long nodes : {1L, 3L, 20L, 200L}) {
+      INFO("seed " << seed << ", " << nodes << " nodes");
+      CliqueParams cp;
+      cp.exact_max_nodes = nodes;
+      const CliqueResult r = exact_max_clique(g, 0, cp);
+      CHECK(is_clique(g, 0, r.vertices));
+      CHECK(static_cast<int>(r.vertices.size()) <= omega);
+      CHECK(r.upper_bound >= omega);
+      if (r.optimal) CHECK(static_cast<int>(r.vertices.size()) == omega);
+      CHECK(r.budget == (r.optimal ? CliqueBudget::none : CliqueBudget::nodes));
+    }
+  }
+}
+
+TEST_CASE("the exact solver stops at its time budget and says so") {
+  // A dense random graph of 400 vertices takes a branch and bound far more than a millisecond.
+  CliqueParams cp;
+  cp.exact_max_nodes = 10000000000L;
+  cp.exact_time_budget_ms = 1;
+  const PyramidGraph g = random_graph(400, 0.75, 0, 7);
+  const CliqueResult r = exact_max_clique(g, 0, cp);
+  CHECK_FALSE(r.optimal);
+  CHECK(r.budget == CliqueBudget::time);
+  CHECK(is_clique(g, 0, r.vertices));
+  CHECK(r.upper_bound >= static_cast<int>(r.vertices.size()));
+  // Over a pyramid the budget is shared: every level says which budget stopped it.
+  cp.solver = CliqueSolver::exact;
+  for (const CliqueResult& level : solve_pyramid(g, cp)) {
+    CHECK(is_clique(g, level.level, level.vertices));
+    CHECK(level.budget == (level.optimal ? CliqueBudget::none : CliqueBudget::time));
+  }
 }
 
 TEST_CASE("the exact solver on graphs without vertices or edges") {

@@ -2,8 +2,8 @@
 #include <catch2/catch.hpp>
 #include <random>
 
-#include "pagor/verify/evaluation.hpp"
 #include "pagor/pose/gnc.hpp"
+#include "pagor/verify/evaluation.hpp"
 #include "util/random_draw.hpp"
 
 using namespace pagor;
@@ -36,8 +36,7 @@ Problem make_problem(int n, double outlier_ratio, PoseModel model, std::uint64_t
     const Eigen::Vector3d p = draw3(coord, rng).cwiseQuotient(Eigen::Vector3d(1, 1, 4));
     pr.p.push_back(p);
     if (i < pr.inliers)
-      pr.q.push_back(pr.T.block<3, 3>(0, 0) * p + pr.T.block<3, 1>(0, 3) +
-                     draw3(noise, rng));
+      pr.q.push_back(pr.T.block<3, 3>(0, 0) * p + pr.T.block<3, 1>(0, 3) + draw3(noise, rng));
     else
       pr.q.push_back(draw3(coord, rng).cwiseQuotient(Eigen::Vector3d(1, 1, 4)));
   }
@@ -152,4 +151,31 @@ TEST_CASE("pose errors against ground truth") {
   EvaluationParams strict;
   strict.max_translation_error = 1.0;
   CHECK_FALSE(pose_error(est, truth, strict).success);
+}
+
+TEST_CASE("the automatic model: SE(3) for any rotation, 4-DoF where it explains as much") {
+  GncParams params;
+  params.model = PoseModel::automatic;
+  params.noise_bound = 0.1;
+  for (std::uint64_t seed : {1u, 2u, 3u}) {
+    INFO("seed " << seed);
+    // A rotation about a tilted axis: 4-DoF cannot explain it.
+    const Problem tilted = make_problem(100, 0.7, PoseModel::se3, seed);
+    const PoseEstimate e = estimate_pose_gnc(tilted.p, tilted.q, params);
+    REQUIRE(e.valid);
+    CHECK(e.model == PoseModel::se3);
+    CHECK(pose_error(e.T_target_source, tilted.T).rotation_deg < kRotationTolDeg);
+    // A yaw: both explain every inlier; the simpler model is kept.
+    const Problem level = make_problem(100, 0.7, PoseModel::four_dof, seed);
+    const PoseEstimate f = estimate_pose_gnc(level.p, level.q, params);
+    REQUIRE(f.valid);
+    CHECK(f.model == PoseModel::four_dof);
+    CHECK(pose_error(f.T_target_source, level.T).rotation_deg < kRotationTolDeg);
+  }
+  // Two correspondences: only 4-DoF can be fitted.
+  const Problem two = make_problem(2, 0.0, PoseModel::four_dof, 9);
+  const PoseEstimate e = estimate_pose_gnc(two.p, two.q, params);
+  REQUIRE(e.valid);
+  CHECK(e.model == PoseModel::four_dof);
+  CHECK(minimal_sample_size(PoseModel::automatic) == 2);
 }

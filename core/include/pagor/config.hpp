@@ -60,7 +60,8 @@ struct Config {
 };
 
 /// The project's outdoor defaults: the paper's method with what measurement on the shared data
-/// showed to be better (README, "Presets"): 4-DoF poses, point-spacing adaptation, traffic signs,
+/// showed to be better (README, "Presets"): poses in 4-DoF where the data is level and in SE(3)
+/// otherwise (`gnc.model = auto`), point-spacing adaptation, traffic signs,
 /// class-agnostic keypoints for class-poor or unlabelled pairs.
 Config default_config();
 

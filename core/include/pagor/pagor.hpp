@@ -32,6 +32,7 @@
 #include "pagor/graph/trim.hpp"
 
 #include "pagor/pose/gnc.hpp"
+#include "pagor/pose/gravity.hpp"
 
 #include "pagor/verify/acceptance.hpp"
 #include "pagor/verify/diagnosis.hpp"

@@ -25,6 +25,7 @@
 #include "pagor/graph/densest_clique.hpp"
 #include "pagor/graph/pyramid_graph.hpp"
 #include "pagor/pose/gnc.hpp"
+#include "pagor/pose/gravity.hpp"
 #include "pagor/types.hpp"
 #include "pagor/verify/acceptance.hpp"
 #include "pagor/verify/evaluation.hpp"
@@ -116,6 +117,14 @@ class Pipeline {
   /// The acceptance verdict on the selected pose.
   const Acceptance& acceptance() const { return acceptance_; }
   const std::optional<Transform>& ground_truth() const { return ground_truth_; }
+  /// With the pose model `automatic` and clouds: each scan's ground plane, which decides whether
+  /// the pair is gravity-aligned (4-DoF poses); nullopt otherwise.
+  const std::optional<std::pair<GroundPlane, GroundPlane>>& ground_planes() const {
+    return ground_;
+  }
+  /// The pose parameters the GNC stage used: the configured ones, with `automatic` resolved to
+  /// `four_dof` for a gravity-aligned pair of clouds.
+  GncParams gnc_params() const;
   /// Errors per level (empty without ground truth; nullopt for an invalid candidate).
   const std::vector<std::optional<PoseError>>& level_errors() const { return level_errors_; }
 
@@ -143,6 +152,7 @@ class Pipeline {
   void run_stage(Stage stage);
   void run_refinement();
   void run_correspondences();
+  void run_gnc();
   /// Whether the landmarks take part: clouds, and no matches or fused ones.
   bool uses_landmarks() const;
   void warn_if_numberings_differ();
@@ -164,6 +174,7 @@ class Pipeline {
   PyramidGraph graph_;
   std::vector<CliqueResult> cliques_;
   std::vector<PoseEstimate> poses_;
+  std::optional<std::pair<GroundPlane, GroundPlane>> ground_;  // of the clouds, when needed
   std::optional<Verifier> verifier_;
   VerificationResult verification_;
   std::optional<Refiner> refiner_;

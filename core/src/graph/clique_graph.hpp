@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "pagor/graph/densest_clique.hpp"
 #include "pagor/graph/pyramid_graph.hpp"
 
 namespace pagor::detail {
@@ -275,7 +276,15 @@ bool is_clique(const Graph& g, const std::vector<int>& vertices, Marks& marks) {
 /// Exact search for a clique larger than `best` on `level` (the exact solver, started from
 /// `best`): the largest clique found, `best` itself when there is none; `optimal` tells whether
 /// the search finished within `max_nodes` branch-and-bound nodes.
+/// `bound`, if given, receives the upper bound on the clique number the search reached.
 std::vector<int> larger_clique(const PyramidGraph& g, int level, std::vector<int> best,
-                               long max_nodes, bool& optimal);
+                               long max_nodes, bool& optimal, int* bound = nullptr);
+
+struct SearchBudget;
+/// The exact solver on one level within `budget` (nodes and deadline, shared by the levels of a
+/// pyramid): the best clique found, whether it is proven maximum, the bound reached, and which
+/// budget stopped it.
+CliqueResult exact_level(const PyramidGraph& g, int level, const CliqueParams& params,
+                         SearchBudget& budget);
 
 }  // namespace pagor::detail

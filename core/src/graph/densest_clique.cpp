@@ -1,6 +1,8 @@
 #include "pagor/graph/densest_clique.hpp"
 
+#include "graph/bit_graph.hpp"
 #include "graph/clique_graph.hpp"
+#include "graph/relaxation.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -17,299 +19,6 @@ double ms_since(Clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 }
 
-// One level of the pyramid restricted to a vertex subset, with local ids and per-edge affinities:
-// the relaxation's inner loop then touches neither absent levels nor pruned vertices.
-struct LevelGraph {
-  std::vector<int> ids;              // local -> global vertex id
-  std::vector<std::size_t> offsets;  // CSR over local ids, neighbours sorted
-  std::vector<int> neighbors;
-  std::vector<float> weights;  // affinity per edge (TRIM values until set_weights)
-  bool binary = true;          // all weights 1: M u = C u
-
-  std::size_t size() const { return ids.size(); }
-  bool complete() const { return neighbors.size() == size() * (size() - 1); }
-};
-
-// The subgraph of level `level` induced by `keep` (sorted), with each edge's TRIM value.
-LevelGraph induce(const PyramidGraph& g, int level, const std::vector<int>& keep) {
-  LevelGraph s;
-  s.ids = keep;
-  s.binary = g.affinity == AffinityKind::binary;
-  std::vector<int> local(static_cast<std::size_t>(g.vertices), -1);
-  for (std::size_t i = 0; i < keep.size(); ++i)
-    local[static_cast<std::size_t>(keep[i])] = static_cast<int>(i);
-  s.offsets.assign(1, 0);
-  std::size_t rows = 0;  // an upper bound of the edges kept
-  for (int v : keep)
-    rows += static_cast<std::size_t>(g.offsets[static_cast<std::size_t>(v) + 1] -
-                                     g.offsets[static_cast<std::size_t>(v)]);
-  s.neighbors.reserve(rows);
-  if (!s.binary) s.weights.reserve(rows);
-  for (int v : keep) {
-    const auto last = static_cast<std::size_t>(g.offsets[static_cast<std::size_t>(v) + 1]);
-    for (auto e = static_cast<std::size_t>(g.offsets[static_cast<std::size_t>(v)]); e < last; ++e) {
-      const int w = local[static_cast<std::size_t>(g.neighbors[e])];
-      if (g.level[e] > level || w < 0) continue;
-      s.neighbors.push_back(w);  // global ids are sorted, so local ids are too
-      if (!s.binary) s.weights.push_back(g.trim[e]);
-    }
-    s.offsets.push_back(s.neighbors.size());
-  }
-  return s;
-}
-
-// TRIM values -> Gaussian affinities of level `level` (as PyramidGraph::weight).
-void set_weights(LevelGraph& s, const PyramidGraph& g, int level) {
-  if (s.binary) return;
-  const double sigma = g.sigma_ratio * g.thresholds[static_cast<std::size_t>(level)];
-  const double scale = -1.0 / (2 * sigma * sigma);
-  for (float& w : s.weights) w = static_cast<float>(std::exp(scale * double(w) * w));
-}
-
-constexpr std::size_t kLanes = 4;  // rows summed side by side in products()
-
-// Products the relaxation needs: Mu = M u (affinities, unit diagonal), Cu = C u (adjacency, unit
-// diagonal), both in one pass over the edges. When u has few non-zeros (late in the solve, and
-// after a warm start), they are scattered from the support instead of gathered over every edge
-// (the graph is symmetric).
-void products(const LevelGraph& g, const std::vector<double>& u, std::vector<double>& Mu,
-              std::vector<double>& Cu) {
-  const std::size_t n = g.size();
-  std::size_t support = 0;
-  for (double x : u) support += x != 0.0;
-  const int* nb = g.neighbors.data();
-  const float* wt = g.weights.data();
-  if (support * 4 < n) {
-    std::fill(Cu.begin(), Cu.end(), 0.0);
-    if (!g.binary) std::fill(Mu.begin(), Mu.end(), 0.0);
-    for (std::size_t v = 0; v < n; ++v) {
-      const double uv = u[v];
-      if (uv == 0.0) continue;
-      Cu[v] += uv;
-      if (g.binary) {
-        for (std::size_t e = g.offsets[v]; e < g.offsets[v + 1]; ++e)
-          Cu[static_cast<std::size_t>(nb[e])] += uv;
-      } else {
-        Mu[v] += uv;
-        for (std::size_t e = g.offsets[v]; e < g.offsets[v + 1]; ++e) {
-          const auto w = static_cast<std::size_t>(nb[e]);
-          Cu[w] += uv;
-          Mu[w] += double(wt[e]) * uv;
-        }
-      }
-    }
-    if (g.binary) Mu = Cu;
-    return;
-  }
-  // Each row's sum runs in edge order, so every product is the plain loop's to the last bit; four
-  // rows are summed side by side over their common length, as one row's sum waits on its previous
-  // addition at every edge.
-  const auto x = [&](std::size_t e) { return u[static_cast<std::size_t>(nb[e])]; };
-  std::size_t v = 0;
-  for (; v + kLanes <= n; v += kLanes) {
-    std::size_t e[kLanes], length = SIZE_MAX;
-    double c[kLanes], m[kLanes];
-    for (std::size_t k = 0; k < kLanes; ++k) {
-      e[k] = g.offsets[v + k];
-      length = std::min(length, g.offsets[v + k + 1] - e[k]);
-      c[k] = m[k] = u[v + k];
-    }
-    if (g.binary) {
-      for (std::size_t t = 0; t < length; ++t)
-        for (std::size_t k = 0; k < kLanes; ++k) c[k] += x(e[k] + t);
-    } else {
-      for (std::size_t t = 0; t < length; ++t)
-        for (std::size_t k = 0; k < kLanes; ++k) {
-          const double xe = x(e[k] + t);
-          c[k] += xe;
-          m[k] += double(wt[e[k] + t]) * xe;
-        }
-    }
-    for (std::size_t k = 0; k < kLanes; ++k) {
-      for (std::size_t f = e[k] + length; f < g.offsets[v + k + 1]; ++f) {
-        c[k] += x(f);
-        if (!g.binary) m[k] += double(wt[f]) * x(f);
-      }
-      Cu[v + k] = c[k];
-      Mu[v + k] = g.binary ? c[k] : m[k];
-    }
-  }
-  for (; v < n; ++v) {
-    double c = u[v], m = u[v];
-    for (std::size_t e = g.offsets[v]; e < g.offsets[v + 1]; ++e) {
-      c += x(e);
-      if (!g.binary) m += double(wt[e]) * x(e);
-    }
-    Cu[v] = c;
-    Mu[v] = g.binary ? c : m;
-  }
-}
-
-double dot(const std::vector<double>& a, const std::vector<double>& b) {
-  return std::inner_product(a.begin(), a.end(), b.begin(), 0.0);
-}
-
-// Projection onto {u >= 0, |u| = 1}; false when nothing positive is left.
-bool project(std::vector<double>& u) {
-  double n2 = 0;
-  for (double& x : u) {
-    x = std::max(x, 0.0);
-    n2 += x * x;
-  }
-  if (n2 <= 0) return false;
-  const double inv = 1.0 / std::sqrt(n2);
-  for (double& x : u) x *= inv;
-  return true;
-}
-
-// The round(u^T C u) largest entries of u, then pruned greedily (most non-neighbours first) until
-// they form a clique, which numerical ties can spoil. Local ids.
-std::vector<int> round_to_clique(const LevelGraph& g, const std::vector<double>& u,
-                                 const std::vector<double>& Cu) {
-  const int omega = std::max(1, static_cast<int>(std::lround(dot(u, Cu))));
-  std::vector<int> order(u.size());
-  std::iota(order.begin(), order.end(), 0);
-  const auto k = std::min<std::size_t>(static_cast<std::size_t>(omega), order.size());
-  std::partial_sort(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(k), order.end(),
-                    [&](int a, int b) {
-                      const double ua = u[static_cast<std::size_t>(a)],
-                                   ub = u[static_cast<std::size_t>(b)];
-                      return ua > ub || (ua == ub && a < b);
-                    });
-  std::vector<int> clique(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(k));
-  // in[v]: position in `clique` + 1, 0 outside. Members' non-neighbours among members, by
-  // walking each member's neighbour list once.
-  std::vector<int> in(u.size(), 0);
-  while (clique.size() > 1) {
-    for (std::size_t a = 0; a < clique.size(); ++a)
-      in[static_cast<std::size_t>(clique[a])] = static_cast<int>(a) + 1;
-    std::size_t worst = 0;
-    int worst_missing = 0;
-    for (std::size_t a = 0; a < clique.size(); ++a) {
-      const auto v = static_cast<std::size_t>(clique[a]);
-      int inside = 0;
-      for (std::size_t e = g.offsets[v]; e < g.offsets[v + 1]; ++e)
-        inside += in[static_cast<std::size_t>(g.neighbors[e])] != 0;
-      const int missing = static_cast<int>(clique.size()) - 1 - inside;
-      if (missing > worst_missing) {
-        worst_missing = missing;
-        worst = a;
-      }
-    }
-    for (int v : clique) in[static_cast<std::size_t>(v)] = 0;
-    if (worst_missing == 0) break;
-    clique.erase(clique.begin() + static_cast<std::ptrdiff_t>(worst));
-  }
-  return clique;
-}
-
-// The relaxation proper on a level graph, from a non-negative unit vector u.
-std::vector<int> relax(const LevelGraph& g, std::vector<double>& u, double d, const CliqueParams& p,
-                       CliqueResult& r) {
-  const std::size_t n = g.size();
-  std::vector<double> Mu(n), Cu(n), grad(n), cand(n), Mu_c(n), Cu_c(n);
-  std::vector<std::size_t> support(n);  // of the candidate
-  double alpha = 1.0;
-  products(g, u, Mu, Cu);
-  double sum = std::accumulate(u.begin(), u.end(), 0.0);
-  // F(u) = u^T M_d u with M_d u = M u - d (sum(u) 1 - C u).
-  const auto penalised = [&](const std::vector<double>& M, const std::vector<double>& C, double s,
-                             std::vector<double>& out) {
-    for (std::size_t i = 0; i < n; ++i) out[i] = M[i] - d * (s - C[i]);
-  };
-  for (int outer = 0; outer < p.max_outer_iterations; ++outer) {
-    // Inner loop: projected gradient ascent with backtracking; the step grows after a success.
-    penalised(Mu, Cu, sum, grad);
-    double F = dot(u, grad);
-    alpha = 1.0 / (1.0 + d);  // the gradient grows with d
-    for (int inner = 0; inner < p.max_inner_iterations; ++inner) {
-      bool accepted = false;
-      double F_new = F, sum_c = 0;
-      for (int ls = 0; ls < p.max_line_search; ++ls) {
-        ++r.gradient_steps;
-        // The candidate projected onto {u >= 0, |u| = 1} (project()), with its sum, F and the
-        // step: as the plain loops compute them to the last bit, but each sum runs over the
-        // support only, as adding a zero changes no sum, and most entries are zero.
-        std::size_t* const in = support.data();
-        std::size_t k = 0;
-        double n2 = 0;
-        for (std::size_t i = 0; i < n; ++i) {
-          const double c = std::max(u[i] + alpha * grad[i], 0.0);
-          cand[i] = c;
-          if (c > 0) {
-            in[k++] = i;
-            n2 += c * c;
-          }
-        }
-        if (n2 > 0) {
-          const double inv = 1.0 / std::sqrt(n2);
-          sum_c = 0;
-          for (std::size_t i = 0; i < n; ++i) cand[i] *= inv;
-          for (std::size_t j = 0; j < k; ++j) sum_c += cand[in[j]];
-          products(g, cand, Mu_c, Cu_c);
-          double Fc = 0;
-          for (std::size_t j = 0; j < k; ++j) {
-            const std::size_t i = in[j];
-            Fc += cand[i] * (Mu_c[i] - d * (sum_c - Cu_c[i]));
-          }
-          if (Fc > F) {
-            F_new = Fc;
-            accepted = true;
-            break;
-          }
-        }
-        alpha *= p.beta;
-      }
-      if (!accepted) break;
-      double step = 0;
-      for (std::size_t i = 0; i < n; ++i)
-        if (cand[i] != u[i]) step += (cand[i] - u[i]) * (cand[i] - u[i]);
-      u.swap(cand);
-      Mu.swap(Mu_c);
-      Cu.swap(Cu_c);
-      sum = sum_c;
-      penalised(Mu, Cu, sum, grad);
-      const double dF = F_new - F;
-      F = F_new;
-      alpha = std::min(alpha / p.beta, p.max_step);
-      if (std::sqrt(step) < p.tol_u || std::abs(dF) < p.tol_F) break;
-    }
-
-    // Entries that have all but vanished are set to zero, so that the support test below sees
-    // the support the rounding will see.
-    const double floor = p.support_tol * *std::max_element(u.begin(), u.end());
-    bool zeroed = false;
-    for (double& x : u)
-      if (x > 0 && x < floor) {
-        x = 0;
-        zeroed = true;
-      }
-    if (zeroed) {
-      project(u);
-      products(g, u, Mu, Cu);
-      sum = std::accumulate(u.begin(), u.end(), 0.0);
-    }
-
-    // Outer loop: is the support of u a clique? If not, raise d. For a support entry i with
-    // non-neighbours in the support, d_i = (M u)_i / (sum(u) - (C u)_i) is the penalty at which
-    // its gradient vanishes; d grows by the mean d_i, so that many offenders leave at once.
-    double increment = 0.0;
-    int offenders = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-      if (u[i] <= p.eps) continue;
-      const double outside = sum - Cu[i];  // mass on i's non-neighbours
-      if (outside <= p.eps) continue;
-      increment += Mu[i] / outside;
-      ++offenders;
-    }
-    ++r.penalty_updates;
-    if (offenders == 0) break;  // the support is a clique
-    d += std::max(increment / offenders, p.eps);
-  }
-  r.penalty = d;
-  return round_to_clique(g, u, Cu);
-}
-
 }  // namespace
 
 std::vector<double> random_start(int size, std::uint64_t seed) {
@@ -317,7 +26,7 @@ std::vector<double> random_start(int size, std::uint64_t seed) {
   std::uniform_real_distribution<double> dist(1e-3, 1.0);
   std::vector<double> u(static_cast<std::size_t>(size));
   for (double& x : u) x = dist(rng);
-  project(u);
+  detail::project(u);
   return u;
 }
 
@@ -328,15 +37,19 @@ bool is_clique(const PyramidGraph& g, int level, const std::vector<int>& vertice
   return true;
 }
 
-CliqueResult solve_clipper(const PyramidGraph& g, int level, const std::vector<double>& u0,
-                           const CliqueParams& p, const std::vector<int>& known_clique, double d0) {
-  const auto t0 = Clock::now();
+namespace {
+
+// The relaxation on one level (solve_clipper without the warm level's checks); no timing.
+CliqueResult relax_level(const PyramidGraph& g, int level, const std::vector<double>& u0,
+                         const CliqueParams& p, const std::vector<int>& known_clique, double d0) {
   CliqueResult r;
   r.level = level;
   if (g.vertices == 0) return r;
   const std::size_t n = static_cast<std::size_t>(g.vertices);
   const detail::PyramidLevel view{g, level};
   detail::Marks marks(g.vertices);
+  const bool warm = u0.size() == n && !known_clique.empty();
+  r.start = warm ? CliqueStart::warm : CliqueStart::cold;
 
   // Which vertices the relaxation works on: all, or the core that can hold a clique at least as
   // large as a lower bound: the known clique grown to a maximal one, else greedy cliques.
@@ -355,34 +68,36 @@ CliqueResult solve_clipper(const PyramidGraph& g, int level, const std::vector<d
     keep.resize(n);
     std::iota(keep.begin(), keep.end(), 0);
   }
-  LevelGraph sub = induce(g, level, keep);
+  detail::LevelGraph sub = detail::induce(g, level, keep);
   r.u.assign(n, 0.0);
   if (p.prune && sub.complete()) {
     // The core is itself a clique: it is the answer, and the relaxation's optimum is its
     // indicator vector.
     r.vertices = keep;
     for (int v : keep) r.u[static_cast<std::size_t>(v)] = 1.0 / std::sqrt(double(keep.size()));
-    r.time_ms = ms_since(t0);
+    r.optimal = true;
+    r.upper_bound = static_cast<int>(keep.size());
     return r;
   }
-  set_weights(sub, g, level);
+  detail::set_weights(sub, g, level);
 
   // Start vector restricted to the kept vertices; the seeded random start if nothing is left.
   std::vector<double> u(sub.size());
   // A warm start gets a little of the random start mixed in, so that vertices it left at zero
   // start above zero.
   const std::vector<double> start = random_start(g.vertices, p.seed);
-  const bool warm = u0.size() == n;
+  const bool from_u0 = u0.size() == n;
   for (std::size_t i = 0; i < sub.size(); ++i) {
     const auto v = static_cast<std::size_t>(sub.ids[i]);
-    u[i] = warm ? u0[v] + p.warm_start_mix * start[v] : 0.0;
+    u[i] = from_u0 ? u0[v] + p.warm_start_mix * start[v] : 0.0;
   }
-  if (!project(u)) {
+  if (!detail::project(u)) {
     for (std::size_t i = 0; i < sub.size(); ++i) u[i] = start[static_cast<std::size_t>(sub.ids[i])];
-    project(u);
+    detail::project(u);
   }
 
-  const std::vector<int> local = sub.size() > 0 ? relax(sub, u, d0, p, r) : std::vector<int>{};
+  const std::vector<int> local =
+      sub.size() > 0 ? detail::relax(sub, u, d0, p, r) : std::vector<int>{};
   for (std::size_t i = 0; i < sub.size(); ++i) r.u[static_cast<std::size_t>(sub.ids[i])] = u[i];
   std::vector<int> found;
   for (int v : local) found.push_back(sub.ids[static_cast<std::size_t>(v)]);
@@ -390,24 +105,58 @@ CliqueResult solve_clipper(const PyramidGraph& g, int level, const std::vector<d
   if (!found.empty()) found = detail::extend_clique(view, found, r.u, 0.0, marks);
   r.vertices = found.size() >= lower.size() ? found : lower;  // never worse than the lower bound
   r.vertices = detail::improve_by_swaps(view, std::move(r.vertices), marks, p.max_swaps);
+  return r;
+}
+
+}  // namespace
+
+CliqueResult solve_clipper(const PyramidGraph& g, int level, const std::vector<double>& u0,
+                           const CliqueParams& p, const std::vector<int>& known_clique, double d0) {
+  const auto t0 = Clock::now();
+  CliqueResult r = relax_level(g, level, u0, p, known_clique, d0);
+  const bool warm = p.prune && !known_clique.empty() && g.vertices > 0;
   // A warm start can settle in a worse local optimum than a cold one (KITTI 20 -> 30, level 2:
-  // 29 against 30). A warm-started level therefore ends with a bounded exact search for a larger
-  // clique: cheap here, as the clique found prunes every vertex whose core number is below its
-  // size. Within the budget the cascade's clique is then maximum, never smaller than any other.
-  if (p.prune && !known_clique.empty() && p.cascade_check_nodes > 0)     // a budget hit keeps the
-    r.vertices = detail::larger_clique(g, level, std::move(r.vertices),  // best clique found
-                                       p.cascade_check_nodes, r.optimal);
+  // 29 against 30; gedi-dev 03, level 2: 66 against 68). A warm level therefore ends with a
+  // bounded exact search for a larger clique (cheap here: the clique found prunes every vertex
+  // whose core number is below its size; a greedy colouring may prove it maximum at once). Unless
+  // that proves the clique maximum, the level is also solved from the cold start, exactly as the
+  // independent solver does, and the larger clique is kept: the cascade never loses to it.
+  if (warm && !r.optimal) {
+    r.vertices = detail::larger_clique(g, level, std::move(r.vertices), p.cascade_check_nodes,
+                                       r.optimal, &r.upper_bound);  // 0 nodes: colouring only
+    if (!r.optimal && p.cascade_check_nodes > 0) r.budget = CliqueBudget::nodes;
+    if (!r.optimal && p.cascade_fallback) {
+      CliqueResult cold = relax_level(g, level, random_start(g.vertices, p.seed), p, {}, 0.0);
+      r.gradient_steps += cold.gradient_steps;
+      r.penalty_updates += cold.penalty_updates;
+      if (cold.vertices.size() > r.vertices.size()) {
+        r.vertices = std::move(cold.vertices);
+        r.u = std::move(cold.u);  // the next level starts from where the cold start ended
+        r.penalty = cold.penalty;
+        r.start = CliqueStart::fallback;
+      }
+    }
+  }
   r.time_ms = ms_since(t0);
   return r;
 }
 
 std::vector<CliqueResult> solve_pyramid(const PyramidGraph& g, const CliqueParams& p) {
+  const auto t0 = Clock::now();
   std::vector<CliqueResult> out;
   const std::vector<double> start = random_start(g.vertices, p.seed);
+  // The exact solver's budgets hold for the whole pyramid: the nodes are shared, and level l may
+  // run until (l + 1) / levels of the time budget has passed (what a level leaves, the next gets).
+  detail::SearchBudget budget;
+  budget.max_nodes = p.exact_max_nodes;
   for (int l = 0; l < g.levels(); ++l) {
     switch (p.solver) {
       case CliqueSolver::exact:
-        out.push_back(exact_max_clique(g, l, p));
+        if (p.exact_time_budget_ms > 0)
+          budget.deadline = t0 + std::chrono::microseconds(static_cast<long>(
+                                     1000.0 * p.exact_time_budget_ms * (l + 1) / g.levels()));
+        budget.out_of_time = false;  // a level's share is its own
+        out.push_back(detail::exact_level(g, l, p, budget));
         break;
       case CliqueSolver::independent:
         out.push_back(solve_clipper(g, l, start, p));

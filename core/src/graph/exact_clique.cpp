@@ -12,253 +12,20 @@
 #include <chrono>
 #include <cstdint>
 
+#include "graph/bit_graph.hpp"
 #include "graph/clique_graph.hpp"
 #include "pagor/graph/densest_clique.hpp"
 
 namespace pagor {
 namespace {
 
-using Word = std::uint64_t;
-
-// Subproblems of at least this many vertices and this edge density are solved as maximum
-// independent set on the complement.
-constexpr int kDenseMinSize = 32;
-constexpr double kDenseFraction = 0.9;
-
-int words_for(int n) {
-  return (n + 63) / 64;
-}
-
-// A local graph of n vertices as rows of bits (row v: the neighbours of v).
-class BitRows {
- public:
-  explicit BitRows(int n)
-      : n_(n),
-        w_(words_for(n)),
-        bits_(static_cast<std::size_t>(n) * static_cast<std::size_t>(w_), 0) {}
-  void connect(int a, int b) {
-    row(a)[b >> 6] |= Word(1) << (b & 63);
-    row(b)[a >> 6] |= Word(1) << (a & 63);
-  }
-  Word* row(int v) {
-    return bits_.data() + static_cast<std::size_t>(v) * static_cast<std::size_t>(w_);
-  }
-  int size() const { return n_; }
-  int words() const { return w_; }
-  // Every vertex, as a row of bits.
-  std::vector<Word> all() const {
-    std::vector<Word> out(static_cast<std::size_t>(w_), 0);
-    for (int v = 0; v < n_; ++v) out[static_cast<std::size_t>(v >> 6)] |= Word(1) << (v & 63);
-    return out;
-  }
-
- private:
-  int n_, w_;
-  std::vector<Word> bits_;
-};
-
-// One subproblem: a local graph as rows of bits, searched by colouring bounds.
-class BitSearch {
- public:
-  BitSearch(BitRows& g, long budget, long& nodes)
-      : n_(g.size()), w_(g.words()), g_(g), budget_(budget), nodes_(nodes) {}
-  // Largest clique of the local graph if it has more than `lower` vertices; else empty.
-  // Sets `complete` false when the node budget ran out.
-  std::vector<int> solve(int lower, bool& complete) {
-    best_size_ = lower;
-    best_.clear();
-    current_.clear();
-    const std::vector<Word> all = g_.all();
-    levels_.assign(static_cast<std::size_t>(n_) + 2, {});
-    expand(all, 0);
-    complete = complete && nodes_ <= budget_;
-    return best_;
-  }
-
- private:
-  Word* row(int v) { return g_.row(v); }
-
-  struct Level {
-    std::vector<Word> P, U, Q;
-    std::vector<int> order, colour;
-  };
-
-  // Candidates P (by value in levels_[depth]); current_ is the clique so far.
-  void expand(const std::vector<Word>& P_in, int depth) {
-    if (++nodes_ > budget_) return;
-    Level& L = levels_[static_cast<std::size_t>(depth)];
-    L.P = P_in;
-    L.U = P_in;
-    L.order.clear();
-    L.colour.clear();
-    // Greedy colouring in vertex order; only colours that could beat the best are branched on.
-    const int need = best_size_ - static_cast<int>(current_.size());  // colours needed to beat
-    int k = 0;
-    for (bool any = true; any;) {
-      any = false;
-      ++k;
-      L.Q = L.U;
-      for (int i = 0; i < w_; ++i) {
-        while (L.Q[static_cast<std::size_t>(i)]) {
-          const int v = i * 64 + __builtin_ctzll(L.Q[static_cast<std::size_t>(i)]);
-          any = true;
-          L.U[static_cast<std::size_t>(i)] &= ~(Word(1) << (v & 63));
-          const Word* nv = row(v);
-          for (int j = i; j < w_; ++j) L.Q[static_cast<std::size_t>(j)] &= ~nv[j];
-          L.Q[static_cast<std::size_t>(i)] &= ~(Word(1) << (v & 63));
-          if (k > need) {
-            L.order.push_back(v);
-            L.colour.push_back(k);
-          }
-        }
-      }
-    }
-    std::vector<Word> next(static_cast<std::size_t>(w_));
-    for (int idx = static_cast<int>(L.order.size()) - 1; idx >= 0; --idx) {
-      if (static_cast<int>(current_.size()) + L.colour[static_cast<std::size_t>(idx)] <= best_size_)
-        return;
-      const int v = L.order[static_cast<std::size_t>(idx)];
-      const Word* nv = row(v);
-      bool empty = true;
-      for (int j = 0; j < w_; ++j) {
-        next[static_cast<std::size_t>(j)] = L.P[static_cast<std::size_t>(j)] & nv[j];
-        empty = empty && next[static_cast<std::size_t>(j)] == 0;
-      }
-      current_.push_back(v);
-      if (empty) {
-        if (static_cast<int>(current_.size()) > best_size_) {
-          best_size_ = static_cast<int>(current_.size());
-          best_ = current_;
-        }
-      } else {
-        expand(next, depth + 1);
-      }
-      current_.pop_back();
-      if (nodes_ > budget_) return;
-      L.P[static_cast<std::size_t>(v >> 6)] &= ~(Word(1) << (v & 63));
-    }
-  }
-
-  int n_, w_;
-  BitRows& g_;
-  long budget_;
-  long& nodes_;
-  int best_size_ = 0;
-  std::vector<int> best_, current_;
-  std::vector<Level> levels_;
-};
-
-// Maximum independent set on bit rows, for the complement of a near-complete subproblem (a clique
-// of the subproblem is an independent set of its sparse complement). Vertices without neighbours
-// are taken, a vertex with one neighbour is taken and its neighbour dropped; the bound is the
-// remaining count minus a greedy matching (each matched edge keeps at most one end); branching
-// takes or drops a vertex of largest degree.
-class MisSearch {
- public:
-  MisSearch(BitRows& g, long budget, long& nodes)
-      : n_(g.size()), w_(g.words()), g_(g), budget_(budget), nodes_(nodes) {}
-  // Largest independent set if it has more than `lower` vertices; else empty.
-  std::vector<int> solve(int lower, bool& complete) {
-    best_size_ = lower;
-    const std::vector<Word> all = g_.all();
-    search(all);
-    complete = complete && nodes_ <= budget_;
-    return best_;
-  }
-
- private:
-  Word* row(int v) { return g_.row(v); }
-  int degree(int v, const std::vector<Word>& P) {
-    const Word* r = row(v);
-    int d = 0;
-    for (int i = 0; i < w_; ++i) d += __builtin_popcountll(r[i] & P[static_cast<std::size_t>(i)]);
-    return d;
-  }
-  static void drop(std::vector<Word>& P, int v) {
-    P[static_cast<std::size_t>(v >> 6)] &= ~(Word(1) << (v & 63));
-  }
-  static bool has(const std::vector<Word>& P, int v) {
-    return (P[static_cast<std::size_t>(v >> 6)] >> (v & 63)) & 1;
-  }
-  template <typename F>
-  void for_each(const std::vector<Word>& P, F&& f) {
-    for (int i = 0; i < w_; ++i)
-      for (Word x = P[static_cast<std::size_t>(i)]; x; x &= x - 1) f(i * 64 + __builtin_ctzll(x));
-  }
-  int first_neighbour(int v, const std::vector<Word>& P) {
-    const Word* r = row(v);
-    for (int i = 0; i < w_; ++i)
-      if (const Word x = r[i] & P[static_cast<std::size_t>(i)]) return i * 64 + __builtin_ctzll(x);
-    return -1;
-  }
-
-  void search(std::vector<Word> P) {
-    if (++nodes_ > budget_) return;
-    const std::size_t mark = current_.size();
-    for (bool changed = true; changed;) {  // degree-0 and degree-1 reductions
-      changed = false;
-      for_each(P, [&](int v) {
-        if (!has(P, v)) return;
-        const int d = degree(v, P);
-        if (d > 1) return;
-        if (d == 1) drop(P, first_neighbour(v, P));
-        drop(P, v);
-        current_.push_back(v);
-        changed = true;
-      });
-    }
-    int remaining = 0, matched = 0, pick = -1, pick_degree = -1;
-    std::vector<Word> Q = P;
-    for_each(P, [&](int v) {
-      ++remaining;
-      const int d = degree(v, P);
-      if (d > pick_degree) {
-        pick_degree = d;
-        pick = v;
-      }
-      if (!has(Q, v)) return;
-      drop(Q, v);
-      const int u = first_neighbour(v, Q);
-      if (u >= 0) {
-        drop(Q, u);
-        ++matched;
-      }
-    });
-    const int size = static_cast<int>(current_.size());
-    if (remaining == 0) {
-      if (size > best_size_) {
-        best_size_ = size;
-        best_ = current_;
-      }
-    } else if (size + remaining - matched > best_size_) {
-      std::vector<Word> without = P;
-      drop(without, pick);
-      // Take `pick`: its neighbours go.
-      const Word* r = row(pick);
-      for (int i = 0; i < w_; ++i) P[static_cast<std::size_t>(i)] &= ~r[i];
-      drop(P, pick);
-      current_.push_back(pick);
-      search(std::move(P));
-      current_.pop_back();
-      if (nodes_ <= budget_) search(std::move(without));
-    }
-    current_.resize(mark);
-  }
-
-  int n_, w_;
-  BitRows& g_;
-  long budget_;
-  long& nodes_;
-  int best_size_ = 0;
-  std::vector<int> best_, current_;
-};
-
 // The subproblem of v: v's later neighbours in the degeneracy order that could be in a clique
 // larger than `best`, pruned to the local (|best| - 1)-core. Returns the clique found (with v),
-// or empty.
+// or empty. When the budget stops it, `complete` becomes false and `bound` at least the bound on
+// cliques through v it reached.
 std::vector<int> solve_subproblem(const detail::LevelCsr& g, const detail::CoreDecomposition& cd,
-                                  int v, int best, long budget, long& nodes, bool& complete,
-                                  std::vector<int>& local) {
+                                  int v, int best, detail::SearchBudget& budget, bool& complete,
+                                  int& bound, std::vector<int>& local) {
   std::vector<int> cand;
   const int pv = cd.position[static_cast<std::size_t>(v)];
   for (const int* w = g.begin(v); w != g.end(v); ++w)
@@ -287,39 +54,22 @@ std::vector<int> solve_subproblem(const detail::LevelCsr& g, const detail::CoreD
   const int n = static_cast<int>(cand.size());
   for (int i = 0; i < n; ++i)
     local[static_cast<std::size_t>(cand[static_cast<std::size_t>(i)])] = i;
-  // Local edges; a near-complete subproblem is solved on its sparse complement.
-  std::size_t edges = 0;
+  // The subproblem as bits (a near-complete one is searched on its sparse complement).
+  detail::BitGraph local_graph(n);
   for (int i = 0; i < n; ++i)
     for (const int* w = g.begin(cand[static_cast<std::size_t>(i)]);
-         w != g.end(cand[static_cast<std::size_t>(i)]); ++w)
-      edges += local[static_cast<std::size_t>(*w)] > i;
-  const bool dense = n >= kDenseMinSize && edges >= kDenseFraction * 0.5 * n * (n - 1.0);
-  std::vector<int> found;
-  if (dense) {
-    BitRows complement(n);
-    std::vector<char> row(static_cast<std::size_t>(n));
-    for (int i = 0; i < n; ++i) {
-      std::fill(row.begin(), row.end(), 0);
-      for (const int* w = g.begin(cand[static_cast<std::size_t>(i)]);
-           w != g.end(cand[static_cast<std::size_t>(i)]); ++w) {
-        const int j = local[static_cast<std::size_t>(*w)];
-        if (j >= 0) row[static_cast<std::size_t>(j)] = 1;
-      }
-      for (int j = i + 1; j < n; ++j)
-        if (!row[static_cast<std::size_t>(j)]) complement.connect(i, j);
+         w != g.end(cand[static_cast<std::size_t>(i)]); ++w) {
+      const int j = local[static_cast<std::size_t>(*w)];
+      if (j > i) local_graph.connect(i, j);
     }
-    for (int a : cand) local[static_cast<std::size_t>(a)] = -1;
-    found = MisSearch(complement, budget, nodes).solve(best - 1, complete);  // with v: > best
-  } else {
-    BitRows local_graph(n);
-    for (int i = 0; i < n; ++i)
-      for (const int* w = g.begin(cand[static_cast<std::size_t>(i)]);
-           w != g.end(cand[static_cast<std::size_t>(i)]); ++w) {
-        const int j = local[static_cast<std::size_t>(*w)];
-        if (j > i) local_graph.connect(i, j);
-      }
-    for (int a : cand) local[static_cast<std::size_t>(a)] = -1;
-    found = BitSearch(local_graph, budget, nodes).solve(best - 1, complete);  // with v: > best
+  for (int a : cand) local[static_cast<std::size_t>(a)] = -1;
+  bool finished = true;
+  int sub_bound = 0;
+  const std::vector<int> found =  // with v: larger than best
+      detail::max_clique_bits(local_graph, best - 1, budget, finished, sub_bound);
+  if (!finished) {
+    complete = false;
+    bound = std::max(bound, sub_bound + 1);
   }
   if (found.empty()) return {};
   std::vector<int> clique{v};
@@ -350,22 +100,35 @@ bool colouring_proves(const detail::LevelCsr& g, const detail::CoreDecomposition
 
 // The exact search from the clique `best`: one subproblem per vertex that could be in a larger
 // one, from the end of the degeneracy order (the densest part first, where large cliques are).
+// When the budget runs out, `optimal` is false and `bound` an upper bound on the clique number:
+// the largest bound of an interrupted subproblem or core number + 1 of a vertex not searched.
 std::vector<int> search_from(const detail::LevelCsr& csr, const detail::CoreDecomposition& cd,
-                             std::vector<int> best, long max_nodes, bool& optimal) {
+                             std::vector<int> best, detail::SearchBudget& budget, bool& optimal,
+                             int& bound) {
   optimal = true;
+  bound = 0;
   if (!best.empty() && colouring_proves(csr, cd, static_cast<int>(best.size()))) {
     std::sort(best.begin(), best.end());
+    bound = static_cast<int>(best.size());
     return best;
   }
   std::vector<int> local(static_cast<std::size_t>(csr.size()), -1);
-  long nodes = 0;
-  for (int i = csr.size() - 1; i >= 0 && optimal; --i) {
+  int i = csr.size() - 1;
+  for (; i >= 0 && !budget.exhausted(); --i) {
     const int v = cd.order[static_cast<std::size_t>(i)];
     const int size = static_cast<int>(best.size());
     if (cd.core[static_cast<std::size_t>(v)] < size) continue;  // in no clique larger than best
-    std::vector<int> c = solve_subproblem(csr, cd, v, size, max_nodes, nodes, optimal, local);
+    std::vector<int> c = solve_subproblem(csr, cd, v, size, budget, optimal, bound, local);
     if (c.size() > best.size()) best = std::move(c);
   }
+  for (; i >= 0; --i) {  // not searched: a clique through v has at most core(v) + 1 vertices
+    const int c = cd.core[static_cast<std::size_t>(cd.order[static_cast<std::size_t>(i)])];
+    if (c >= static_cast<int>(best.size())) {
+      optimal = false;
+      bound = std::max(bound, c + 1);
+    }
+  }
+  bound = std::max(bound, static_cast<int>(best.size()));
   std::sort(best.begin(), best.end());
   return best;
 }
@@ -373,14 +136,23 @@ std::vector<int> search_from(const detail::LevelCsr& csr, const detail::CoreDeco
 }  // namespace
 
 std::vector<int> detail::larger_clique(const PyramidGraph& g, int level, std::vector<int> best,
-                                       long max_nodes, bool& optimal) {
+                                       long max_nodes, bool& optimal, int* bound) {
   optimal = true;
+  if (bound) *bound = static_cast<int>(best.size());
   if (g.vertices == 0) return best;
   const detail::LevelCsr csr = detail::level_csr(g, level);
-  return search_from(csr, detail::core_decomposition(csr), std::move(best), max_nodes, optimal);
+  detail::SearchBudget budget;
+  budget.max_nodes = max_nodes > 0 ? max_nodes : -1;
+  if (max_nodes <= 0) budget.out_of_nodes = true;  // no search: only the colouring's proof
+  int reached = 0;
+  best =
+      search_from(csr, detail::core_decomposition(csr), std::move(best), budget, optimal, reached);
+  if (bound) *bound = reached;
+  return best;
 }
 
-CliqueResult exact_max_clique(const PyramidGraph& g, int level, const CliqueParams& p) {
+CliqueResult detail::exact_level(const PyramidGraph& g, int level, const CliqueParams& p,
+                                 SearchBudget& budget) {
   const auto t0 = std::chrono::steady_clock::now();
   CliqueResult r;
   r.level = level;
@@ -389,12 +161,25 @@ CliqueResult exact_max_clique(const PyramidGraph& g, int level, const CliquePara
     const detail::LevelCsr csr = detail::level_csr(g, level);
     const detail::CoreDecomposition cd = detail::core_decomposition(csr);
     detail::Marks marks(g.vertices);
-    r.vertices = search_from(csr, cd, detail::greedy_clique(csr, cd.core, 32, marks),
-                             p.exact_max_nodes, r.optimal);
+    r.vertices =
+        search_from(csr, cd, detail::greedy_clique(csr, cd.core, p.greedy_starts * 8, marks),
+                    budget, r.optimal, r.upper_bound);
   }
+  r.budget = r.optimal            ? CliqueBudget::none
+             : budget.out_of_time ? CliqueBudget::time
+                                  : CliqueBudget::nodes;
   r.time_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   return r;
+}
+
+CliqueResult exact_max_clique(const PyramidGraph& g, int level, const CliqueParams& p) {
+  detail::SearchBudget budget;
+  budget.max_nodes = p.exact_max_nodes;
+  if (p.exact_time_budget_ms > 0)
+    budget.deadline = detail::SearchBudget::Clock::now() +
+                      std::chrono::microseconds(static_cast<long>(p.exact_time_budget_ms * 1000));
+  return detail::exact_level(g, level, p, budget);
 }
 
 }  // namespace pagor

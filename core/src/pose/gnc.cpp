@@ -30,8 +30,9 @@ double rotation_angle_deg(const Eigen::Matrix3d& R) {
 bool weighted_rigid_transform(const std::vector<Eigen::Vector3d>& src,
                               const std::vector<Eigen::Vector3d>& dst, const std::vector<double>& w,
                               PoseModel model, Transform& T) {
-  // Rotation dimension: SE(3) estimates a 3-D rotation; SE(2) and 4-DoF only a yaw.
-  const int dim = model == PoseModel::se3 ? 3 : 2;
+  // Rotation dimension: SE(3) (and `automatic` called directly) estimates a 3-D rotation; SE(2)
+  // and 4-DoF only a yaw.
+  const int dim = model == PoseModel::se3 || model == PoseModel::automatic ? 3 : 2;
   double wsum = 0;
   Eigen::Vector3d ps = Eigen::Vector3d::Zero(), qs = Eigen::Vector3d::Zero();
   int support = 0;
@@ -77,8 +78,37 @@ bool weighted_rigid_transform(const std::vector<Eigen::Vector3d>& src,
   return true;
 }
 
+namespace {
+
+PoseEstimate gnc_one_model(const std::vector<Eigen::Vector3d>& src,
+                           const std::vector<Eigen::Vector3d>& dst, const GncParams& p);
+
+}  // namespace
+
 PoseEstimate estimate_pose_gnc(const std::vector<Eigen::Vector3d>& src,
                                const std::vector<Eigen::Vector3d>& dst, const GncParams& p) {
+  if (p.model != PoseModel::automatic) return gnc_one_model(src, dst, p);
+  // Both models; the simpler one where it explains the correspondences as well.
+  const auto t0 = std::chrono::steady_clock::now();
+  GncParams level = p;
+  level.model = PoseModel::four_dof;
+  PoseEstimate four = gnc_one_model(src, dst, level);
+  if (src.size() >= static_cast<std::size_t>(minimal_sample_size(PoseModel::se3))) {
+    GncParams full = p;
+    full.model = PoseModel::se3;
+    PoseEstimate se3 = gnc_one_model(src, dst, full);
+    if (se3.valid && (!four.valid || se3.inliers.size() > four.inliers.size()))
+      four = std::move(se3);
+  }
+  four.time_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  return four;
+}
+
+namespace {
+
+PoseEstimate gnc_one_model(const std::vector<Eigen::Vector3d>& src,
+                           const std::vector<Eigen::Vector3d>& dst, const GncParams& p) {
   const auto t0 = std::chrono::steady_clock::now();
   auto finish = [&](PoseEstimate& e) {
     e.time_ms =
@@ -86,6 +116,7 @@ PoseEstimate estimate_pose_gnc(const std::vector<Eigen::Vector3d>& src,
     return e;
   };
   PoseEstimate est;
+  est.model = p.model;
   const std::size_t n = src.size();
   const std::size_t needed = static_cast<std::size_t>(minimal_sample_size(p.model));
   if (n < needed || dst.size() != n) {
@@ -148,5 +179,7 @@ PoseEstimate estimate_pose_gnc(const std::vector<Eigen::Vector3d>& src,
   est.T_target_source = T;
   return finish(est);
 }
+
+}  // namespace
 
 }  // namespace pagor

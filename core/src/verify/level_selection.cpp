@@ -1,16 +1,41 @@
 #include "pagor/verify/level_selection.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace pagor {
 
-VerificationResult select_without_clouds(const std::vector<PoseEstimate>& candidates) {
+VerificationResult select_without_clouds(const std::vector<PoseEstimate>& candidates,
+                                         const std::vector<Correspondence>& correspondences,
+                                         double bound) {
   VerificationResult r;
   r.scores.assign(candidates.size(), HUGE_VAL);
+  r.support.assign(candidates.size(), 0);
+  r.support_scores.assign(candidates.size(), HUGE_VAL);
   for (std::size_t l = 0; l < candidates.size(); ++l) {
-    if (!candidates[l].valid) continue;
-    if (r.selected < 0 || candidates[l].inliers.size() >
-                              candidates[static_cast<std::size_t>(r.selected)].inliers.size())
+    const PoseEstimate& e = candidates[l];
+    if (!e.valid) continue;
+    const Eigen::Matrix3d R = e.T_target_source.block<3, 3>(0, 0);
+    const Eigen::Vector3d t = e.T_target_source.block<3, 1>(0, 3);
+    double S = 0;
+    int within = 0;
+    for (const Correspondence& c : correspondences) {
+      Eigen::Vector3d d = R * c.p + t - c.q;
+      if (e.model == PoseModel::se2) d.z() = 0;
+      const double residual = d.norm();
+      S += std::min(residual, bound);
+      within += residual <= bound;
+    }
+    r.support_scores[l] = S;
+    r.support[l] = within;
+    if (r.selected < 0) {
+      r.selected = static_cast<int>(l);
+      continue;
+    }
+    const auto best = static_cast<std::size_t>(r.selected);
+    const double b = r.support_scores[best];
+    const bool tie = std::abs(S - b) <= 1e-9 * std::max(1.0, std::abs(b));
+    if ((!tie && S < b) || (tie && e.inliers.size() > candidates[best].inliers.size()))
       r.selected = static_cast<int>(l);
   }
   return r;

@@ -47,6 +47,7 @@ std::string format(const char* fmt, A... args) {
 std::vector<int> free_coordinates(PoseModel model) {
   switch (model) {
     case PoseModel::se3:
+    case PoseModel::automatic:  // the pipeline passes the model GNC kept; any rotation otherwise
       return {0, 1, 2, 3, 4, 5};
     case PoseModel::four_dof:
       return {2, 3, 4, 5};

@@ -32,6 +32,36 @@ inline const auto& enum_entries(CliqueSolver) {
   return kCliqueSolvers;
 }
 
+/// How a level's search started.
+enum class CliqueStart {
+  cold,      ///< from greedy cliques of this level (the first level, or independent levels)
+  warm,      ///< from the previous level's clique and relaxation vector (cascaded, Alg. 1)
+  fallback,  ///< cascaded, but a greedy clique of this level beat the warm start: started cold
+};
+inline constexpr EnumEntry<CliqueStart> kCliqueStarts[] = {
+    {CliqueStart::cold, "cold", "from greedy cliques of this level"},
+    {CliqueStart::warm, "warm", "from the previous level's clique and relaxation vector"},
+    {CliqueStart::fallback, "fallback", "a greedy clique beat the warm start: started cold"},
+};
+inline const auto& enum_entries(CliqueStart) {
+  return kCliqueStarts;
+}
+
+/// Which budget, if any, stopped a level's clique search.
+enum class CliqueBudget {
+  none,   ///< no search was cut short
+  nodes,  ///< a branch-and-bound node budget ran out
+  time,   ///< the wall-time budget ran out
+};
+inline constexpr EnumEntry<CliqueBudget> kCliqueBudgets[] = {
+    {CliqueBudget::none, "none", "no search was cut short"},
+    {CliqueBudget::nodes, "nodes", "a node budget ran out"},
+    {CliqueBudget::time, "time", "the time budget ran out"},
+};
+inline const auto& enum_entries(CliqueBudget) {
+  return kCliqueBudgets;
+}
+
 /// The densest-clique solver (CLIPPER relaxation) and the exact search.
 struct CliqueParams {
   CliqueSolver solver = CliqueSolver::cascaded;  ///< solver
@@ -52,9 +82,16 @@ struct CliqueParams {
   /// cascaded: a warm-started level begins with this fraction of the previous level's final
   /// penalty d (1: continue where the previous level stopped; 0: from d = 0).
   double warm_start_penalty = 1.0;
-  long exact_max_nodes = 20000000;  ///< exact: branch-and-bound node budget
+  long exact_max_nodes = 20000000;  ///< exact: branch-and-bound node budget (all levels)
+  /// exact: wall-time budget of the whole pyramid [ms]; a level may use what the levels before it
+  /// left of their share; 0: none
+  double exact_time_budget_ms = 1000.0;
   int greedy_starts = 4;  ///< greedy cliques grown from the highest cores for the lower bound
   int max_swaps = 64;     ///< improving swaps (one member out, two in) tried on the rounded clique
+  /// cascaded: a warm-started level whose clique its check (a colouring, then the search of
+  /// cascade_check_nodes) does not prove maximum is also solved from the cold start (as the
+  /// independent solver does); the larger clique is kept
+  bool cascade_fallback = true;
   /// cascaded: node budget of the exact search for a larger clique that ends each warm-started
   /// level (a warm start can settle in a worse local optimum than a cold one); 0: no search
   long cascade_check_nodes = 200000;
@@ -97,19 +134,29 @@ struct CliqueParams {
        "penalty d (1: where it stopped; 0: from d = 0).",
        "", Range::closed(0, 1)});
     v(&CliqueParams::exact_max_nodes,
-      {"exact_max_nodes", "Exact solver: branch-and-bound nodes, at most.", "",
-       Range::closed(1, 1e12), std::numeric_limits<double>::quiet_NaN(), true});
+      {"exact_max_nodes", "Exact solver: branch-and-bound nodes over all levels, at most.", "",
+       Range::closed(1, 1e10), std::numeric_limits<double>::quiet_NaN(), true});
+    v(&CliqueParams::exact_time_budget_ms,
+      {"exact_time_budget_ms",
+       "Exact solver: wall time of all levels, at most (a level may use what earlier ones left); "
+       "the best clique found is returned, marked not proven, with the bound reached; 0: none.",
+       "ms", Range::closed(1, 3.6e6), 0.0, true});
     v(&CliqueParams::greedy_starts,
       {"greedy_starts", "Greedy cliques grown from the highest cores for the pruning's bound.", "",
        Range::closed(1, 1000)});
     v(&CliqueParams::max_swaps,
       {"max_swaps", "Improving swaps (one member out, two in) tried on the rounded clique.", "",
        Range::closed(0, 100000)});
+    v(&CliqueParams::cascade_fallback,
+      {"cascade_fallback",
+       "Cascaded: a warm-started level whose clique its check (a colouring, then the search of "
+       "cascade_check_nodes) does not prove maximum is also solved from the cold start; the "
+       "larger clique is kept (start 'fallback' when it wins)."});
     v(&CliqueParams::cascade_check_nodes,
       {"cascade_check_nodes",
        "Cascaded: node budget of the exact search for a larger clique that ends each "
        "warm-started level; 0: no search.",
-       "", Range::closed(0, 1e12), std::numeric_limits<double>::quiet_NaN(), true});
+       "", Range::closed(0, 1e10), std::numeric_limits<double>::quiet_NaN(), true});
     v(&CliqueParams::max_step,
       {"max_step", "The largest gradient step tried; beyond it a step only renormalises.", "",
        Range::above(0, 1e12), std::numeric_limits<double>::quiet_NaN(), true});
@@ -127,7 +174,12 @@ struct CliqueResult {
   /// whether the clique is proven maximum on its level: the exact solver's search, or a cascaded
   /// level's search for a larger clique, finished within its budget
   bool optimal = false;
-  double time_ms = 0.0;  ///< wall time [ms]
+  /// an upper bound on the level's clique number that the search reached (the clique's size when
+  /// proven; 0 when no bound was computed)
+  int upper_bound = 0;
+  CliqueBudget budget = CliqueBudget::none;  ///< which budget cut a search short
+  CliqueStart start = CliqueStart::cold;     ///< how the level's search started
+  double time_ms = 0.0;                      ///< wall time [ms]
 };
 
 /// CLIPPER relaxation on level `level` from `u0` (any non-negative vector of the graph's size; it
@@ -147,9 +199,10 @@ std::vector<double> random_start(int size, std::uint64_t seed);
 /// Exact maximum clique on level `level`: one subproblem per vertex of the core that can hold a
 /// larger clique than the best so far (the vertex and its later neighbours in the degeneracy
 /// order), each solved by branch and bound on bitsets with greedy-colouring bounds, or, when it is
-/// near-complete, as a maximum independent set of its sparse complement.
-/// Stops after `params.exact_max_nodes` search nodes with the best clique so far and
-/// `optimal = false`.
+/// near-complete, as a maximum independent set of its sparse complement. Anytime: when the node
+/// budget (`params.exact_max_nodes`) or the time budget (`params.exact_time_budget_ms`) runs out
+/// it returns the best clique so far with `optimal = false`, the bound reached in `upper_bound`
+/// and the budget in `budget`.
 CliqueResult exact_max_clique(const PyramidGraph& graph, int level, const CliqueParams& params);
 
 /// One clique per level, in level order, with the solver `params.solver` selects.

@@ -17,29 +17,39 @@ enum class PoseModel {
   se3,       ///< rotation and translation in 3D (outdoor)
   se2,       ///< yaw and planar translation (planar robots, scan vs floor plan)
   four_dof,  ///< yaw and 3-D translation, roll and pitch held level (ground vehicles, as Quatro)
+  /// SE(3) and 4-DoF both fitted; 4-DoF kept where it explains the correspondences as well (as
+  /// many inliers), else SE(3): any rotation, and level poses where the data is gravity-aligned
+  automatic,
 };
 inline constexpr EnumEntry<PoseModel> kPoseModels[] = {
     {PoseModel::se3, "se3", "rotation and translation in 3-D"},
     {PoseModel::se2, "se2", "yaw and planar translation (planar robots, scan vs floor plan)"},
     {PoseModel::four_dof, "four_dof",
      "yaw and 3-D translation, roll and pitch held level (ground vehicles)"},
+    {PoseModel::automatic, "auto",
+     "fit SE(3) and 4-DoF; keep 4-DoF where it has as many inliers (gravity-aligned data), else "
+     "SE(3)"},
 };
 inline const auto& enum_entries(PoseModel) {
   return kPoseModels;
 }
 
-/// The fewest correspondences that fix a pose of the model: 3 in SE(3), 2 in SE(2) and 4-DoF.
+/// The fewest correspondences that fix a pose of the model: 3 in SE(3), 2 in SE(2) and 4-DoF (and
+/// with `automatic`, whose 4-DoF fit needs 2).
 inline int minimal_sample_size(PoseModel model) {
   return model == PoseModel::se3 ? 3 : 2;
 }
 
 /// GNC with a truncated least-squares cost.
 struct GncParams {
-  PoseModel model = PoseModel::se3;  ///< pose model
+  PoseModel model = PoseModel::se3;  ///< pose model (the presets set their own)
   double noise_bound = 1.0;          ///< TLS truncation: residuals beyond are outliers [m]
   double mu_factor = 1.4;            ///< GNC continuation factor, > 1
   int max_iterations = 100;          ///< GNC iterations
   double cost_tolerance = 1e-6;      ///< stop when the TLS cost changes less [m^2]
+  /// automatic, with clouds: both scans' ground within this angle of level makes the pair
+  /// gravity-aligned, and its poses 4-DoF (gravity.hpp) [deg]
+  double level_tolerance = 5.0;
 
   template <class V>
   static void fields(V&& v) {
@@ -52,6 +62,12 @@ struct GncParams {
     v(&GncParams::cost_tolerance,
       {"cost_tolerance", "GNC stops when the TLS cost changes less than this.", "m^2",
        Range::above(0, 1e6), std::numeric_limits<double>::quiet_NaN(), true});
+    v(&GncParams::level_tolerance,
+      {"level_tolerance",
+       "Model auto with clouds: when both scans' ground plane is within this angle of level, the "
+       "pair is gravity-aligned and its poses are 4-DoF; otherwise each level keeps 4-DoF only "
+       "where it has as many inliers as SE(3).",
+       "deg", Range::closed(0, 90)});
   }
 };
 
@@ -61,8 +77,11 @@ struct PoseEstimate {
   Transform T_target_source = Transform::Identity();  ///< maps source points into the target frame
   std::vector<int> inliers;  ///< indices (into the input lists) with residual <= noise bound
   int iterations = 0;        ///< GNC iterations run
-  std::string failure;       ///< why it is invalid
-  double time_ms = 0.0;      ///< wall time [ms]
+  /// the model the pose was fitted in: the configured one, or for `automatic` the one kept
+  /// (se3 or four_dof)
+  PoseModel model = PoseModel::se3;
+  std::string failure;   ///< why it is invalid
+  double time_ms = 0.0;  ///< wall time [ms]
 };
 
 /// Weighted least-squares rigid transform (Horn/Umeyama without scale) mapping `src` onto `dst`.
@@ -75,7 +94,9 @@ bool weighted_rigid_transform(const std::vector<Eigen::Vector3d>& src,
 
 /// GNC-TLS. `src` and `dst` have the same length. In SE(2), residuals are measured in the x-y
 /// plane (in 4-DoF in 3-D). Fewer than 3 correspondences (2 in SE(2) and 4-DoF), or a degenerate
-/// set, gives an invalid estimate.
+/// set, gives an invalid estimate. With `PoseModel::automatic` both SE(3) and 4-DoF are fitted and
+/// the 4-DoF pose is kept when it has at least as many inliers as the SE(3) one (or SE(3) has no
+/// valid pose); the estimate's `model` says which.
 PoseEstimate estimate_pose_gnc(const std::vector<Eigen::Vector3d>& src,
                                const std::vector<Eigen::Vector3d>& dst,
                                const GncParams& params = {});

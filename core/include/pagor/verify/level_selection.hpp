@@ -1,19 +1,28 @@
 #pragma once
 /// \file level_selection.hpp
 /// Which level's candidate to select when there are no clouds to verify on (a matcher's
-/// correspondences alone): without a score D, the candidates are judged by their
-/// correspondences only.
+/// correspondences alone). Verification scores a candidate on the dense clouds; without them it
+/// is scored the same way on the correspondences: S = sum_i min(|T p_i - q_i|, c) over *every*
+/// correspondence i, not only the level's clique, with c the GNC noise bound. A clique of
+/// spurious agreement (e.g. points matched to themselves near the sensor, a near-identity pose)
+/// explains itself but few of the other correspondences; the true pose explains the true
+/// correspondences of every level.
 
 #include <vector>
 
 #include "pagor/pose/gnc.hpp"
+#include "pagor/types.hpp"
 #include "pagor/verify/verification.hpp"
 
 namespace pagor {
 
-/// Selects among `candidates` (one per level) without clouds: the valid candidate with the most
-/// GNC inliers, the lower level on a tie. Every score is +infinity (there is no D); `selected` is
-/// -1 when no candidate is valid.
-VerificationResult select_without_clouds(const std::vector<PoseEstimate>& candidates);
+/// Selects among `candidates` (one per level) by S over `correspondences` with truncation
+/// `bound` [m] (residuals in the x-y plane for SE(2) candidates): the lowest S wins; ties (to 1e-9
+/// relative) go to more GNC inliers, then to the lower level. `scores` stay +infinity (there is no
+/// D); `support` and `support_scores` hold each candidate's count of correspondences within
+/// `bound` and its S (+infinity when invalid); `selected` is -1 when no candidate is valid.
+VerificationResult select_without_clouds(const std::vector<PoseEstimate>& candidates,
+                                         const std::vector<Correspondence>& correspondences,
+                                         double bound);
 
 }  // namespace pagor

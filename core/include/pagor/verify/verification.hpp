@@ -96,6 +96,11 @@ struct VerificationResult {
   /// reuses it instead of searching again). Empty when nothing was selected.
   std::vector<float> selected_distances;
   float distance_bound = 0.0f;  ///< [m]: mu, or +infinity for ScoreKind::nearest
+  /// Selection without clouds (level_selection.hpp), per candidate: the correspondences its pose
+  /// explains within the bound, and its score S on them [m] (+infinity when invalid). Empty when
+  /// the candidates were verified on clouds.
+  std::vector<int> support;
+  std::vector<double> support_scores;
 };
 
 /// Scores every valid candidate and selects the lowest D. Ties (equal D to 1e-9 relative) go to

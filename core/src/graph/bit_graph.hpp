@@ -1,0 +1,110 @@
+#pragma once
+// Internal to the clique solvers: a graph on a few hundred or thousand local vertices as rows of
+// bits (row v: the neighbours of v), for the operations a clique search repeats — intersecting a
+// candidate set with a neighbourhood, counting a vertex's neighbours in a set — one word at a time.
+
+#include <chrono>
+#include <cstdint>
+#include <vector>
+
+#include "pagor/graph/pyramid_graph.hpp"
+
+namespace pagor::detail {
+
+using Word = std::uint64_t;
+
+inline int words_for(int n) {
+  return (n + 63) / 64;
+}
+inline bool test_bit(const Word* set, int v) {
+  return (set[v >> 6] >> (v & 63)) & 1;
+}
+inline void set_bit(Word* set, int v) {
+  set[v >> 6] |= Word(1) << (v & 63);
+}
+inline void clear_bit(Word* set, int v) {
+  set[v >> 6] &= ~(Word(1) << (v & 63));
+}
+
+/// Set bits of a & b over `words` words (the hardware instruction where the CPU has it).
+int count_and(const Word* a, const Word* b, int words);
+/// Set bits of a over `words` words.
+int count_bits(const Word* a, int words);
+
+/// Calls f(v) for every set bit v of `set`, in increasing order.
+template <typename F>
+void for_each_bit(const Word* set, int words, F&& f) {
+  for (int i = 0; i < words; ++i)
+    for (Word x = set[i]; x; x &= x - 1) f(i * 64 + __builtin_ctzll(x));
+}
+
+/// A graph on local vertices 0..n-1 as rows of bits; `ids` maps them to the pyramid's vertices.
+class BitGraph {
+ public:
+  BitGraph() = default;
+  explicit BitGraph(int n)
+      : n_(n),
+        w_(words_for(n)),
+        bits_(static_cast<std::size_t>(n) * static_cast<std::size_t>(words_for(n)), 0) {}
+  int size() const { return n_; }
+  int words() const { return w_; }
+  Word* row(int v) { return bits_.data() + static_cast<std::size_t>(v) * w_; }
+  const Word* row(int v) const { return bits_.data() + static_cast<std::size_t>(v) * w_; }
+  void connect(int a, int b) {
+    set_bit(row(a), b);
+    set_bit(row(b), a);
+  }
+  bool adjacent(int a, int b) const { return test_bit(row(a), b); }
+  int degree(int v) const { return count_bits(row(v), w_); }
+  /// Every vertex, as a set of bits.
+  std::vector<Word> all() const;
+  /// Interface of the clique helpers (clique_graph.hpp).
+  template <typename F>
+  void for_each_neighbor(int v, F&& f) const {
+    for_each_bit(row(v), w_, f);
+  }
+
+  std::vector<int> ids;  ///< local vertex -> pyramid vertex
+
+ private:
+  int n_ = 0, w_ = 0;
+  std::vector<Word> bits_;
+};
+
+/// Level `level` of `g` induced by `vertices` (pyramid ids, any order; local vertex i is
+/// vertices[i]). `local` is scratch of g.vertices entries, all -1 on entry and on return.
+BitGraph induce_bits(const PyramidGraph& g, int level, const std::vector<int>& vertices,
+                     std::vector<int>& local);
+
+/// What a search may spend: branch-and-bound nodes and wall time. Shared by the searches of one
+/// level so that the budget is the level's.
+struct SearchBudget {
+  using Clock = std::chrono::steady_clock;
+  long max_nodes = 0;                                     ///< 0: none
+  Clock::time_point deadline = Clock::time_point::max();  ///< max(): none
+  long nodes = 0;                                         ///< spent so far
+  bool out_of_nodes = false, out_of_time = false;         ///< which limit stopped a search
+  /// Counts one node; false once a limit is reached (the clock is read every 256 nodes).
+  bool spend() {
+    ++nodes;
+    if (max_nodes > 0 && nodes > max_nodes) out_of_nodes = true;
+    if ((nodes & 255) == 0 && deadline != Clock::time_point::max() && Clock::now() > deadline)
+      out_of_time = true;
+    return !exhausted();
+  }
+  bool exhausted() const { return out_of_nodes || out_of_time; }
+};
+
+/// A maximum clique of `g` if it has more than `lower` vertices, else empty (local ids). Branch
+/// and bound with greedy-colouring bounds on bits (MCQ/BBMC); a graph of at least 32 vertices and
+/// 90 % density is searched as a maximum independent set of its sparse complement instead.
+/// `complete` becomes false when the budget stopped the search (the clique is then the best
+/// found); `upper_bound` receives a bound on the clique number (exact when complete).
+std::vector<int> max_clique_bits(const BitGraph& g, int lower, SearchBudget& budget, bool& complete,
+                                 int& upper_bound);
+
+/// The largest clique found greedily from up to `starts` vertices of highest degree: each step
+/// takes the candidate with most neighbours among the candidates (local ids, sorted).
+std::vector<int> greedy_clique_bits(const BitGraph& g, int starts);
+
+}  // namespace pagor::detail
