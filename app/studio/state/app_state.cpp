@@ -66,10 +66,12 @@ PairSource resolved_data(const AppState& s) {
   // Each kind of data keeps to its own fields: the files of files mode (a ground-truth file above
   // all) must not replace what a KITTI pair or the synthetic scene knows.
   if (d.kind != PairSource::Kind::files)
-    d.source = d.source_labels = d.target = d.target_labels = d.ground_truth = "";
+    d.source = d.source_labels = d.target = d.target_labels = d.ground_truth = d.correspondences =
+        "";
   if (d.kind != PairSource::Kind::kitti) d.kitti_root = "";
   for (std::string* p :
-       {&d.kitti_root, &d.source, &d.source_labels, &d.target, &d.target_labels, &d.ground_truth})
+       {&d.kitti_root, &d.source, &d.source_labels, &d.target, &d.target_labels, &d.ground_truth,
+        &d.correspondences})
     *p = resolve(*p, base);
   return d;
 }

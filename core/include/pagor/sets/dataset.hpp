@@ -23,6 +23,9 @@ struct PairSource {
   std::string source, source_labels;  ///< source cloud and optional `.label` file
   std::string target, target_labels;  ///< target cloud and optional `.label` file
   std::string ground_truth;  ///< optional 4x4 `T_target_source` file; replaces any other truth
+  /// Optional matcher's correspondences file (correspondence_file.hpp) for the studio; not read by
+  /// load_pair (the pipeline takes them through set_matches).
+  std::string correspondences;
   /// The numbering of both clouds' labels, a built-in scheme's name (`none`: read them without
   /// labels); empty: the configuration's `label_scheme`.
   std::string label_scheme;
