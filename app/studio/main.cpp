@@ -35,8 +35,8 @@ std::vector<cli::Option> studio_options() {
   const std::vector<cli::Option> more = {
       {"pairs", 1, "FILE", "pairs file to step through"},
       {"correspondences", 1, "FILE",
-       "a matcher's correspondences for the file pair (px py pz qx qy qz [weight [inlier]]): they "
-       "replace the landmark ones, or join them with 'fuse with landmarks'"},
+       "a matcher's correspondences (px py pz qx qy qz [weight [inlier]] per line), as pagor "
+       "register --correspondences: alone, or verified on --source/--target"},
       {"config", 1, "FILE", "configuration JSON"},
       {"session", 1, "FILE", "session JSON (data, parameters, camera, layers, level)"},
       {"headless", 0, "", "render offscreen through OSMesa (no display needed)"},
@@ -68,9 +68,16 @@ AppState state_from_args(const cli::Args& args) {
     s.base_dir.clear();  // paths given on the command line are relative to the working directory
   }
   if (args.has("correspondences")) {
-    if (s.data.kind != PairSource::Kind::files)
-      throw cli::UsageError("--correspondences goes with a file pair (--source S --target T)");
-    s.data.correspondences = args.get("correspondences");
+    if (s.have_data && s.data.kind != PairSource::Kind::files)
+      throw cli::UsageError("--correspondences goes alone or with a file pair (--source --target)");
+    if (s.data.kind != PairSource::Kind::files) {
+      s.data = PairSource();
+      s.data.kind = PairSource::Kind::files;
+    }
+    // Absolute: a session's relative paths are taken from its directory, these from here.
+    if (args.has("ground-truth")) s.data.ground_truth = absolute_path(args.get("ground-truth"));
+    s.data.correspondences = absolute_path(args.get("correspondences"));
+    s.have_data = true;
   }
   if (args.has("pairs")) {
     s.pairs_file = args.get("pairs");

@@ -27,10 +27,11 @@ def figures(r):
         "acceptance": r["acceptance"],
         "ground_truth": r["ground_truth"],
         "diagnosis": r["diagnosis"],
+        "correspondences.inlier_flags": r.get("correspondences", {}).get("inlier_flags"),
     }
     for i, level in enumerate(r["levels"]):
         for key in ("epsilon", "clique", "score_D", "T_target_source", "translation_error_m",
-                    "rotation_error_deg", "success"):
+                    "rotation_error_deg", "success", "precision", "recall", "true_inliers"):
             out["levels[%d].%s" % (i, key)] = level.get(key)
     if out["diagnosis"] is not None:
         out["diagnosis"] = dict(out["diagnosis"])

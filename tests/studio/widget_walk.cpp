@@ -68,6 +68,7 @@ void act_on_text(UiDriver& d, const WidgetRecord& w) {
       s.data.kitti_root == expected || s.data.sequence == expected || s.data.source == expected ||
       s.data.source_labels == expected || s.data.target == expected ||
       s.data.target_labels == expected || s.data.ground_truth == expected ||
+      s.data.correspondences == expected ||
       s.pairs_file == expected || s.session_path == expected || s.screenshot_path == expected ||
       s.bench.path == expected || s.bench.kitti_root == expected || s.bench.sequence == expected ||
       s.bench.config_path == expected || s.bench.filter == expected ||

@@ -36,9 +36,17 @@ void refresh(FileDialogState& f) {
   f.listed = key;
   f.listing.clear();
   f.truncated = false;
+  f.listing_error.clear();
   const auto extensions = purpose_extensions(f.purpose);
   std::error_code ec;
-  for (fs::directory_iterator it(f.directory, ec), end; !ec && it != end; it.increment(ec)) {
+  fs::directory_iterator it(f.directory, ec);
+  if (ec) {  // said, not shown as an empty directory
+    f.listing_error = f.directory + ": " +
+                      (fs::exists(f.directory) ? "cannot be listed (" + ec.message() + ")"
+                                               : std::string("no such directory"));
+    return;
+  }
+  for (fs::directory_iterator end; !ec && it != end; it.increment(ec)) {
     std::string name = it->path().filename().string();
     const bool directory = it->is_directory(ec);
     if (name.empty() || name[0] == '.') continue;  // hidden
@@ -88,6 +96,7 @@ void entries(AppState& s, StudioActions& actions) {
     }
   }
   if (f.truncated) ui::figure_dim("(more entries not listed: type a filter)");
+  if (!f.listing_error.empty()) ui::figure_dim(f.listing_error);
   ImGui::EndChild();
 }
 

@@ -66,6 +66,10 @@ void files_fields(AppState& s) {
              "Optional 4x4 T_target_source file (row-major): errors, success and green/red "
              "lines against it. It belongs to these files: KITTI and the synthetic scene keep "
              "their own.");
+  path_field(s, "correspondences", &d.correspondences, FilePurpose::correspondences,
+             "Optional matcher's correspondences (px py pz qx qy qz [weight [inlier 0/1]] per "
+             "line, as pagor register --correspondences): they replace the landmark ones. With "
+             "both clouds they are verified on them; without, the back end runs alone.");
   if (s.inline_truth) ui::figure_dim("ground truth: from the benchmark results row");
 }
 

@@ -12,7 +12,7 @@ namespace pagor::studio {
 namespace {
 
 const ImVec4 kGood(0.35f, 0.9f, 0.45f, 1.0f), kBad(1.0f, 0.45f, 0.45f, 1.0f),
-    kAmber(1.0f, 0.8f, 0.3f, 1.0f);
+    kAmber(1.0f, 0.8f, 0.3f, 1.0f), kDim(0.6f, 0.6f, 0.6f, 1.0f);
 constexpr std::size_t kWarningLines = 2;
 
 // What refinement did to the selected pose: D and, with ground truth, the errors before/after.
@@ -59,6 +59,7 @@ std::string level_gap_text(const Snapshot& s) {
 std::string acceptance_text(const Snapshot& s) {
   const Acceptance& a = s.acceptance;
   const AcceptanceParams& p = s.config.acceptance;
+  if (!a.verified) return "not verified: " + a.reason;
   std::string t = ui::format(
       "%s: %.0f %% of structure within %.2f m, %d inliers, acceptance margin %.0f %% of "
       "\xce\xbc\xc2\xb7points (needs %.0f %%)",
@@ -111,7 +112,10 @@ void bar_chart(const Snapshot& s, int shown, const RunChanges& changes) {
       if (ImGui::CalcTextSize(text).x <= slot * stride * 0.95f && i % stride == 0)
         dl->AddText(ImVec2(x0, base - h - 15.0f), IM_COL32(220, 220, 220, 255), text);
     } else if (i % stride == 0) {
-      dl->AddText(ImVec2(x0, base - 16.0f), IM_COL32(255, 110, 110, 255), "invalid");
+      if (l.pose.valid)  // a pose, but no clouds to score it on
+        dl->AddText(ImVec2(x0, base - 16.0f), IM_COL32(170, 170, 170, 255), "no D");
+      else
+        dl->AddText(ImVec2(x0, base - 16.0f), IM_COL32(255, 110, 110, 255), "invalid");
     }
     if (i % stride != 0 && i != s.selected) continue;
     std::snprintf(text, sizeof(text), "L%d%s", i, i == s.selected ? " *" : "");
@@ -120,7 +124,8 @@ void bar_chart(const Snapshot& s, int shown, const RunChanges& changes) {
   ImGui::Dummy(ImVec2(width, height + label_h));
   ui::figure_dim(level_gap_text(s));
   if (s.selected >= 0) {  // the verdict a loop-closure user acts on; wrapped in a narrow column
-    ui::figure(acceptance_text(s), s.acceptance.accepted ? kGood : kBad, true);
+    ui::figure(acceptance_text(s),
+               !s.acceptance.verified ? kDim : s.acceptance.accepted ? kGood : kBad, true);
     ImGui::PushTextWrapPos(0.0f);
     refinement_lines(s);
     ImGui::PopTextWrapPos();

@@ -68,10 +68,10 @@ bool level_row(const Snapshot& s, int i, int shown, const RunChanges& changes) {
   ImGui::TableNextColumn();
   ImGui::Text("%zu", l.clique.size());
   ImGui::TableNextColumn();
-  if (l.pose.valid)
+  if (l.pose.valid && std::isfinite(l.score))
     ImGui::Text("%.1f", l.score);
   else
-    ImGui::TextColored(kDim, "invalid");
+    ImGui::TextColored(kDim, l.pose.valid ? "n/a" : "invalid");  // n/a: no clouds to score on
   ImGui::TableNextColumn();
   if (changes.comparable && change && change->d_delta && std::abs(*change->d_delta) > 1e-9)
     ImGui::TextColored(*change->d_delta < 0 ? kGood : kBad, "%+.1f", *change->d_delta);
@@ -188,10 +188,14 @@ void pyramid_panel(const Snapshot* s, const RunChanges& changes, const std::stri
   change_line(changes, stale_reason);
   ImGui::PushStyleVar(ImGuiStyleVar_Alpha, stale_reason.empty() ? 1.0f : 0.55f);
   ImGui::Text("%s", s->description.c_str());
-  ImGui::TextDisabled("%zu / %zu cluster landmarks, %zu correspondences%s",
-                      cluster_landmark_count(s->source_landmarks),
-                      cluster_landmark_count(s->target_landmarks), s->correspondences.size(),
-                      s->correspondences_capped ? " (capped)" : "");
+  if (!s->matches_file.empty() && !s->source)
+    ImGui::TextDisabled("%zu correspondences from the matcher's file, no clouds",
+                        s->correspondences.size());
+  else
+    ImGui::TextDisabled("%zu / %zu cluster landmarks, %zu correspondences%s",
+                        cluster_landmark_count(s->source_landmarks),
+                        cluster_landmark_count(s->target_landmarks), s->correspondences.size(),
+                        s->correspondences_capped ? " (capped)" : "");
   diagnosis_verdict_line(*s);
   warning_lines(*s);
   result_exports(*s, exports);
@@ -201,9 +205,13 @@ void pyramid_panel(const Snapshot* s, const RunChanges& changes, const std::stri
   ImGui::BeginChild("levels", ImVec2(ImGui::GetContentRegionAvail().x - chart_w - 8.0f, 0));
   const int clicked = levels_table(*s, shown, changes);
   if (clicked >= 0) view.level = clicked;
-  ImGui::TextDisabled(
-      "* selected: lowest D (\xce\xbc %.2f m, %zu points). Click a row to view its level.",
-      s->config.verification.mu, s->verification_points);
+  if (!s->source)  // as pagor register --correspondences says it
+    ImGui::TextDisabled(
+        "* selected: without clouds (no D to verify on). Click a row to view its level.");
+  else
+    ImGui::TextDisabled(
+        "* selected: lowest D (\xce\xbc %.2f m, %zu points). Click a row to view its level.",
+        s->config.verification.mu, s->verification_points);
 
   ImGui::EndChild();
   ImGui::SameLine();

@@ -1,11 +1,13 @@
 #include "runners/worker.hpp"
 
 #include <chrono>
+#include <filesystem>
 #include <new>
 #include <nlohmann/json.hpp>
 
 #include "pagor/errors.hpp"
 #include "pagor/io/correspondence_file.hpp"
+#include "pagor/sets/pair_set.hpp"
 #include "pagor/report.hpp"
 
 namespace pagor::studio {
@@ -93,7 +95,68 @@ void Worker::loop() {
 }
 
 std::string Worker::describe_request(const Request& request) const {
-  return request.data ? describe(*request.data) : "the current data";
+  return request.data ? describe_data(*request.data) : "the current data";
+}
+
+bool matches_only(const PairSource& data) {
+  return data.kind == PairSource::Kind::files && !data.correspondences.empty() &&
+         (data.source.empty() || data.target.empty());
+}
+
+std::string describe_data(const PairSource& data) {
+  if (data.kind != PairSource::Kind::files || data.correspondences.empty()) return describe(data);
+  const std::string name = std::filesystem::path(data.correspondences).filename().string();
+  return matches_only(data) ? "correspondences " + name
+                            : "correspondences " + name + " on " + describe(data);
+}
+
+void Worker::load(const Request& request) {
+  const PairSource& data = *request.data;
+  // Everything that can fail is read first: a file that cannot be read keeps the current data.
+  std::optional<LoadedPair> pair;
+  std::optional<Transform> truth = request.truth;
+  if (!matches_only(data)) {
+    // Unlabelled clouds are fine: the pipeline falls back to class-agnostic landmarks.
+    pair = load_pair(data, request.config.indoor);
+    if (!truth) truth = pair->T_target_source_gt;
+  } else if (!truth && !data.ground_truth.empty()) {
+    truth = read_transform_file(data.ground_truth);
+  }
+  std::optional<CorrespondenceFile> matches;
+  if (data.kind == PairSource::Kind::files && !data.correspondences.empty())
+    matches = read_correspondence_file(data.correspondences);
+  Pipeline next(request.config);  // clouds of an earlier pair must not verify the matches
+
+  source_.reset(), target_.reset(), target_index_.reset(), plan_.reset(), scan_columns_.reset();
+  if (pair) {
+    source_ = std::make_shared<const PointCloud>(std::move(pair->source.cloud));
+    target_ = std::make_shared<const PointCloud>(std::move(pair->target.cloud));
+    source_name_ = pair->source_name;
+    target_name_ = pair->target_name;
+    target_index_ = std::make_shared<const KdTree3f>(target_->points);
+    if (pair->plan) {  // a scan against a floor plan
+      plan_ = std::make_shared<const FloorPlan>(std::move(*pair->plan));
+      scan_columns_ =
+          std::make_shared<const std::vector<DetectedColumn>>(std::move(pair->scan_columns));
+    }
+    next.set_input(*source_, *target_, pair_label_scheme(data));  // a manifest's scheme=
+  } else {
+    source_name_ = target_name_ = data.correspondences;  // as pagor register names them
+  }
+  matches_file_.clear();
+  inlier_flags_.clear();
+  matches_weighted_ = false;
+  if (matches) {
+    matches_file_ = data.correspondences;
+    inlier_flags_ = std::move(matches->inlier);
+    matches_weighted_ = !matches->weights.empty();
+    next.set_matches(std::move(matches->items));
+  }
+  ground_truth_ = truth;
+  next.set_ground_truth(ground_truth_);
+  pipeline_ = std::move(next);
+  description_ = describe_data(data);
+  ++data_generation_;
 }
 
 void Worker::handle(const Request& request) {
@@ -104,29 +167,10 @@ void Worker::handle(const Request& request) {
   if (request.data) {
     {
       std::lock_guard<std::mutex> lock(mutex_);
-      status_.activity = "loading " + describe(*request.data);
+      status_.activity = "loading " + describe_request(request);
     }
     try {
-      // Unlabelled clouds are fine: the pipeline falls back to class-agnostic landmarks.
-      LoadedPair pair = load_pair(*request.data, request.config.indoor);
-      source_ = std::make_shared<const PointCloud>(std::move(pair.source.cloud));
-      target_ = std::make_shared<const PointCloud>(std::move(pair.target.cloud));
-      ground_truth_ = request.truth ? request.truth : pair.T_target_source_gt;
-      source_name_ = pair.source_name;
-      target_name_ = pair.target_name;
-      target_index_ = std::make_shared<const KdTree3f>(target_->points);
-      const bool indoor = pair.plan.has_value();  // a scan against a floor plan
-      plan_ = indoor ? std::make_shared<const FloorPlan>(std::move(*pair.plan)) : nullptr;
-      scan_columns_ =
-          indoor ? std::make_shared<const std::vector<DetectedColumn>>(std::move(pair.scan_columns))
-                 : nullptr;
-      description_ = describe(*request.data);
-      ++data_generation_;
-      pipeline_.set_input(*source_, *target_);
-      pipeline_.set_ground_truth(ground_truth_);
-      pipeline_.set_matches(request.data->correspondences.empty()
-                                ? std::vector<Correspondence>()
-                                : read_correspondence_file(request.data->correspondences).items);
+      load(request);
     } catch (const Error& e) {
       fail(e.what());
       return;
@@ -182,6 +226,27 @@ void add_diagnosis(const Pipeline& p, Snapshot& s) {
   if (p.ground_truth()) s.gt_contribution = point_contributions(*v, *p.ground_truth(), mu);
 }
 
+// What only a correspondences file knows, as pagor register --correspondences adds it: its name,
+// its inlier flags and each level's precision and recall against them.
+void add_file_details(nlohmann::json& report, const Pipeline& p, const std::string& file,
+                      bool weighted, const std::vector<char>& inlier) {
+  std::size_t flagged = 0;
+  for (char f : inlier) flagged += f != 0;
+  nlohmann::json& c = report["correspondences"];
+  c["file"] = file;
+  c["weights"] = weighted;
+  c["inlier_flags"] = !inlier.empty();
+  c["flagged_inliers"] = inlier.empty() ? nlohmann::json() : nlohmann::json(flagged);
+  if (inlier.empty() || p.matches().size() != p.correspondences().items.size()) return;
+  for (std::size_t l = 0; l < p.cliques().size(); ++l) {
+    const InlierQuality q = inlier_quality(p.cliques()[l].vertices, inlier);
+    nlohmann::json& level = report["levels"][l];
+    level["precision"] = q.precision;
+    level["recall"] = q.recall;
+    level["true_inliers"] = q.true_inliers;
+  }
+}
+
 }  // namespace
 
 std::shared_ptr<Snapshot> Worker::make_snapshot(std::uint64_t request) const {
@@ -228,6 +293,9 @@ std::shared_ptr<Snapshot> Worker::make_snapshot(std::uint64_t request) const {
   auto report = nlohmann::json::parse(registration_report_json(p, source_name_, target_name_, -1));
   report["diagnosis"] =
       s->diagnosis ? nlohmann::json::parse(diagnosis_json(*s->diagnosis)) : nlohmann::json();
+  s->matches_file = matches_file_;
+  s->inlier_flags = inlier_flags_;
+  if (!matches_file_.empty()) add_file_details(report, p, matches_file_, matches_weighted_, inlier_flags_);
   s->report_json = report.dump(2) + "\n";
   return s;
 }

@@ -69,6 +69,10 @@ struct Snapshot {
   std::string report_json;
   /// The target cloud's points indexed, for picking (distance to the nearest target point).
   std::shared_ptr<const KdTree3f> target_index;
+  /// A matcher's correspondences file registered (PairSource::correspondences): its name, and its
+  /// ground-truth inlier flags (empty without) for each level's precision and recall.
+  std::string matches_file;
+  std::vector<char> inlier_flags;
 };
 
 /// What the worker is doing.
@@ -80,6 +84,12 @@ struct WorkerStatus {
   std::string error;               ///< last error (data or configuration); empty when fine
   std::uint64_t submitted = 0, finished = 0;
 };
+
+/// Whether `data` is a matcher's correspondences alone (files mode without both clouds): the back
+/// end runs without verification, as pagor register --correspondences FILE does.
+bool matches_only(const PairSource& data);
+/// describe(data), naming the correspondences file when there is one.
+std::string describe_data(const PairSource& data);
 
 class Worker {
  public:
@@ -110,6 +120,8 @@ class Worker {
   /// which the loop turns into the status's error: the worker never ends the studio.
   void handle(const Request& request);
   std::string describe_request(const Request& request) const;
+  /// Loads new data into the pipeline: clouds, a matcher's correspondences, or both. Throws Error.
+  void load(const Request& request);
   std::shared_ptr<Snapshot> make_snapshot(std::uint64_t request) const;
 
   mutable std::mutex mutex_;
@@ -128,6 +140,9 @@ class Worker {
   std::shared_ptr<const std::vector<DetectedColumn>> scan_columns_;
   std::string description_, source_name_, target_name_;
   std::shared_ptr<const KdTree3f> target_index_;
+  std::string matches_file_;       ///< the correspondences file registered (empty: none)
+  std::vector<char> inlier_flags_;  ///< its ground-truth flags (empty without)
+  bool matches_weighted_ = false;   ///< it has a weight column
   std::uint64_t data_generation_ = 0;
   std::thread thread_;
 };

@@ -94,6 +94,11 @@ bool shown_bounds(const Snapshot& s, const ViewState& view, const Transform& pos
       if (lm.kind == LandmarkKind::cluster) extend(lo, hi, lm.centroid.cast<float>());
     for (const auto& lm : s.source_landmarks.landmarks)
       if (lm.kind == LandmarkKind::cluster) extend(lo, hi, transform_point(pose, lm.centroid));
+    for (const Correspondence& c : s.correspondences)  // a matcher's points p and q
+      if (c.origin == CorrespondenceOrigin::matcher) {
+        extend(lo, hi, transform_point(pose, c.p));
+        extend(lo, hi, c.q.cast<float>());
+      }
   }
   if (view.layers.plan && s.plan)
     for (const PlanWall& w : s.plan->walls)
@@ -198,8 +203,8 @@ namespace {
 
 constexpr std::size_t kLegendClasses = 12;  // class entries at most; the rest are counted
 
-// The point entries of the legend: what the clouds are drawn in.
-std::vector<std::pair<ImU32, std::string>> point_entries(const Snapshot& s, const ViewState& view,
+// The point entries of the legend for the clouds: what they are drawn in.
+std::vector<std::pair<ImU32, std::string>> cloud_entries(const Snapshot& s, const ViewState& view,
                                                          const ClassColors& colors,
                                                          const std::vector<DrawnClass>& drawn) {
   std::vector<std::pair<ImU32, std::string>> points;
@@ -221,10 +226,30 @@ std::vector<std::pair<ImU32, std::string>> point_entries(const Snapshot& s, cons
     if (c.landmarks > 0 && std::none_of(drawn.begin(), drawn.end(),
                                         [&](const DrawnClass& d) { return d.name == c.name; }))
       points.push_back({col(colors.of(c.name)), c.name + " (landmarks only)"});
-  if (drawn.empty()) points.push_back({IM_COL32(120, 120, 120, 255), "unlabelled points"});
+  if (drawn.empty() && (s.source || s.target))
+    points.push_back({IM_COL32(120, 120, 120, 255), "unlabelled points"});
   if (more) points.push_back({IM_COL32(0, 0, 0, 0), "+ " + std::to_string(more) + " more classes"});
   return points;
 }
+
+}  // namespace
+
+std::vector<std::pair<ImU32, std::string>> point_entries(const Snapshot& s, const ViewState& view,
+                                                         const ClassColors& colors,
+                                                         const std::vector<DrawnClass>& drawn) {
+  auto points = cloud_entries(s, view, colors, drawn);
+  // A matcher's points p and q are drawn in the source and target colours whatever the colouring.
+  const bool matcher =
+      std::any_of(s.correspondences.begin(), s.correspondences.end(),
+                  [](const Correspondence& c) { return c.origin == CorrespondenceOrigin::matcher; });
+  if (matcher && view.layers.landmarks && view.color != ColorMode::by_cloud) {
+    points.push_back({col(Palette::source), "matcher's source points p"});
+    points.push_back({col(Palette::target), "matcher's target points q"});
+  }
+  return points;
+}
+
+namespace {
 
 // A horizontal viridis bar from scale.lo to scale.hi with its title.
 void scale_bar(ImDrawList* dl, ImVec2& at, const ColorScale& scale) {

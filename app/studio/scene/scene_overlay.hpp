@@ -41,6 +41,12 @@ int draw_correspondence_lines(ImDrawList* dl, const ViewRect& r, const Snapshot&
                               const ViewState& view, const Transform& source_pose, int level,
                               const ClassColors& colors);
 
+/// The legend's point entries (colour, text): the classes drawn, source / target, and a matcher's
+/// points p and q when there are such correspondences.
+std::vector<std::pair<ImU32, std::string>> point_entries(const Snapshot& s, const ViewState& view,
+                                                         const ClassColors& colors,
+                                                         const std::vector<DrawnClass>& drawn);
+
 /// Legend: line meanings, and what the points are drawn in: the classes drawn (`drawn`, with the
 /// classes that made landmarks only), source / target, or the colour scale of height or
 /// intensity (`scale`).

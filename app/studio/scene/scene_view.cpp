@@ -149,9 +149,19 @@ void SceneView::update(const Snapshot& s, const ViewState& view, const Transform
 
   std::vector<char> used_src(s.source_landmarks.landmarks.size(), 0),
       used_tgt(s.target_landmarks.landmarks.size(), 0);
+  // A matcher's correspondences name keypoints of their own, not landmarks: their points p and q
+  // are drawn as keypoints (source under the pose), whether or not clouds came with them.
+  std::vector<float> matcher_src, matcher_tgt;
   for (const auto& c : s.correspondences) {
-    used_src[static_cast<std::size_t>(c.source)] = 1;
-    used_tgt[static_cast<std::size_t>(c.target)] = 1;
+    if (c.origin == CorrespondenceOrigin::matcher) {
+      push(matcher_src, transform_point(pose, c.p), Palette::source);
+      push(matcher_tgt, c.q.cast<float>(), Palette::target);
+      continue;
+    }
+    if (c.source >= 0 && static_cast<std::size_t>(c.source) < used_src.size())
+      used_src[static_cast<std::size_t>(c.source)] = 1;
+    if (c.target >= 0 && static_cast<std::size_t>(c.target) < used_tgt.size())
+      used_tgt[static_cast<std::size_t>(c.target)] = 1;
   }
   const auto landmark_vertices = [&](const LandmarkSet& set, const std::vector<char>& used,
                                      bool source, LandmarkKind kind) {
@@ -171,10 +181,14 @@ void SceneView::update(const Snapshot& s, const ViewState& view, const Transform
          landmark_vertices(s.source_landmarks, used_src, true, LandmarkKind::cluster));
   upload(landmarks_tgt_,
          landmark_vertices(s.target_landmarks, used_tgt, false, LandmarkKind::cluster));
-  upload(keypoints_src_,
-         landmark_vertices(s.source_landmarks, used_src, true, LandmarkKind::keypoint));
-  upload(keypoints_tgt_,
-         landmark_vertices(s.target_landmarks, used_tgt, false, LandmarkKind::keypoint));
+  std::vector<float> key_src = landmark_vertices(s.source_landmarks, used_src, true,
+                                                 LandmarkKind::keypoint);
+  std::vector<float> key_tgt = landmark_vertices(s.target_landmarks, used_tgt, false,
+                                                 LandmarkKind::keypoint);
+  key_src.insert(key_src.end(), matcher_src.begin(), matcher_src.end());
+  key_tgt.insert(key_tgt.end(), matcher_tgt.begin(), matcher_tgt.end());
+  upload(keypoints_src_, key_src);
+  upload(keypoints_tgt_, key_tgt);
 }
 
 void SceneView::update_contribution(const Snapshot& s, const ViewState& view) {

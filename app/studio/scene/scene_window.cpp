@@ -45,8 +45,13 @@ void correspondence_tooltip(const Snapshot& s, int index, int level) {
   const Correspondence& c = s.correspondences[static_cast<std::size_t>(index)];
   ImGui::Text("correspondence %d: %s", index,
               correspondence_class_name(c, s.source_landmarks).c_str());
-  ImGui::Text("source landmark %d -> target landmark %d, rank score %.2f", c.source, c.target,
-              c.score);
+  if (c.origin == CorrespondenceOrigin::matcher)
+    ImGui::Text("matcher's keypoint %d -> %d, weight %.2f; p (%.2f, %.2f, %.2f) -> q (%.2f, "
+                "%.2f, %.2f) m",
+                c.source, c.target, c.score, c.p.x(), c.p.y(), c.p.z(), c.q.x(), c.q.y(), c.q.z());
+  else
+    ImGui::Text("source landmark %d -> target landmark %d, rank score %.2f", c.source, c.target,
+                c.score);
   if (s.ground_truth) {
     const double tolerance = s.config.evaluation.max_translation_error;
     ImGui::Text("ground truth residual %.2f m: %s (tolerance %.1f m)",
@@ -198,7 +203,7 @@ void scene_window(SceneView& scene, const Snapshot* s, const ViewState& view,
   Camera& camera = camera_control.camera;
   const ImVec2 size = ImGui::GetContentRegionAvail();
   const int w = std::max(1, static_cast<int>(size.x)), h = std::max(1, static_cast<int>(size.y));
-  if (!s || !s->target) {
+  if (!s || (!s->target && s->correspondences.empty())) {  // a matcher's alone: p, q and lines
     ImGui::TextDisabled("nothing to show yet");
     return;
   }

@@ -69,8 +69,9 @@ PairSource resolved_data(const AppState& s) {
     d.source = d.source_labels = d.target = d.target_labels = d.ground_truth = d.correspondences =
         "";
   if (d.kind != PairSource::Kind::kitti) d.kitti_root = "";
-  for (std::string* p : {&d.kitti_root, &d.source, &d.source_labels, &d.target, &d.target_labels,
-                         &d.ground_truth, &d.correspondences})
+  for (std::string* p :
+       {&d.kitti_root, &d.source, &d.source_labels, &d.target, &d.target_labels, &d.ground_truth,
+        &d.correspondences})
     *p = resolve(*p, base);
   return d;
 }

@@ -128,6 +128,7 @@ enum class FilePurpose {
   source_labels,  ///< files mode's source .label file
   target_labels,  ///< files mode's target .label file
   ground_truth,   ///< files mode's 4x4 T_target_source
+  correspondences,  ///< files mode's matcher correspondences (px py pz qx qy qz [w [inlier]])
   pairs,          ///< a pairs file or manifest to step through
   config,         ///< a configuration JSON
   session,        ///< a session JSON
@@ -146,6 +147,7 @@ struct FileDialogState {
   std::vector<std::pair<std::string, bool>> listing;  ///< (name, is a directory)
   std::string listed;
   bool truncated = false;  ///< the directory holds more than the listing shows
+  std::string listing_error;  ///< why the directory could not be listed (empty: it was)
 };
 
 struct AppState {

@@ -49,12 +49,9 @@ FilePurpose classify_text(const std::string& path) {
   if (numbers && w.size() == 2) return FilePurpose::pairs;         // a KITTI pairs file
   if (numbers && w.size() == 4) return FilePurpose::ground_truth;  // a 4x4 matrix, row by row
   if (numbers && (w.size() == 12 || w.size() == 16)) return FilePurpose::ground_truth;
-  if (numbers && w.size() >= 6)
-    throw InputError(path +
-                     ": a matcher's correspondences; open them with pagor register "
-                     "--correspondences (the studio does not read them yet)");
+  if (numbers && w.size() >= 6 && w.size() <= 8) return FilePurpose::correspondences;
   if (!numbers && w.size() >= 2) return FilePurpose::pairs;  // a manifest: SOURCE TARGET ...
-  throw InputError(path + ": not a pairs file, manifest or 4x4 transform");
+  throw InputError(path + ": not a pairs file, manifest, correspondences file or 4x4 transform");
 }
 
 FilePurpose classify_json(const std::string& path) {
@@ -89,13 +86,18 @@ PairSource& files_data(AppState& s) {
   if (s.data.kind != PairSource::Kind::files) {
     s.data.kind = PairSource::Kind::files;
     s.data.source = s.data.source_labels = s.data.target = s.data.target_labels = "";
-    s.data.ground_truth = "";
+    s.data.ground_truth = s.data.correspondences = "";
   }
   s.inline_truth.reset();
   return s.data;
 }
 
 }  // namespace
+
+bool data_ready(const PairSource& d) {
+  return d.kind != PairSource::Kind::files || !d.correspondences.empty() ||
+         (!d.source.empty() && !d.target.empty());
+}
 
 FilePurpose classify_file(const std::string& path) {
   std::error_code ec;
@@ -145,6 +147,9 @@ Opened open_file_into(AppState& s, const std::string& path, FilePurpose purpose)
       read_transform_file(p);  // a file that is not a rigid transform is an error now
       files_data(s).ground_truth = p, o.what = "ground truth: " + p;
       break;
+    case FilePurpose::correspondences:
+      files_data(s).correspondences = p, o.what = "correspondences: " + p;
+      break;
     case FilePurpose::kitti_root:
       s.data.kind = PairSource::Kind::kitti, s.data.kitti_root = p, o.what = "KITTI root: " + p;
       break;
@@ -180,9 +185,7 @@ Opened open_file_into(AppState& s, const std::string& path, FilePurpose purpose)
     case FilePurpose::any:
       break;
   }
-  // Data: open it once files mode has both clouds (KITTI: its frames are already set).
-  o.data =
-      s.data.kind != PairSource::Kind::files || (!s.data.source.empty() && !s.data.target.empty());
+  o.data = data_ready(s.data);
   return o;
 }
 
@@ -210,8 +213,7 @@ Opened open_files_into(AppState& s, const std::vector<std::string>& paths,
       errors.push_back(ex.what());
     }
   }
-  all.data = all.data && (s.data.kind != PairSource::Kind::files ||
-                          (!s.data.source.empty() && !s.data.target.empty()));
+  all.data = all.data && data_ready(s.data);
   return all;
 }
 
@@ -226,6 +228,7 @@ std::vector<std::string> purpose_extensions(FilePurpose purpose) {
       return {".label"};
     case FilePurpose::ground_truth:
     case FilePurpose::pairs:
+    case FilePurpose::correspondences:
       return {".txt"};
     case FilePurpose::config:
     case FilePurpose::session:
@@ -255,6 +258,8 @@ const char* purpose_name(FilePurpose purpose) {
       return "a ground truth (4x4 T_target_source)";
     case FilePurpose::pairs:
       return "a pairs file or manifest";
+    case FilePurpose::correspondences:
+      return "a matcher's correspondences (px py pz qx qy qz [weight [inlier]])";
     case FilePurpose::config:
       return "a configuration";
     case FilePurpose::session:

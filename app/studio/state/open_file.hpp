@@ -2,7 +2,7 @@
 /// \file open_file.hpp
 /// Opening a user's file in the studio, from the file dialog, a drop on the window or the recent
 /// list: what kind of file it is (a cloud, labels, a ground truth, a configuration, a session, a
-/// pairs file or manifest, `pagor bench --out` results, a floor plan, a KITTI root) and where in
+/// pairs file or manifest, a matcher's correspondences, `pagor bench --out` results, a floor plan, a KITTI root) and where in
 /// the state it goes.
 
 #include <string>
@@ -15,6 +15,10 @@ namespace pagor::studio {
 /// What a file is, told by its extension and, for .json and .txt, its first lines. Throws
 /// InputError naming the file when it cannot be read or is of no kind the studio opens.
 FilePurpose classify_file(const std::string& path);
+
+/// Whether `data` names enough to run: files mode needs both clouds or a matcher's correspondences
+/// (which run alone, or verified on both clouds).
+bool data_ready(const PairSource& data);
 
 /// What opening a file changed, so that the studio re-runs what it must.
 struct Opened {

@@ -68,6 +68,7 @@ json data_json(const PairSource& d, const std::optional<Transform>& inline_truth
             {"target", d.target},
             {"target_labels", d.target_labels},
             {"ground_truth", d.ground_truth},
+            {"correspondences", d.correspondences},
             {"ground_truth_T", matrix_json(*inline_truth)}};
   switch (d.kind) {
     case PairSource::Kind::kitti:
@@ -134,7 +135,7 @@ PairSource read_data(const json& d, const std::string& where,
   } else if (kind == "files") {
     reject_unknown(d, where,
                    {"kind", "source", "source_labels", "target", "target_labels", "ground_truth",
-                    "ground_truth_T", "correspondences"});
+                    "correspondences", "ground_truth_T"});
     inline_truth.reset();
     if (const json* m = find(d, "ground_truth_T"))
       inline_truth = read_matrix(*m, where + ".ground_truth_T");
