@@ -175,6 +175,10 @@ TEST_CASE("matches with clouds are verified on them; clearing them brings the la
   p.set_matches(m);
   p.run();
   CHECK(p.source_landmarks().landmarks.empty());  // the matches replace the landmarks
+  // ... but the clouds' labels are read as the landmarks would read them (the report names the
+  // scheme; a viewer colours each cloud by it).
+  CHECK_FALSE(p.source_landmarks().labels.scheme.classes.empty());
+  CHECK(p.source_landmarks().labels.scheme.name == p.target_landmarks().labels.scheme.name);
   REQUIRE(p.verifier() != nullptr);
   CHECK(p.correspondences().items.size() == m.size());
   REQUIRE(p.selected_level() >= 0);

@@ -96,8 +96,11 @@ void Studio::submit_config() {
 }
 
 void Studio::open_benchmark_now() {
+  // A session reopens its set in the view it was saved in (the pair view of an opened row, say).
+  const MainView view = state_.main_view;
   try {
     open_benchmark(state_, bench_);
+    state_.main_view = view;
   } catch (const std::exception& e) {  // a file the studio cannot use: say so, keep running
     state_.bench.open = false;
     notify(Message::error(e.what()));

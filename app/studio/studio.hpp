@@ -79,7 +79,8 @@ class Studio : public StudioActions {
   AppState& state() { return state_; }
   Worker& worker() { return worker_; }
   BenchWorker& bench() { return bench_; }
-  /// Opens the benchmark set the state names (after a session load); errors go to the status bar.
+  /// Opens the benchmark set the state names (after a session load), keeping the view the state
+  /// names (pair or benchmark); errors go to the status bar.
   void open_benchmark_now();
   const SceneView& scene() const { return scene_; }
   const ParamHistory& param_history() const { return params_; }

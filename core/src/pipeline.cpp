@@ -186,7 +186,15 @@ void Pipeline::run_stage(Stage stage) {
     case Stage::landmarks: {
       source_landmarks_ = LandmarkSet{};
       target_landmarks_ = LandmarkSet{};
-      if (!uses_landmarks()) break;
+      if (!uses_landmarks()) {
+        // No landmarks, but the clouds' labels are still read as the landmarks would read them:
+        // the report, the diagnosis and a viewer colour each cloud in that scheme.
+        if (has_clouds_) {
+          source_landmarks_.labels = read_labels(source_, label_scheme());
+          target_landmarks_.labels = read_labels(target_, label_scheme());
+        }
+        break;
+      }
       const auto extract = [this](const PointCloud& cloud, LandmarkSet& out) {
         out = extract_landmarks(cloud, label_scheme(), config_.landmarks);
       };

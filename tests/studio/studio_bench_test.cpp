@@ -324,4 +324,26 @@ TEST_CASE("rates of nothing are n/a, not 0 % or 100 %") {
                                "accepted (0 without truth), precision 100.0 %, recall 66.7 %"));
   some.accepted_unjudged = 1;  // a row that says "accept" without a truth is counted too
   CHECK_THAT(studio::summary_text(some), Catch::Contains("verdict: 3 accepted (1 without truth)"));
+  BenchmarkSummary failed;  // every pair failed: no rate, but the line says why
+  failed.skipped = 6;
+  CHECK_THAT(studio::summary_text(failed),
+             Catch::StartsWith("6 pairs failed (in no rate: see their rows); success 0/0 (n/a)"));
+}
+
+TEST_CASE("a session reopens its set in the view it was saved in") {
+  TempDir tmp;
+  for (const studio::MainView view : {studio::MainView::pair, studio::MainView::benchmark}) {
+    studio::AppState s = files_state(tmp);
+    s.config = semreg_config();
+    s.bench.path = small_manifest(tmp);
+    s.bench.open = true;  // a set is open, and the view is `view` (a row opened: the pair view)
+    s.main_view = view;
+    studio::save_session(s, tmp.file("s.json"));
+    studio::AppState loaded = files_state(tmp);
+    loaded.session_path = tmp.file("s.json");
+    UiDriver d(loaded);
+    d.studio().load_session_now();
+    CHECK(d.state().bench.open);
+    CHECK(d.state().main_view == view);
+  }
 }

@@ -109,7 +109,9 @@ void source_controls(AppState& state, BenchWorker& bench, StudioActions& actions
                  "use the file's parameters in the session (absent keys: the preset's)"))
     actions.open_file(resolve_path(state, v.config_path), FilePurpose::config);
   if (ui::button("open and run##bench", ImVec2(0, 0),
-                 "read the file and run every pair with the current parameters")) {
+                 v.source == BenchSource::results
+                     ? "read the results file and show its rows as recorded (nothing re-runs)"
+                     : "read the file and run every pair with the current parameters")) {
     try {
       open_benchmark(state, bench);
       actions.notify(Message::info("opened " + v.path));

@@ -269,6 +269,11 @@ std::string summary_text(const BenchmarkSummary& s) {
                 s.with_truth, rate_text(s.upper_bound_rate()).c_str(), s.accepted_total(),
                 s.accepted_unjudged, rate_text(s.precision()).c_str(),
                 rate_text(s.recall()).c_str(), s.mean_total_ms);
+  // Pairs that failed (unreadable files, data the stages refused) are in no rate: say how many,
+  // so that "0/0 (n/a)" over a set of failed pairs cannot read as a set without truth.
+  if (s.skipped > 0)
+    return std::to_string(s.skipped) + (s.skipped == 1 ? " pair" : " pairs") +
+           " failed (in no rate: see their rows); " + line;
   return line;
 }
 
