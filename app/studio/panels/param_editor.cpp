@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <nlohmann/json.hpp>
 
 #include "pagor/errors.hpp"
@@ -138,18 +139,20 @@ bool choice_field(Config& c, const ConfigField& f, const Values& v, const std::s
 // A class name: one of the label scheme's classes no other entry uses.
 bool class_name_field(Config& c, const ConfigField& f, const std::string& name,
                       const std::string& label, const std::string& tip, StudioActions& actions) {
-  bool changed = false;
+  // The choice is applied after the listing: setting it replaces the configuration, classes and
+  // all, which the loop walks.
+  std::optional<std::string> chosen;
   if (ui::begin_combo(label.c_str(), name.c_str(), tip.c_str())) {
     for (const SemanticClass& k : c.label_scheme.classes) {
       const bool used = std::any_of(c.landmarks.classes.begin(), c.landmarks.classes.end(),
                                     [&](const ClassParams& p) { return p.name == k.name; });
       if ((!used || k.name == name) && ui::selectable(k.name.c_str(), k.name == name) &&
           k.name != name)
-        changed = set_json(c, f.path, json(k.name).dump(), actions);
+        chosen = k.name;
     }
     ui::end_combo();
   }
-  return changed;
+  return chosen && set_json(c, f.path, json(*chosen).dump(), actions);
 }
 
 // Text and lists edited as JSON (applied on Enter).
