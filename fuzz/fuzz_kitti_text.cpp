@@ -10,24 +10,21 @@
 #include <string>
 
 #include "pagor/errors.hpp"
+#include "scratch.hpp"
 #include "pagor/io/clouds.hpp"
 #include "pagor/io/kitti.hpp"
+
+using pagor::fuzz::write_bytes;
 
 namespace {
 
 const std::filesystem::path& scratch() {
   static const std::filesystem::path dir = [] {
-    const auto d =
-        std::filesystem::temp_directory_path() / ("pagor_fuzz_kitti_" + std::to_string(::getpid()));
+    const auto d = pagor::fuzz::make_scratch_directory("kitti");
     std::filesystem::create_directories(d / "sequences" / "00");
     return d;
   }();
   return dir;
-}
-
-void write(const std::filesystem::path& p, const char* data, std::size_t size) {
-  std::ofstream(p, std::ios::binary | std::ios::trunc)
-      .write(data, static_cast<std::streamsize>(size));
 }
 
 }  // namespace
@@ -41,25 +38,25 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* bytes, std::size_t siz
   try {
     switch (bytes[0] % 5) {
       case 0:
-        write(scratch() / "pairs.txt", data, n);
+        write_bytes(scratch() / "pairs.txt", data, n);
         pagor::read_pairs_file((scratch() / "pairs.txt").string());
         break;
       case 1:
-        write(seq / "poses.txt", data, n);
-        write(seq / "calib.txt", identity, std::char_traits<char>::length(identity));
+        write_bytes(seq / "poses.txt", data, n);
+        write_bytes(seq / "calib.txt", identity, std::char_traits<char>::length(identity));
         pagor::KittiSequence(scratch().string(), "00").ground_truth(0, 0);
         break;
       case 2:
-        write(seq / "poses.txt", "1 0 0 0 0 1 0 0 0 0 1 0\n", 24);
-        write(seq / "calib.txt", data, n);
+        write_bytes(seq / "poses.txt", "1 0 0 0 0 1 0 0 0 0 1 0\n", 24);
+        write_bytes(seq / "calib.txt", data, n);
         pagor::KittiSequence(scratch().string(), "00").ground_truth(0, 0);
         break;
       case 3:
-        write(scratch() / "scan.bin", data, n);
+        write_bytes(scratch() / "scan.bin", data, n);
         pagor::load_cloud((scratch() / "scan.bin").string());
         break;
       default:
-        write(scratch() / "scan.label", data, n);
+        write_bytes(scratch() / "scan.label", data, n);
         pagor::read_kitti_labels((scratch() / "scan.label").string());
         break;
     }

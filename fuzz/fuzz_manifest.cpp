@@ -11,15 +11,17 @@
 #include <string>
 
 #include "pagor/errors.hpp"
+#include "scratch.hpp"
 #include "pagor/sets/benchmark.hpp"
 #include "pagor/sets/pair_set.hpp"
+
+using pagor::fuzz::write_bytes;
 
 namespace {
 
 const std::filesystem::path& scratch() {
   static const std::filesystem::path dir = [] {
-    const auto d = std::filesystem::temp_directory_path() /
-                   ("pagor_fuzz_manifest_" + std::to_string(::getpid()));
+    const auto d = pagor::fuzz::make_scratch_directory("manifest");
     std::filesystem::create_directories(d / "sub dir");
     for (const char* f : {"a.pcd", "b.pcd", "sub dir/c.ply", "a.label"})
       std::ofstream(d / f) << "x";
@@ -31,11 +33,6 @@ const std::filesystem::path& scratch() {
   return dir;
 }
 
-void write(const std::filesystem::path& p, const char* data, std::size_t size) {
-  std::ofstream(p, std::ios::binary | std::ios::trunc)
-      .write(data, static_cast<std::streamsize>(size));
-}
-
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* bytes, std::size_t size) {
@@ -45,7 +42,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* bytes, std::size_t siz
   try {
     switch (bytes[0] % 3) {
       case 0: {
-        write(scratch() / "m.txt", data, n);
+        write_bytes(scratch() / "m.txt", data, n);
         const pagor::PairSet set = pagor::read_pair_manifest((scratch() / "m.txt").string());
         for (const pagor::PairEntry& e : set.pairs) pagor::pair_fingerprint(e);
         break;
@@ -54,7 +51,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* bytes, std::size_t siz
         pagor::outcome_from_json_line(std::string(data, n), "fuzz.jsonl:1");
         break;
       default:
-        write(scratch() / "T.txt", data, n);
+        write_bytes(scratch() / "T.txt", data, n);
         pagor::read_transform_file((scratch() / "T.txt").string());
         break;
     }

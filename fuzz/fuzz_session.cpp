@@ -10,14 +10,13 @@
 #include <string>
 
 #include "pagor/errors.hpp"
+#include "scratch.hpp"
 #include "state/app_state.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* bytes, std::size_t size) {
-  static const std::string path = (std::filesystem::temp_directory_path() /
-                                   ("pagor_fuzz_session_" + std::to_string(::getpid()) + ".json"))
-                                      .string();
-  std::ofstream(path, std::ios::binary | std::ios::trunc)
-      .write(reinterpret_cast<const char*>(bytes), static_cast<std::streamsize>(size));
+  static const std::string path =
+      (pagor::fuzz::make_scratch_directory("session") / "session.json").string();
+  pagor::fuzz::write_bytes(path, reinterpret_cast<const char*>(bytes), size);
   pagor::studio::AppState state;
   try {
     pagor::studio::load_session(path, state);
