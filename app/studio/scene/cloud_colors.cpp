@@ -124,10 +124,8 @@ std::vector<Rgba> cloud_colors(const PointCloud& cloud, ColorMode mode, const Cl
 std::vector<DrawnClass> drawn_classes(const Snapshot& s, const ClassColors& colors) {
   std::unordered_map<std::string, std::size_t> count;
   bool labelled = false;
-  // Each cloud in the scheme its labels were read with (`auto`: the one detected for it).
-  for (const auto& [cloud, scheme] :
-       {std::pair{s.source.get(), &s.source_landmarks.labels.scheme},
-        std::pair{s.target.get(), &s.target_landmarks.labels.scheme}}) {
+  for (const auto& [cloud, scheme] : {std::pair{s.source.get(), &cloud_scheme(s, true)},
+                                      std::pair{s.target.get(), &cloud_scheme(s, false)}}) {
     if (!cloud || !cloud->has_labels()) continue;
     labelled = true;
     std::unordered_map<std::uint32_t, std::string> name_of;

@@ -62,6 +62,12 @@ std::vector<Rgba> cloud_colors(const PointCloud& cloud, ColorMode mode, const Cl
 /// of the scheme (grey) as one entry named "". Empty when neither cloud has labels.
 std::vector<DrawnClass> drawn_classes(const Snapshot& s, const ClassColors& colors);
 
+/// The scheme the source's (or the target's) labels were read with: the configured one, or for
+/// `auto` the one detected for that cloud. Every colouring, legend and pick reads labels with it.
+inline const LabelScheme& cloud_scheme(const Snapshot& s, bool source) {
+  return source ? s.source_landmarks.labels.scheme : s.target_landmarks.labels.scheme;
+}
+
 /// The class a raw label belongs to under `scheme` ("" for none).
 std::string class_of_label(const LabelScheme& scheme, std::uint32_t raw_label);
 

@@ -45,10 +45,7 @@ std::optional<Pick> pick_point(const Snapshot& s, const ViewState& view, const T
   p.at = p.source ? transform_point(pose, p.raw.cast<double>()) : p.raw;
   if (p.index < cloud.labels.size()) {
     p.label = static_cast<long>(semantic_id(cloud.labels[p.index]));
-    // In the scheme this cloud's labels were read with (`auto`: the one detected for it).
-    const LabelScheme& scheme =
-        p.source ? s.source_landmarks.labels.scheme : s.target_landmarks.labels.scheme;
-    p.class_name = class_of_label(scheme, cloud.labels[p.index]);
+    p.class_name = class_of_label(cloud_scheme(s, p.source), cloud.labels[p.index]);
   }
   p.nearest_target = 0.0f;
   if (p.source && s.target_index && s.target_index->size() > 0)

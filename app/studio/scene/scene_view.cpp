@@ -100,8 +100,8 @@ void SceneView::update_clouds(const Snapshot& s, const ViewState& view, const Tr
                              ? view.color
                              : ColorMode::by_class;
   // Each cloud in the scheme its labels were read with (`auto`: the one detected for it).
-  const LabelScheme& source_scheme = s.source_landmarks.labels.scheme;
-  const LabelScheme& target_scheme = s.target_landmarks.labels.scheme;
+  const LabelScheme& source_scheme = cloud_scheme(s, true);
+  const LabelScheme& target_scheme = cloud_scheme(s, false);
   const std::string key = std::to_string(s.data_generation) + "/" + source_scheme.name + "/" +
                           source_scheme.class_list() + "|" + target_scheme.name + "/" +
                           target_scheme.class_list() + "/" +

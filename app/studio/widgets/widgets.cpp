@@ -27,6 +27,16 @@ void maybe_tip(const char* tip) {
   if (tip) tooltip(tip);
 }
 
+// Records the last item as a number widget over [lo, hi] (what the driven tests read), with its
+// tooltip.
+void record_ranged(WidgetKind kind, const char* label, ImGuiID id, float frame_w, double lo,
+                   double hi, const char* tip) {
+  WidgetRecord& rec = record_last(kind, label, id, frame_w);
+  rec.lo = static_cast<float>(lo);
+  rec.hi = static_cast<float>(hi);
+  maybe_tip(tip);
+}
+
 }  // namespace
 
 const char* to_string(WidgetKind kind) {
@@ -167,10 +177,7 @@ bool slider_float(const char* label, float* v, float lo, float hi, const char* f
     *v = std::isnan(*v) ? lo : std::clamp(*v, lo, hi);
     r = true;
   }
-  WidgetRecord& rec = record_last(WidgetKind::slider, label, id, frame_w);
-  rec.lo = lo;
-  rec.hi = hi;
-  maybe_tip(tip);
+  record_ranged(WidgetKind::slider, label, id, frame_w, lo, hi, tip);
   return r;
 }
 
@@ -184,10 +191,7 @@ bool slider_int(const char* label, int* v, int lo, int hi, bool log, const char*
     *v = std::clamp(*v, lo, hi);
     r = true;
   }
-  WidgetRecord& rec = record_last(WidgetKind::slider, label, id, frame_w);
-  rec.lo = static_cast<float>(lo);
-  rec.hi = static_cast<float>(hi);
-  maybe_tip(tip);
+  record_ranged(WidgetKind::slider, label, id, frame_w, lo, hi, tip);
   return r;
 }
 
@@ -223,10 +227,7 @@ bool input_int(const char* label, int* v, int lo, int hi, int step, bool on_ente
     changed = clamped != *v;
     *v = clamped;
   }
-  WidgetRecord& rec = record_last(WidgetKind::input_int, label, id, frame_w);
-  rec.lo = static_cast<float>(lo);
-  rec.hi = static_cast<float>(hi);
-  maybe_tip(tip);
+  record_ranged(WidgetKind::input_int, label, id, frame_w, lo, hi, tip);
   return changed;
 }
 
@@ -359,10 +360,7 @@ bool input_double(const char* label, double* v, double lo, double hi, const char
     changed = clamped != *v;
     *v = clamped;
   }
-  WidgetRecord& rec = record_last(WidgetKind::input_int, label, id, frame_w);
-  rec.lo = static_cast<float>(lo);
-  rec.hi = static_cast<float>(hi);
-  maybe_tip(tip);
+  record_ranged(WidgetKind::input_int, label, id, frame_w, lo, hi, tip);
   return changed;
 }
 
@@ -378,10 +376,7 @@ bool input_int64(const char* label, long long* v, long long lo, long long hi, co
     changed = clamped != *v;
     *v = clamped;
   }
-  WidgetRecord& rec = record_last(WidgetKind::input_int, label, id, frame_w);
-  rec.lo = static_cast<float>(lo);
-  rec.hi = static_cast<float>(hi);
-  maybe_tip(tip);
+  record_ranged(WidgetKind::input_int, label, id, frame_w, lo, hi, tip);
   return changed;
 }
 
