@@ -101,6 +101,7 @@ Config preset_config(const std::string& name) {
     c.gnc.model = PoseModel::se3;
     c.verification = VerificationParams{};
     c.refinement.enabled = false;
+    c.clique.prove_first = false;  // Alg. 1: the relaxation on every level
     return c;
   }
   if (name == "indoor") return indoor_config();

@@ -79,6 +79,7 @@ TEST_CASE("the cascaded solver finds the planted clique with 50 to 95 % outliers
 
 TEST_CASE("the relaxation agrees with the exact solver on small random graphs") {
   CliqueParams cp;
+  cp.prove_first = false;  // the relaxation itself
   for (std::uint64_t seed = 0; seed < 20; ++seed) {
     for (bool prune : {true, false}) {
       INFO("seed " << seed << (prune ? " with" : " without") << " pruning");
@@ -104,6 +105,7 @@ TEST_CASE("warm start gives the same cliques as cold start with fewer iterations
     const PyramidGraph g = build_pyramid_graph(c, gp);
     CliqueParams cp;
     cp.prune = prune;
+    cp.prove_first = false;  // the relaxation itself
     cp.solver = CliqueSolver::cascaded;
     const auto warm = solve_pyramid(g, cp);
     cp.solver = CliqueSolver::independent;
@@ -187,6 +189,7 @@ TEST_CASE("never smaller than CLIPPER rounded to the full support, on random gra
     for (bool prune : {true, false}) {
       CliqueParams cp;
       cp.prune = prune;
+      cp.prove_first = !prune;  // the relaxation alone, and the bound's shortcut
       const CliqueResult r = solve_clipper(g, 0, {}, cp);
       CHECK(is_clique(g, 0, r.vertices));
       CHECK(r.vertices.size() >= reference.size());
@@ -218,9 +221,11 @@ TEST_CASE("the cascade never returns a smaller clique than the independent solve
 // the relaxation, unlike the association problems above).
 TEST_CASE("the cascade is never smaller than the independent solves, level by level") {
   const long check_nodes = GENERATE(0L, 200000L);  // the cold fallback alone, and with the check
-  const auto check = [check_nodes](const PyramidGraph& g, const std::string& what) {
+  const bool prove_first = GENERATE(false, true);
+  const auto check = [check_nodes, prove_first](const PyramidGraph& g, const std::string& what) {
     CliqueParams cp;
     cp.cascade_check_nodes = check_nodes;
+    cp.prove_first = prove_first;
     const auto warm = solve_pyramid(g, cp);
     cp.solver = CliqueSolver::independent;
     const auto cold = solve_pyramid(g, cp);
@@ -244,4 +249,65 @@ TEST_CASE("the cascade is never smaller than the independent solves, level by le
     p.run();
     check(p.graph(), "KITTI " + std::to_string(s) + " -> " + std::to_string(t));
   }
+}
+
+TEST_CASE("a level whose lower bound is proven maximum skips the relaxation") {
+  GraphParams gp;
+  gp.trim = TrimKind::difference;
+  gp.thresholds = {0.1, 0.2, 0.4, 0.8};
+  for (std::uint64_t seed : {4u, 5u, 6u}) {
+    const auto c = planted(25, 225, 0.03, seed);
+    const PyramidGraph g = build_pyramid_graph(c, gp);
+    for (const CliqueSolver solver : {CliqueSolver::cascaded, CliqueSolver::independent}) {
+      CliqueParams cp;
+      cp.solver = solver;
+      cp.prove_first_min_edges = 0;  // every level, however small
+      const auto proven = solve_pyramid(g, cp);
+      cp.prove_first = false;
+      cp.prune = false;  // the relaxation on every vertex (a pruned core may already be a clique)
+      const auto relaxed = solve_pyramid(g, cp);
+      int relaxed_steps = 0;
+      for (std::size_t l = 0; l < proven.size(); ++l) {
+        INFO("seed " << seed << ", level " << l);
+        const CliqueResult exact = exact_max_clique(g, static_cast<int>(l), CliqueParams{});
+        CHECK(is_clique(g, static_cast<int>(l), proven[l].vertices));
+        // The bound proves the level's clique maximum at once: no gradient step, and a clique as
+        // large as the exact solver's (and never smaller than the relaxation's).
+        CHECK(proven[l].optimal);
+        CHECK(proven[l].gradient_steps == 0);
+        CHECK(proven[l].vertices.size() == exact.vertices.size());
+        CHECK(proven[l].upper_bound == static_cast<int>(exact.vertices.size()));
+        CHECK(proven[l].vertices.size() >= relaxed[l].vertices.size());
+        relaxed_steps += relaxed[l].gradient_steps;
+      }
+      CHECK(relaxed_steps > 0);  // off: the relaxation runs (the paper's Alg. 1)
+    }
+  }
+}
+
+TEST_CASE("weighted affinities always run the relaxation") {
+  // The densest clique under Gaussian weights need not be the largest: no shortcut by bounds.
+  GraphParams gp;
+  gp.trim = TrimKind::difference;
+  gp.thresholds = {0.1, 0.2, 0.4, 0.8};
+  gp.affinity = AffinityKind::gaussian;
+  const PyramidGraph g = build_pyramid_graph(planted(25, 225, 0.03, 4), gp);
+  int steps = 0;
+  for (const CliqueResult& r : solve_pyramid(g, CliqueParams{})) steps += r.gradient_steps;
+  CHECK(steps > 0);
+}
+
+TEST_CASE("the paper's preset runs the relaxation on every level") {
+  CHECK_FALSE(preset_config("paper").clique.prove_first);
+  CliqueParams small;  // below prove_first_min_edges the relaxation runs
+  small.prove_first_min_edges = 1000000;
+  GraphParams gp;
+  gp.trim = TrimKind::difference;
+  gp.thresholds = {0.1, 0.2, 0.4, 0.8};
+  const PyramidGraph g = build_pyramid_graph(planted(25, 225, 0.03, 4), gp);
+  small.prune = false;
+  int steps = 0;
+  for (const CliqueResult& r : solve_pyramid(g, small)) steps += r.gradient_steps;
+  CHECK(steps > 0);
+  CHECK(default_config().clique.prove_first);
 }

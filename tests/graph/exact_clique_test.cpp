@@ -173,6 +173,71 @@ TEST_CASE("the exact solver agrees with plain branch and bound on association pr
   }
 }
 
+namespace {
+
+// A near-complete graph whose clique number is known: its complement is a disjoint union of
+// cycles, paths, stars and small complete graphs (independence numbers floor(k/2), ceil(k/2),
+// the leaves, 1), so the clique number is the sum of theirs. Vertices are shuffled.
+std::pair<PyramidGraph, int> near_complete(std::uint64_t seed, int components) {
+  std::mt19937_64 rng(seed);
+  std::vector<std::pair<int, int>> missing;  // edges of the complement
+  int n = 0, omega = 0;
+  for (int c = 0; c < components; ++c) {
+    const int kind = static_cast<int>(rng() % 4), k = 2 + static_cast<int>(rng() % 8);
+    const int first = n;
+    if (kind == 0 && k >= 3) {  // cycle
+      for (int i = 0; i < k; ++i) missing.emplace_back(first + i, first + (i + 1) % k);
+      omega += k / 2;
+    } else if (kind == 1 || kind == 0) {  // path
+      for (int i = 0; i + 1 < k; ++i) missing.emplace_back(first + i, first + i + 1);
+      omega += (k + 1) / 2;
+    } else if (kind == 2) {  // star: a centre and k - 1 leaves
+      for (int i = 1; i < k; ++i) missing.emplace_back(first, first + i);
+      omega += k - 1;
+    } else {  // complete graph
+      for (int i = 0; i < k; ++i)
+        for (int j = i + 1; j < k; ++j) missing.emplace_back(first + i, first + j);
+      omega += 1;
+    }
+    n += k;
+  }
+  std::vector<int> ids(static_cast<std::size_t>(n));
+  std::iota(ids.begin(), ids.end(), 0);
+  std::shuffle(ids.begin(), ids.end(), rng);
+  std::vector<std::vector<char>> absent(static_cast<std::size_t>(n),
+                                        std::vector<char>(static_cast<std::size_t>(n), 0));
+  for (auto [a, b] : missing) {
+    absent[static_cast<std::size_t>(ids[static_cast<std::size_t>(a)])]
+          [static_cast<std::size_t>(ids[static_cast<std::size_t>(b)])] = 1;
+    absent[static_cast<std::size_t>(ids[static_cast<std::size_t>(b)])]
+          [static_cast<std::size_t>(ids[static_cast<std::size_t>(a)])] = 1;
+  }
+  std::vector<std::vector<int>> adj(static_cast<std::size_t>(n));
+  for (int a = 0; a < n; ++a)
+    for (int b = 0; b < n; ++b)
+      if (a != b && !absent[static_cast<std::size_t>(a)][static_cast<std::size_t>(b)])
+        adj[static_cast<std::size_t>(a)].push_back(b);
+  return {test::graph_from_lists(std::move(adj)), omega};
+}
+
+}  // namespace
+
+TEST_CASE("the exact solver finds the clique number of near-complete graphs") {
+  // Near-complete subproblems are searched as independent sets of their sparse complement (with
+  // degree and domination reductions and a clique-cover bound); the answer is known by
+  // construction.
+  CliqueParams cp;
+  for (std::uint64_t seed = 0; seed < 16; ++seed) {
+    const auto [g, omega] = near_complete(seed, 8 + static_cast<int>(seed % 5) * 6);
+    INFO("seed " << seed << ", " << g.vertices << " vertices, clique number " << omega);
+    const CliqueResult r = exact_max_clique(g, 0, cp);
+    CHECK(r.optimal);
+    CHECK(is_clique(g, 0, r.vertices));
+    CHECK(static_cast<int>(r.vertices.size()) == omega);
+    CHECK(r.upper_bound == omega);
+  }
+}
+
 TEST_CASE("the exact solver stops at its node budget and says so") {
   CliqueParams cp;
   cp.exact_max_nodes = 5;

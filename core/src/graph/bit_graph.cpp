@@ -146,9 +146,11 @@ class ColourSearch {
   std::vector<Level> levels_;
 };
 
-// Maximum independent set on bit rows (the complement of a near-complete graph): vertices without
-// neighbours are taken, a vertex with one neighbour is taken and its neighbour dropped; the bound
-// is the remaining count minus a greedy matching (each matched edge keeps at most one end);
+// Maximum independent set on bit rows (the complement of a near-complete graph). Reductions:
+// a vertex without neighbours is taken; a vertex with one neighbour is taken and its neighbour
+// dropped; a vertex whose closed neighbourhood contains another's is dropped (domination: an
+// independent set through it can swap it for the other). The bound is the count taken plus the
+// cliques of a greedy clique cover (an independent set keeps at most one vertex of each);
 // branching takes or drops a vertex of largest degree.
 class IndependentSearch {
  public:
@@ -172,15 +174,38 @@ class IndependentSearch {
       if (const Word x = r[i] & P[static_cast<std::size_t>(i)]) return i * 64 + __builtin_ctzll(x);
     return -1;
   }
+  // Whether N[v] is inside N[u] within P (u a neighbour of v).
+  bool inside(int v, int u, const std::vector<Word>& P) const {
+    const Word *rv = g_.row(v), *ru = g_.row(u);
+    for (int i = 0; i < w_; ++i) {
+      Word nv = rv[i] & P[static_cast<std::size_t>(i)], nu = ru[i] & P[static_cast<std::size_t>(i)];
+      if (i == (u >> 6)) nv &= ~(Word(1) << (u & 63));  // u is in N[u]
+      if (i == (v >> 6)) nu |= Word(1) << (v & 63);     // v is in N(u)
+      if (nv & ~nu) return false;
+    }
+    return true;
+  }
 
-  // Degree-0 and degree-1 reductions; taken vertices go to current_.
+  // Degree-0, degree-1 and domination reductions; taken vertices go to current_.
   void reduce(std::vector<Word>& P) {
     for (bool changed = true; changed;) {
       changed = false;
       for_each_bit(std::vector<Word>(P).data(), w_, [&](int v) {
         if (!test_bit(P.data(), v)) return;
         const int d = degree(v, P);
-        if (d > 1) return;
+        if (d > 1) {
+          // Neighbours u with N[v] inside N[u] are dominated by v.
+          const Word* r = g_.row(v);
+          for (int i = 0; i < w_; ++i)
+            for (Word x = r[i] & P[static_cast<std::size_t>(i)]; x; x &= x - 1) {
+              const int u = i * 64 + __builtin_ctzll(x);
+              if (inside(v, u, P)) {
+                clear_bit(P.data(), u);
+                changed = true;
+              }
+            }
+          return;
+        }
         if (d == 1) clear_bit(P.data(), first_neighbour(v, P));
         clear_bit(P.data(), v);
         current_.push_back(v);
@@ -193,22 +218,38 @@ class IndependentSearch {
     if (!budget_.spend()) return;
     const std::size_t mark = current_.size();
     reduce(P);
-    int remaining = 0, matched = 0, pick = -1, pick_degree = -1;
-    std::vector<Word> Q = P;
+    int remaining = 0, cliques = 0, pick = -1, pick_degree = -1;
+    std::vector<Word> Q = P, K(static_cast<std::size_t>(w_));
     for_each_bit(P.data(), w_, [&](int v) {
       ++remaining;
       const int d = degree(v, P);
       if (d > pick_degree) pick_degree = d, pick = v;
       if (!test_bit(Q.data(), v)) return;
+      // A clique of the cover: v and, greedily, uncovered vertices adjacent to all its members.
+      ++cliques;
       clear_bit(Q.data(), v);
-      const int u = first_neighbour(v, Q);
-      if (u >= 0) clear_bit(Q.data(), u), ++matched;
+      const Word* r = g_.row(v);
+      bool any = false;
+      for (int i = 0; i < w_; ++i) {
+        K[static_cast<std::size_t>(i)] = r[i] & Q[static_cast<std::size_t>(i)];
+        any = any || K[static_cast<std::size_t>(i)];
+      }
+      while (any) {
+        const int u = first_neighbour(v, K);  // any member of K
+        const Word* ru = g_.row(u);
+        clear_bit(Q.data(), u);
+        any = false;
+        for (int i = 0; i < w_; ++i) {
+          K[static_cast<std::size_t>(i)] &= ru[i];
+          any = any || K[static_cast<std::size_t>(i)];
+        }
+      }
     });
     const int size = static_cast<int>(current_.size());
-    if (root) root_bound_ = size + remaining - matched;
+    if (root) root_bound_ = size + cliques;
     if (remaining == 0) {
       if (size > best_size_) best_size_ = size, best_ = current_;
-    } else if (size + remaining - matched > best_size_) {
+    } else if (size + cliques > best_size_) {
       std::vector<Word> without = P;
       clear_bit(without.data(), pick);
       const Word* r = g_.row(pick);  // take `pick`: its neighbours go
@@ -242,9 +283,13 @@ std::vector<int> max_clique_bits(const BitGraph& g, int lower, SearchBudget& bud
   edges /= 2;
   if (n >= kDenseMinSize && edges >= kDenseFraction * 0.5 * n * (n - 1.0)) {
     BitGraph complement(n);
-    for (int a = 0; a < n; ++a)
-      for (int b = a + 1; b < n; ++b)
-        if (!g.adjacent(a, b)) complement.connect(a, b);
+    const std::vector<Word> all = g.all();
+    for (int a = 0; a < n; ++a) {
+      const Word* r = g.row(a);
+      Word* c = complement.row(a);
+      for (int i = 0; i < g.words(); ++i) c[i] = ~r[i] & all[static_cast<std::size_t>(i)];
+      clear_bit(c, a);
+    }
     std::vector<int> c = IndependentSearch(complement, budget).solve(lower, complete, upper_bound);
     std::sort(c.begin(), c.end());
     return c;

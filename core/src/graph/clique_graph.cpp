@@ -23,6 +23,24 @@ LevelCsr level_csr(const PyramidGraph& g, int level) {
   return s;
 }
 
+LevelCsr level_csr(const PyramidGraph& g, int level, const std::vector<int>& keep) {
+  LevelCsr s;
+  std::vector<int> local(static_cast<std::size_t>(g.vertices), -1);
+  for (std::size_t i = 0; i < keep.size(); ++i)
+    local[static_cast<std::size_t>(keep[i])] = static_cast<int>(i);
+  s.offsets.assign(keep.size() + 1, 0);
+  for (std::size_t i = 0; i < keep.size(); ++i) {
+    const auto v = static_cast<std::size_t>(keep[i]);
+    const auto last = static_cast<std::size_t>(g.offsets[v + 1]);
+    for (auto e = static_cast<std::size_t>(g.offsets[v]); e < last; ++e) {
+      const int w = local[static_cast<std::size_t>(g.neighbors[e])];
+      if (g.level[e] <= level && w >= 0) s.neighbors.push_back(w);  // sorted: keep is
+    }
+    s.offsets[i + 1] = static_cast<std::int64_t>(s.neighbors.size());
+  }
+  return s;
+}
+
 CoreDecomposition core_decomposition(const LevelCsr& g) {
   const int n = g.size();
   CoreDecomposition d;

@@ -56,6 +56,8 @@ std::vector<int> level_degrees(const PyramidGraph& g, int level);
 
 /// The edges of level `level` (those whose lowest level is at most `level`).
 LevelCsr level_csr(const PyramidGraph& g, int level);
+/// The same, induced by `keep` (sorted pyramid ids; local vertex i is keep[i]).
+LevelCsr level_csr(const PyramidGraph& g, int level, const std::vector<int>& keep);
 
 /// Core numbers (Batagelj and Zaversnik's bucket algorithm, O(V + E)) and the degeneracy order:
 /// `order[i]` is the i-th vertex removed (lowest core first), `position` its inverse.
@@ -284,7 +286,8 @@ struct SearchBudget;
 /// The exact solver on one level within `budget` (nodes and deadline, shared by the levels of a
 /// pyramid): the best clique found, whether it is proven maximum, the bound reached, and which
 /// budget stopped it.
+/// `seed`, if given, is a clique of this level to start from (the previous level's: levels nest).
 CliqueResult exact_level(const PyramidGraph& g, int level, const CliqueParams& params,
-                         SearchBudget& budget);
+                         SearchBudget& budget, const std::vector<int>& seed = {});
 
 }  // namespace pagor::detail

@@ -39,6 +39,49 @@ bool is_clique(const PyramidGraph& g, int level, const std::vector<int>& vertice
 
 namespace {
 
+// A lower bound on the level's clique number: the known clique (if it is one here) grown to a
+// maximal one, then greedy cliques from the highest degrees that are not in it (a cheap search
+// when the known clique is already large).
+std::vector<int> lower_bound(const detail::PyramidLevel& view, const std::vector<int>& deg,
+                             const std::vector<int>& known_clique, const CliqueParams& p,
+                             detail::Marks& marks) {
+  std::vector<int> lower;
+  if (!known_clique.empty() && detail::is_clique(view, known_clique, marks))
+    lower = detail::extend_clique(view, known_clique, deg, static_cast<int>(known_clique.size()),
+                                  marks);
+  return detail::greedy_clique(view, deg, p.greedy_starts, marks, std::move(lower));
+}
+
+// prove_first: the lower bound's clique, when a bounded exact search proves it maximum (then the
+// relaxation cannot return a larger one); `r` is left untouched otherwise.
+bool proven_without_relaxation(const PyramidGraph& g, int level, const CliqueParams& p,
+                               const std::vector<int>& known_clique, double d0, CliqueResult& r) {
+  if (!p.prove_first || g.affinity != AffinityKind::binary || g.vertices == 0 ||
+      (static_cast<std::size_t>(level) < g.edges_at_level.size() &&
+       static_cast<long>(g.edges_at_level[static_cast<std::size_t>(level)]) <
+           p.prove_first_min_edges))
+    return false;
+  const detail::PyramidLevel view{g, level};
+  detail::Marks marks(g.vertices);
+  std::vector<int> lower =
+      lower_bound(view, detail::level_degrees(g, level), known_clique, p, marks);
+  bool optimal = false;
+  int bound = 0;
+  lower = detail::larger_clique(g, level, std::move(lower), p.cascade_check_nodes, optimal, &bound);
+  if (!optimal) return false;
+  r.level = level;
+  r.vertices = std::move(lower);
+  r.optimal = true;
+  r.upper_bound = bound;
+  r.start = known_clique.empty() ? CliqueStart::cold : CliqueStart::warm;
+  r.penalty = d0;  // no relaxation ran: the next warm level starts from the same penalty
+  // The relaxation's optimum on a maximum clique is its indicator vector (the next level's start).
+  r.u.assign(static_cast<std::size_t>(g.vertices), 0.0);
+  for (int v : r.vertices)
+    r.u[static_cast<std::size_t>(v)] = 1.0 / std::sqrt(double(r.vertices.size()));
+  return true;
+}
+
 // The relaxation on one level (solve_clipper without the warm level's checks); no timing.
 CliqueResult relax_level(const PyramidGraph& g, int level, const std::vector<double>& u0,
                          const CliqueParams& p, const std::vector<int>& known_clique, double d0) {
@@ -56,12 +99,7 @@ CliqueResult relax_level(const PyramidGraph& g, int level, const std::vector<dou
   std::vector<int> lower, keep;
   if (p.prune) {
     const std::vector<int> deg = detail::level_degrees(g, level);
-    // The known clique grown to a maximal one, then greedy cliques from the highest degrees that
-    // are not in it (a cheap search when the known clique is already large).
-    if (!known_clique.empty() && detail::is_clique(view, known_clique, marks))
-      lower = detail::extend_clique(view, known_clique, deg, static_cast<int>(known_clique.size()),
-                                    marks);
-    lower = detail::greedy_clique(view, deg, p.greedy_starts, marks, std::move(lower));
+    lower = lower_bound(view, deg, known_clique, p, marks);
     keep = detail::k_core(view, deg, static_cast<int>(lower.size()) - 1,
                           [&](int v) { return view.row_length(v); });
   } else {
@@ -113,7 +151,12 @@ CliqueResult relax_level(const PyramidGraph& g, int level, const std::vector<dou
 CliqueResult solve_clipper(const PyramidGraph& g, int level, const std::vector<double>& u0,
                            const CliqueParams& p, const std::vector<int>& known_clique, double d0) {
   const auto t0 = Clock::now();
-  CliqueResult r = relax_level(g, level, u0, p, known_clique, d0);
+  CliqueResult r;
+  if (proven_without_relaxation(g, level, p, known_clique, d0, r)) {
+    r.time_ms = ms_since(t0);
+    return r;
+  }
+  r = relax_level(g, level, u0, p, known_clique, d0);
   const bool warm = p.prune && !known_clique.empty() && g.vertices > 0;
   // A warm start can settle in a worse local optimum than a cold one (KITTI 20 -> 30, level 2:
   // 29 against 30; gedi-dev 03, level 2: 66 against 68). A warm level therefore ends with a
@@ -156,7 +199,9 @@ std::vector<CliqueResult> solve_pyramid(const PyramidGraph& g, const CliqueParam
           budget.deadline = t0 + std::chrono::microseconds(static_cast<long>(
                                      1000.0 * p.exact_time_budget_ms * (l + 1) / g.levels()));
         budget.out_of_time = false;  // a level's share is its own
-        out.push_back(detail::exact_level(g, l, p, budget));
+        // Level l-1's clique is a clique here too (levels nest): the search starts from it.
+        out.push_back(detail::exact_level(g, l, p, budget,
+                                          l > 0 ? out.back().vertices : std::vector<int>{}));
         break;
       case CliqueSolver::independent:
         out.push_back(solve_clipper(g, l, start, p));

@@ -11,6 +11,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
+#if defined(__x86_64__)
+#include <immintrin.h>
+#endif
 
 #include "graph/bit_graph.hpp"
 #include "graph/clique_graph.hpp"
@@ -77,6 +80,154 @@ std::vector<int> solve_subproblem(const detail::LevelCsr& g, const detail::CoreD
   return clique;
 }
 
+// The vertices that could be in a clique larger than some size (those whose core number is at
+// least that size: a suffix of the degeneracy order, from position `first` on), as bit rows,
+// numbered from the end of the order: local vertex i is the vertex at position n - 1 - i. A
+// subproblem's candidates (a vertex's later neighbours) are then a row's lower bits, already in
+// the order the colouring wants (highest core first), and its peeling counts neighbours a word at
+// a time.
+struct SuffixBits {
+  int first = 0;
+  detail::BitGraph bits;  // bits.ids: local -> vertex
+};
+
+constexpr int kMaxSuffixBits = 1 << 14;  // bit rows up to this many vertices (32 MB)
+
+SuffixBits suffix_bits(const detail::LevelCsr& g, const detail::CoreDecomposition& cd, int first) {
+  SuffixBits s;
+  s.first = first;
+  const int n = g.size() - first;
+  s.bits = detail::BitGraph(n);
+  s.bits.ids.resize(static_cast<std::size_t>(n));
+  const int last = g.size() - 1;
+  for (int i = 0; i < n; ++i) {
+    const int v = cd.order[static_cast<std::size_t>(last - i)];
+    s.bits.ids[static_cast<std::size_t>(i)] = v;
+    detail::Word* row = s.bits.row(i);
+    for (const int* w = g.begin(v); w != g.end(v); ++w) {
+      const int j = last - cd.position[static_cast<std::size_t>(*w)];
+      if (j < n) detail::set_bit(row, j);
+    }
+  }
+  return s;
+}
+
+// Packs the bits of x selected by `mask` into the low bits, in order: BMI2's pext where the CPU
+// has it (chosen at run time), else a loop.
+#if defined(__x86_64__)
+__attribute__((target("bmi2"))) detail::Word pack_bmi2(detail::Word x, detail::Word mask) {
+  return _pext_u64(x, mask);
+}
+#endif
+detail::Word pack_portable(detail::Word x, detail::Word mask) {
+  detail::Word out = 0;
+  int k = 0;
+  for (; mask; mask &= mask - 1, ++k)
+    if (x & mask & (~mask + 1)) out |= detail::Word(1) << k;
+  return out;
+}
+
+// The subgraph of `b` induced by the set bits of `c` (words [0, span)), local vertex k being the
+// k-th set bit: each row packed word by word.
+detail::BitGraph induced(const detail::BitGraph& b, const detail::Word* c, int span, int n) {
+#if defined(__x86_64__)
+  static const bool bmi2 = __builtin_cpu_supports("bmi2");
+  const auto pack = [](detail::Word x, detail::Word mask) {
+    return bmi2 ? pack_bmi2(x, mask) : pack_portable(x, mask);
+  };
+#else
+  const auto pack = pack_portable;
+#endif
+  detail::BitGraph sub(n);
+  std::vector<int> offset(static_cast<std::size_t>(span) + 1, 0);
+  for (int t = 0; t < span; ++t)
+    offset[static_cast<std::size_t>(t) + 1] =
+        offset[static_cast<std::size_t>(t)] + __builtin_popcountll(c[t]);
+  int k = 0;
+  for (int t = 0; t < span; ++t)
+    for (detail::Word x = c[t]; x; x &= x - 1, ++k) {
+      const detail::Word* ra = b.row(t * 64 + __builtin_ctzll(x));
+      detail::Word* out = sub.row(k);
+      for (int u = 0; u < span; ++u) {
+        if (!c[u]) continue;
+        const detail::Word packed = pack(ra[u], c[u]);
+        if (!packed) continue;
+        const int at = offset[static_cast<std::size_t>(u)];
+        out[at >> 6] |= packed << (at & 63);
+        if ((at & 63) != 0 && (at >> 6) + 1 < sub.words())
+          out[(at >> 6) + 1] |= packed >> (64 - (at & 63));
+      }
+    }
+  return sub;
+}
+
+// The subproblem of local vertex i of `b` (as solve_subproblem, on bits): i's later neighbours
+// (the lower local ids), peeled to those with at least best - 1 neighbours among them, searched for
+// a clique of more than best - 1. Returns the clique with i (local ids), or empty.
+std::vector<int> solve_subproblem_bits(const detail::BitGraph& b, int i, int best,
+                                       detail::SearchBudget& budget, bool& complete, int& bound,
+                                       std::vector<detail::Word>& C) {
+  using detail::Word;
+  if (i < best) return {};  // fewer later vertices than a larger clique needs
+  const int span = i / 64 + 1;  // no later vertex beyond word i / 64
+  const Word* r = b.row(i);
+  Word* c = C.data();
+  for (int k = 0; k < span; ++k) c[k] = r[k];
+  c[span - 1] &= (Word(1) << (i % 64)) - 1;  // i and earlier vertices out
+  int count = detail::count_bits(c, span);
+  // A clique with i larger than `best` needs `best` of these, each adjacent to best - 1 others.
+  for (bool changed = true; changed && count >= best;) {
+    changed = false;
+    for (int k = 0; k < span; ++k)
+      for (Word x = c[k]; x; x &= x - 1) {
+        const int a = k * 64 + __builtin_ctzll(x);
+        if (detail::count_and(b.row(a), c, span) < best - 1) {
+          detail::clear_bit(c, a);
+          --count;
+          changed = true;
+        }
+      }
+  }
+  if (count < best) return {};
+  // A greedy colouring of the survivors with best - 1 colours proves that no best of them are
+  // pairwise adjacent; most subproblems end here, before their graph is extracted.
+  {
+    std::vector<Word> U(c, c + span), Q(static_cast<std::size_t>(span));
+    bool left = true;
+    for (int colours = 0; colours < best - 1 && left; ++colours) {
+      Q = U;
+      for (int k = 0; k < span; ++k)
+        while (Q[static_cast<std::size_t>(k)]) {
+          const int a = k * 64 + __builtin_ctzll(Q[static_cast<std::size_t>(k)]);
+          detail::clear_bit(U.data(), a);
+          const Word* ra = b.row(a);
+          for (int t = k; t < span; ++t) Q[static_cast<std::size_t>(t)] &= ~ra[t];
+          detail::clear_bit(Q.data(), a);
+        }
+      left = false;
+      for (Word x : U) left = left || x;
+    }
+    if (!left) return {};
+  }
+  // The survivors as a small bit graph, in local order: highest core first, so that the vertices
+  // coloured first get the low colours.
+  std::vector<int> cand;
+  cand.reserve(static_cast<std::size_t>(count));
+  detail::for_each_bit(c, span, [&](int a) { cand.push_back(a); });
+  const detail::BitGraph sub = induced(b, c, span, count);
+  bool finished = true;
+  int sub_bound = 0;
+  const std::vector<int> found = detail::max_clique_bits(sub, best - 1, budget, finished, sub_bound);
+  if (!finished) {
+    complete = false;
+    bound = std::max(bound, sub_bound + 1);
+  }
+  if (found.empty()) return {};
+  std::vector<int> clique{i};
+  for (int k : found) clique.push_back(cand[static_cast<std::size_t>(k)]);
+  return clique;
+}
+
 // Whether a greedy colouring of the vertices that could be in a clique larger than `size` (core
 // number at least `size`), taken from the end of the degeneracy order, needs no more than `size`
 // colours: then every clique among them has at most `size` vertices, and none is larger.
@@ -112,14 +263,39 @@ std::vector<int> search_from(const detail::LevelCsr& csr, const detail::CoreDeco
     bound = static_cast<int>(best.size());
     return best;
   }
-  std::vector<int> local(static_cast<std::size_t>(csr.size()), -1);
   int i = csr.size() - 1;
-  for (; i >= 0 && !budget.exhausted(); --i) {
-    const int v = cd.order[static_cast<std::size_t>(i)];
-    const int size = static_cast<int>(best.size());
-    if (cd.core[static_cast<std::size_t>(v)] < size) continue;  // in no clique larger than best
-    std::vector<int> c = solve_subproblem(csr, cd, v, size, budget, optimal, bound, local);
-    if (c.size() > best.size()) best = std::move(c);
+  // Cores grow along the degeneracy order: the vertices that could be in a larger clique are a
+  // suffix of it, searched on bit rows when it is not too large.
+  int first = 0;
+  while (first < csr.size() &&
+         cd.core[static_cast<std::size_t>(cd.order[static_cast<std::size_t>(first)])] <
+             static_cast<int>(best.size()))
+    ++first;
+  if (csr.size() - first <= kMaxSuffixBits) {
+    const SuffixBits s = suffix_bits(csr, cd, first);
+    std::vector<detail::Word> C(static_cast<std::size_t>(s.bits.words()));
+    for (; i >= first && !budget.exhausted(); --i) {
+      const int size = static_cast<int>(best.size());
+      if (cd.core[static_cast<std::size_t>(cd.order[static_cast<std::size_t>(i)])] < size) {
+        i = first - 1;  // every earlier vertex has a core number this low too
+        break;
+      }
+      std::vector<int> c =
+          solve_subproblem_bits(s.bits, csr.size() - 1 - i, size, budget, optimal, bound, C);
+      if (c.size() > best.size()) {
+        best.clear();
+        for (int k : c) best.push_back(s.bits.ids[static_cast<std::size_t>(k)]);
+      }
+    }
+  } else {
+    std::vector<int> local(static_cast<std::size_t>(csr.size()), -1);
+    for (; i >= 0 && !budget.exhausted(); --i) {
+      const int v = cd.order[static_cast<std::size_t>(i)];
+      const int size = static_cast<int>(best.size());
+      if (cd.core[static_cast<std::size_t>(v)] < size) continue;  // in no clique larger than best
+      std::vector<int> c = solve_subproblem(csr, cd, v, size, budget, optimal, bound, local);
+      if (c.size() > best.size()) best = std::move(c);
+    }
   }
   for (; i >= 0; --i) {  // not searched: a clique through v has at most core(v) + 1 vertices
     const int c = cd.core[static_cast<std::size_t>(cd.order[static_cast<std::size_t>(i)])];
@@ -139,20 +315,33 @@ std::vector<int> detail::larger_clique(const PyramidGraph& g, int level, std::ve
                                        long max_nodes, bool& optimal, int* bound) {
   optimal = true;
   if (bound) *bound = static_cast<int>(best.size());
+  std::sort(best.begin(), best.end());
   if (g.vertices == 0) return best;
-  const detail::LevelCsr csr = detail::level_csr(g, level);
+  // Every member of a larger clique has at least |best| neighbours in the |best|-core: the search
+  // runs on that core alone (often empty on the sparse levels, which proves best maximum at once).
+  const detail::PyramidLevel view{g, level};
+  const std::vector<int> keep =
+      detail::k_core(view, detail::level_degrees(g, level), static_cast<int>(best.size()),
+                     [&](int v) { return view.row_length(v); });
+  if (keep.empty()) return best;
+  const detail::LevelCsr csr = detail::level_csr(g, level, keep);
   detail::SearchBudget budget;
   budget.max_nodes = max_nodes > 0 ? max_nodes : -1;
   if (max_nodes <= 0) budget.out_of_nodes = true;  // no search: only the colouring's proof
   int reached = 0;
-  best =
-      search_from(csr, detail::core_decomposition(csr), std::move(best), budget, optimal, reached);
+  // search_from only reads best's size; what it returns is best itself or a larger clique in the
+  // core's local ids.
+  std::vector<int> found =
+      search_from(csr, detail::core_decomposition(csr), best, budget, optimal, reached);
   if (bound) *bound = reached;
-  return best;
+  if (found.size() <= best.size()) return best;
+  for (int& v : found) v = keep[static_cast<std::size_t>(v)];
+  std::sort(found.begin(), found.end());
+  return found;
 }
 
 CliqueResult detail::exact_level(const PyramidGraph& g, int level, const CliqueParams& p,
-                                 SearchBudget& budget) {
+                                 SearchBudget& budget, const std::vector<int>& seed) {
   const auto t0 = std::chrono::steady_clock::now();
   CliqueResult r;
   r.level = level;
@@ -161,9 +350,9 @@ CliqueResult detail::exact_level(const PyramidGraph& g, int level, const CliqueP
     const detail::LevelCsr csr = detail::level_csr(g, level);
     const detail::CoreDecomposition cd = detail::core_decomposition(csr);
     detail::Marks marks(g.vertices);
-    r.vertices =
-        search_from(csr, cd, detail::greedy_clique(csr, cd.core, p.greedy_starts * 8, marks),
-                    budget, r.optimal, r.upper_bound);
+    std::vector<int> start = detail::greedy_clique(csr, cd.core, p.greedy_starts * 8, marks);
+    if (seed.size() > start.size() && detail::is_clique(csr, seed, marks)) start = seed;
+    r.vertices = search_from(csr, cd, std::move(start), budget, r.optimal, r.upper_bound);
   }
   r.budget = r.optimal            ? CliqueBudget::none
              : budget.out_of_time ? CliqueBudget::time

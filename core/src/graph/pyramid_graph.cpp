@@ -16,11 +16,15 @@ struct Edge {
   std::uint8_t level;
 };
 
-// Coordinates and ids in flat arrays, read in the hot loop.
+// Coordinates and ids in flat arrays, read in the hot loop: exact (double) and, for a first
+// vectorised pass, centred single-precision copies.
 struct Packed {
   std::vector<double> px, py, pz, qx, qy, qz;
+  std::vector<float> fx[6];  // px, py, pz, qx, qy, qz centred on their means
   std::vector<int> source, target;
+  double extent = 0;  // largest centred coordinate [m]
   explicit Packed(const std::vector<Correspondence>& c) {
+    Eigen::Vector3d mp = Eigen::Vector3d::Zero(), mq = Eigen::Vector3d::Zero();
     for (const auto& x : c) {
       px.push_back(x.p.x());
       py.push_back(x.p.y());
@@ -30,38 +34,187 @@ struct Packed {
       qz.push_back(x.q.z());
       source.push_back(x.source);
       target.push_back(x.target);
+      mp += x.p;
+      mq += x.q;
+    }
+    if (!c.empty()) {
+      mp /= double(c.size());
+      mq /= double(c.size());
+    }
+    const std::vector<double>* exact[6] = {&px, &py, &pz, &qx, &qy, &qz};
+    const double mean[6] = {mp.x(), mp.y(), mp.z(), mq.x(), mq.y(), mq.z()};
+    for (int a = 0; a < 6; ++a) {
+      fx[a].reserve(c.size());
+      for (double v : *exact[a]) {
+        fx[a].push_back(static_cast<float>(v - mean[a]));
+        extent = std::max(extent, std::abs(v - mean[a]));
+      }
     }
   }
 };
 
-// Edges (i, j), i < j, for i in [begin, end), in increasing (i, j) order. Most pairs are rejected
-// on squared lengths alone; square roots are taken only for the survivors.
-void collect_edges(const Packed& c, const GraphParams& params, int begin, int end,
-                   std::vector<Edge>& out) {
+// The exact test of pair (i, j), i < j: appends the edge when it is consistent at some level.
+inline void exact_pair(const Packed& c, const GraphParams& params, int i, int j,
+                       std::vector<Edge>& out) {
+  const auto si = static_cast<std::size_t>(i), sj = static_cast<std::size_t>(j);
+  const double dpx = c.px[si] - c.px[sj], dpy = c.py[si] - c.py[sj], dpz = c.pz[si] - c.pz[sj];
+  const double dqx = c.qx[si] - c.qx[sj], dqy = c.qy[si] - c.qy[sj], dqz = c.qz[si] - c.qz[sj];
+  const double a2 = dpx * dpx + dpy * dpy + dpz * dpz;
+  const double b2 = dqx * dqx + dqy * dqy + dqz * dqz;
+  const double min_sq = params.min_length * params.min_length;
+  if (a2 < min_sq || b2 < min_sq) return;
+  if (c.source[si] == c.source[sj] || c.target[si] == c.target[sj]) return;  // one landmark, two roles
   const auto& eps = params.thresholds;
-  const double largest = eps.back();
+  const double tv = trim_value(params.trim, std::sqrt(a2), std::sqrt(b2));
+  if (!(tv <= eps.back())) return;
+  const auto level = std::lower_bound(eps.begin(), eps.end(), tv) - eps.begin();
+  out.push_back({i, j, static_cast<float>(tv), static_cast<std::uint8_t>(level)});
+}
+
+constexpr int kBlock = 256;  // pairs tested at once by the single-precision pass
+
+// The single-precision pass over pairs (i, j), j in [j0, j0 + n): the j that may be consistent,
+// written to `keep`; returns how many. Its margins are far wider than single precision's error on
+// centred coordinates, so that every pair the exact test accepts passes (the exact test decides).
+// Compiled for AVX2 too where the CPU has it.
+__attribute__((target_clones("avx2", "default"))) int prefilter(
+    const Packed& c, int i, int j0, int n, bool ratio, float min_sq, float ratio_sq, float ratio_slack,
+    float diff, int* keep) {
+  const auto si = static_cast<std::size_t>(i);
+  const float pxi = c.fx[0][si], pyi = c.fx[1][si], pzi = c.fx[2][si];
+  const float qxi = c.fx[3][si], qyi = c.fx[4][si], qzi = c.fx[5][si];
+  const float* px = c.fx[0].data() + j0;
+  const float* py = c.fx[1].data() + j0;
+  const float* pz = c.fx[2].data() + j0;
+  const float* qx = c.fx[3].data() + j0;
+  const float* qy = c.fx[4].data() + j0;
+  const float* qz = c.fx[5].data() + j0;
+  unsigned char pass[kBlock];
+  // Two branch-free loops (one per TRIM kind), so that the compiler runs them on vector lanes.
+  if (ratio) {
+    for (int t = 0; t < n; ++t) {
+      const float dpx = pxi - px[t], dpy = pyi - py[t], dpz = pzi - pz[t];
+      const float dqx = qxi - qx[t], dqy = qyi - qy[t], dqz = qzi - qz[t];
+      const float a2 = dpx * dpx + dpy * dpy + dpz * dpz;
+      const float b2 = dqx * dqx + dqy * dqy + dqz * dqz;
+      const float lo = a2 < b2 ? a2 : b2, hi = a2 < b2 ? b2 : a2;
+      pass[t] = static_cast<unsigned char>((lo >= min_sq) & (hi <= ratio_sq * lo + ratio_slack));
+    }
+  } else {
+    for (int t = 0; t < n; ++t) {
+      const float dpx = pxi - px[t], dpy = pyi - py[t], dpz = pzi - pz[t];
+      const float dqx = qxi - qx[t], dqy = qyi - qy[t], dqz = qzi - qz[t];
+      const float a2 = dpx * dpx + dpy * dpy + dpz * dpz;
+      const float b2 = dqx * dqx + dqy * dqy + dqz * dqz;
+      const float lo = a2 < b2 ? a2 : b2, hi = a2 < b2 ? b2 : a2;
+      pass[t] = static_cast<unsigned char>((lo >= min_sq) &
+                                           (std::sqrt(hi) - std::sqrt(lo) <= diff));
+    }
+  }
+  int k = 0;
+  for (int t = 0; t < n; ++t) {
+    keep[k] = j0 + t;
+    k += pass[t];
+  }
+  return k;
+}
+
+// The exact test of pairs (i, keep[t]), t < k, as exact_pair does it to the last bit, in two
+// passes: the lengths, TRIM values and levels side by side (vectorised, with AVX2 where the CPU
+// has it), then the edges appended.
+__attribute__((target_clones("avx2", "default"))) void exact_block(
+    const Packed& c, const GraphParams& params, int i, const int* keep, int k,
+    std::vector<Edge>& out) {
+  const auto si = static_cast<std::size_t>(i);
+  const double pxi = c.px[si], pyi = c.py[si], pzi = c.pz[si];
+  const double qxi = c.qx[si], qyi = c.qy[si], qzi = c.qz[si];
+  const double* px = c.px.data();
+  const double* py = c.py.data();
+  const double* pz = c.pz.data();
+  const double* qx = c.qx.data();
+  const double* qy = c.qy.data();
+  const double* qz = c.qz.data();
   const double min_sq = params.min_length * params.min_length;
   const bool ratio = params.trim == TrimKind::ratio;
-  const double ratio_sq = (1.0 + largest) * (1.0 + largest);  // ratio: hi^2 <= (1 + eps)^2 lo^2
-  const int m = static_cast<int>(c.px.size());
-  for (int i = begin; i < end; ++i) {
-    const auto si = static_cast<std::size_t>(i);
-    const double pxi = c.px[si], pyi = c.py[si], pzi = c.pz[si];
-    const double qxi = c.qx[si], qyi = c.qy[si], qzi = c.qz[si];
-    const int s = c.source[si], t = c.target[si];
-    for (int j = i + 1; j < m; ++j) {
-      const auto sj = static_cast<std::size_t>(j);
-      const double dpx = pxi - c.px[sj], dpy = pyi - c.py[sj], dpz = pzi - c.pz[sj];
-      const double dqx = qxi - c.qx[sj], dqy = qyi - c.qy[sj], dqz = qzi - c.qz[sj];
+  const auto& eps = params.thresholds;
+  const int levels = static_cast<int>(eps.size());
+  double tv[kBlock];
+  unsigned char ok[kBlock];
+  // One branch-free loop per TRIM kind (vector lanes). The ratio's lo = 0 gives inf or NaN here
+  // where trim_value() gives HUGE_VAL: rejected all the same.
+  const double largest = eps.back();
+  if (ratio) {
+    for (int t = 0; t < k; ++t) {
+      const int j = keep[t];
+      const double dpx = pxi - px[j], dpy = pyi - py[j], dpz = pzi - pz[j];
+      const double dqx = qxi - qx[j], dqy = qyi - qy[j], dqz = qzi - qz[j];
       const double a2 = dpx * dpx + dpy * dpy + dpz * dpz;
       const double b2 = dqx * dqx + dqy * dqy + dqz * dqz;
-      if (a2 < min_sq || b2 < min_sq) continue;
-      if (ratio ? std::max(a2, b2) > ratio_sq * std::min(a2, b2) : false) continue;
-      if (s == c.source[sj] || t == c.target[sj]) continue;  // one landmark, two roles
-      const double tv = trim_value(params.trim, std::sqrt(a2), std::sqrt(b2));
-      if (!(tv <= largest)) continue;
-      const auto level = std::lower_bound(eps.begin(), eps.end(), tv) - eps.begin();
-      out.push_back({i, j, static_cast<float>(tv), static_cast<std::uint8_t>(level)});
+      const double a = std::sqrt(a2), b = std::sqrt(b2);
+      const double lo = a < b ? a : b, hi = a < b ? b : a;
+      tv[t] = hi / lo - 1.0;
+      ok[t] = static_cast<unsigned char>((a2 >= min_sq) & (b2 >= min_sq) & (tv[t] <= largest));
+    }
+  } else {
+    for (int t = 0; t < k; ++t) {
+      const int j = keep[t];
+      const double dpx = pxi - px[j], dpy = pyi - py[j], dpz = pzi - pz[j];
+      const double dqx = qxi - qx[j], dqy = qyi - qy[j], dqz = qzi - qz[j];
+      const double a2 = dpx * dpx + dpy * dpy + dpz * dpz;
+      const double b2 = dqx * dqx + dqy * dqy + dqz * dqz;
+      tv[t] = std::abs(std::sqrt(a2) - std::sqrt(b2));
+      ok[t] = static_cast<unsigned char>((a2 >= min_sq) & (b2 >= min_sq) & (tv[t] <= largest));
+    }
+  }
+  const int s = c.source[si], tg = c.target[si];
+  const std::size_t base = out.size();
+  out.resize(base + static_cast<std::size_t>(k));
+  Edge* e = out.data() + base;
+  int kept = 0;
+  for (int t = 0; t < k; ++t) {
+    if (!ok[t]) continue;
+    const int j = keep[t];
+    const auto sj = static_cast<std::size_t>(j);
+    if (s == c.source[sj] || tg == c.target[sj]) continue;  // one landmark, two roles
+    int level = 0;  // the first level whose epsilon is at least the TRIM value
+    while (level + 1 < levels && eps[static_cast<std::size_t>(level)] < tv[t]) ++level;
+    e[kept++] = {i, j, static_cast<float>(tv[t]), static_cast<std::uint8_t>(level)};
+  }
+  out.resize(base + static_cast<std::size_t>(kept));
+}
+
+// Edges (i, j), i < j, for i in [begin, end), in increasing (i, j) order. A single-precision pass
+// over blocks of pairs rejects most of them; the exact test runs on the rest (all pairs when the
+// coordinates are too far from their centre for single precision to be safe).
+void collect_edges(const Packed& c, const GraphParams& params, int begin, int end,
+                   std::vector<Edge>& out) {
+  const double largest = params.thresholds.back();
+  const bool ratio = params.trim == TrimKind::ratio;
+  const int m = static_cast<int>(c.px.size());
+  // Single precision on centred coordinates (|x| <= extent) errs on a length by less than
+  // delta = 1e-6 (extent + 1) m, and on a squared length by a relative 1e-6 more; the pass widens
+  // every test by that (with a factor of safety), so it keeps every pair the exact test accepts.
+  const bool fast = c.extent < 1e5;
+  const double delta = 1e-6 * (c.extent + 1.0);
+  const double longest = 2 * std::sqrt(3.0) * c.extent + delta;
+  const double shortest = std::max(0.0, params.min_length - delta);
+  const float min_sq = static_cast<float>(shortest * shortest * (1 - 1e-5));
+  const double r = 1.0 + largest;
+  const float ratio_sq = static_cast<float>(r * r * (1 + 1e-5));
+  // hi <= r lo exactly => hi' <= r lo' + (1 + r) delta => hi'^2 <= r^2 lo'^2 + slack
+  const double spread = (1 + r) * delta;
+  const float ratio_slack = static_cast<float>(2 * r * longest * spread + spread * spread);
+  const float diff = static_cast<float>(largest + 2 * delta + 1e-6 * longest);
+  int keep[kBlock];
+  for (int i = begin; i < end; ++i) {
+    if (!fast) {
+      for (int j = i + 1; j < m; ++j) exact_pair(c, params, i, j, out);
+      continue;
+    }
+    for (int j0 = i + 1; j0 < m; j0 += kBlock) {
+      const int n = std::min(kBlock, m - j0);
+      const int k = prefilter(c, i, j0, n, ratio, min_sq, ratio_sq, ratio_slack, diff, keep);
+      exact_block(c, params, i, keep, k, out);
     }
   }
 }
@@ -119,6 +272,21 @@ PyramidGraph build_pyramid_graph(const std::vector<Correspondence>& c, const Gra
   }
   bounds.push_back(m);
   const Packed packed(c);
+  // Room for the edges, estimated on a sample of rows (growing the lists copies them).
+  {
+    std::vector<Edge> sample;
+    const int step = std::max(1, m / 32);
+    double sampled_pairs = 0;
+    for (int i = 0; i < m; i += step) {
+      collect_edges(packed, params, i, i + 1, sample);
+      sampled_pairs += m - 1 - i;
+    }
+    const double fraction = sampled_pairs > 0 ? double(sample.size()) / sampled_pairs : 0.0;
+    for (int t = 0; t < threads; ++t) {
+      const double rows_pairs = (bounds[t + 1] - bounds[t]) * (m - 0.5 * (bounds[t] + bounds[t + 1]));
+      parts[static_cast<std::size_t>(t)].reserve(static_cast<std::size_t>(1.2 * fraction * rows_pairs) + 16);
+    }
+  }
   if (threads == 1) {
     collect_edges(packed, params, 0, m, parts[0]);
   } else {

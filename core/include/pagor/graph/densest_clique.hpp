@@ -69,6 +69,14 @@ struct CliqueParams {
   /// k = greedy size - 1), and never return less than the greedy clique. Off: the plain relaxation
   /// on every vertex.
   bool prune = true;
+  /// Binary affinity: before the relaxation, a bounded exact search (cascade_check_nodes) from the
+  /// lower bound (the previous level's clique or greedy cliques); when it proves that clique
+  /// maximum, the relaxation is skipped: it could not return a larger one. Off: the relaxation
+  /// always runs (the paper's Alg. 1).
+  bool prove_first = true;
+  /// prove_first applies to levels with at least this many edges: on smaller graphs the
+  /// relaxation costs well under a millisecond, and its choice among equal-size cliques is kept
+  long prove_first_min_edges = 3000;
   double tol_u = 1e-8;              ///< inner loop stops when |u_new - u| < tol_u
   double tol_F = 1e-9;              ///< inner loop stops when the objective changes less
   int max_inner_iterations = 200;   ///< gradient steps for one penalty d
@@ -104,6 +112,16 @@ struct CliqueParams {
       {"prune",
        "Relax on the k-core that can hold a clique as large as a greedy one, and never return "
        "less than the greedy clique."});
+    v(&CliqueParams::prove_first,
+      {"prove_first",
+       "Binary affinity: first try to prove the lower bound's clique maximum by a bounded exact "
+       "search (cascade_check_nodes); when that succeeds the relaxation is skipped. Off: the "
+       "relaxation always runs (the paper's Alg. 1)."});
+    v(&CliqueParams::prove_first_min_edges,
+      {"prove_first_min_edges",
+       "prove_first applies to levels with at least this many edges; on smaller graphs the "
+       "relaxation is cheap and its choice among equal-size cliques is kept.",
+       "", Range::closed(0, 1e12)});
     v(&CliqueParams::tol_u, {"tol_u", "The gradient ascent stops when u moves less than this.", "",
                              Range::above(0, 1), std::numeric_limits<double>::quiet_NaN(), true});
     v(&CliqueParams::tol_F,
