@@ -87,7 +87,9 @@ WidgetRegistry& registry();
 void tooltip(const char* tip);
 
 // Wrappers: same meaning as ImGui's, plus registration. Ranges are always enforced (a value typed
-// with Ctrl+click is clamped to [lo, hi]).
+// with Ctrl+click is clamped to [lo, hi]). A number typed into a slider's Ctrl+click field or a
+// number field is applied once, when the field is left (Enter, Tab, a click elsewhere; Escape
+// drops it), never at each keystroke; a slider dragged applies at once.
 bool button(const char* label, ImVec2 size = ImVec2(0, 0), const char* tip = nullptr);
 bool small_button(const char* label, const char* tip = nullptr);
 bool arrow_button(const char* id, ImGuiDir dir, const char* tip = nullptr);
