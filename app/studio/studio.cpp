@@ -209,7 +209,7 @@ void Studio::left_panel(float left, float H) {
     });
     section("History", false, [&] { history_panel(params_, runs_, *this); });
     section("Session", false, [&] {
-      session_panel(SessionFiles{s.session_path, s.screenshot_path, s.bench.plot_path}, *this);
+      session_panel(SessionFiles{s.session_path, s.screenshot_path, s.export_path}, *this);
     });
     ImGui::PopItemWidth();
   }
@@ -254,7 +254,7 @@ void Studio::pair_view(float x, float w, float H) {
   const bool diagnosis = view.diagnosis.panel;
   if (ImGui::Begin(diagnosis ? "Diagnosis" : "Pyramid", nullptr, kPanelFlags)) {
     bottom_panel_switch(view.diagnosis);
-    const Exports exports{state_.bench.plot_path, *this};
+    const Exports exports{state_.export_path, *this};
     if (diagnosis)
       diagnosis_panel(snapshot_.get(), stale_reason_, view, exports);
     else

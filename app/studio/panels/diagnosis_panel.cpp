@@ -202,8 +202,10 @@ void diagnosis_panel(const Snapshot* s, const std::string& stale_reason, ViewSta
       std::string("verdict: ") + verdict_name(d.verdict) + " - " + verdict_sentence(d.verdict),
       ok ? kGood : kBad);
   ui::figure("why: " + d.explanation, ok ? kGood : kBad, true);
-  if (ui::small_button("diagnosis CSV",
-                       "Writes the per-level table to <export path>-diagnosis.csv."))
+  if (result_button("diagnosis CSV",
+                    "Writes the per-level table to <export path>-diagnosis.csv (the export path "
+                    "of the Session panel).",
+                    stale_reason))
     write_export(exports, "diagnosis.csv", diagnosis_csv(d));
 
   const float w = ImGui::GetContentRegionAvail().x;

@@ -22,7 +22,7 @@ class BenchWorker;
 struct SessionFiles {
   std::string& session_path;     ///< the session file saved and loaded
   std::string& screenshot_path;  ///< where a screenshot is written (PNG)
-  std::string& export_path;      ///< where exports go: <export path>-<name>
+  std::string& export_path;      ///< where the pair view's exports go: <export path>-<name>
 };
 
 /// Moves through the pairs file or manifest by `delta` (clamped) and opens that pair.

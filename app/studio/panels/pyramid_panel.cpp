@@ -198,7 +198,7 @@ void pyramid_panel(const Snapshot* s, const RunChanges& changes, const std::stri
                         s->correspondences_capped ? " (capped)" : "");
   diagnosis_verdict_line(*s);
   warning_lines(*s);
-  result_exports(*s, exports);
+  result_exports(*s, stale_reason, exports);
   const int shown = shown_level(view, s->selected, static_cast<int>(s->levels.size()));
   origin_line(*s, shown);
   const float chart_w = std::min(330.0f, ImGui::GetContentRegionAvail().x * 0.34f);

@@ -174,6 +174,9 @@ struct AppState {
 
   std::string session_path = "pagor-session.json";
   std::string screenshot_path = "pagor-studio.png";
+  /// The pair view's exports (result JSON, levels and diagnosis CSV) go to <export_path>-<name>;
+  /// the benchmark view has its own (bench.plot_path).
+  std::string export_path = "pagor-pair";
   Message message;  ///< the last message for the user (StudioActions::notify), in the status bar
   bool want_screenshot = false;
   std::vector<Pick> picks;          ///< at most two: coordinates, and the distance between

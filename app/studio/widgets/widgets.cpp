@@ -169,12 +169,16 @@ WidgetRecord& WidgetRegistry::add(WidgetKind kind, const char* label, ImGuiID id
 
 void tooltip(const char* tip) {
   registry().mark_last_explained();
-  if (ImGui::IsItemHovered()) {
+  // A disabled item explains itself too: why it is disabled is what the user asks then.
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
+    // Opaque and legible also over a disabled item or a dimmed (stale) panel.
+    ImGui::PushStyleVar(ImGuiStyleVar_Alpha, 1.0f);
     ImGui::BeginTooltip();
     ImGui::PushTextWrapPos(ImGui::GetFontSize() * 28.0f);
     ImGui::TextUnformatted(tip);
     ImGui::PopTextWrapPos();
     ImGui::EndTooltip();
+    ImGui::PopStyleVar();
   }
 }
 
