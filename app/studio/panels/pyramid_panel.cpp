@@ -11,6 +11,7 @@
 #include "panels/exports.hpp"
 #include "panels/panels.hpp"
 #include "panels/pyramid_chart.hpp"
+#include "widgets/number_format.hpp"
 #include "widgets/widgets.hpp"
 
 namespace pagor::studio {
@@ -88,9 +89,10 @@ bool level_row(const Snapshot& s, int i, int shown, const RunChanges& changes) {
   ImGui::TableNextColumn();
   if (l.pose.valid) {
     const Transform& T = l.pose.T_target_source;
-    ImGui::Text("%7.2f %6.2f %6.2f", T(0, 3), T(1, 3), T(2, 3));
+    ImGui::Text("%7s %6s %6s", fixed(T(0, 3), 2).c_str(), fixed(T(1, 3), 2).c_str(),
+                fixed(T(2, 3), 2).c_str());
     ImGui::TableNextColumn();
-    ImGui::Text("%.2f", yaw_pitch_roll_deg(T.block<3, 3>(0, 0)).x());
+    ImGui::TextUnformatted(fixed(yaw_pitch_roll_deg(T.block<3, 3>(0, 0)).x(), 2).c_str());
   } else {
     ImGui::TextColored(kDim, "%s", l.pose.failure.c_str());
     ImGui::TableNextColumn();
@@ -140,8 +142,10 @@ void level_details(const Snapshot& s, int shown) {
     if (l.pose.valid) {
       const Transform& T = l.pose.T_target_source;
       const Eigen::Vector3d a = yaw_pitch_roll_deg(T.block<3, 3>(0, 0));
-      ImGui::Text("t = (%.2f, %.2f, %.2f) m", T(0, 3), T(1, 3), T(2, 3));
-      ImGui::Text("yaw %.2f\xc2\xb0 pitch %.2f\xc2\xb0 roll %.2f\xc2\xb0", a.x(), a.y(), a.z());
+      ui::figure("t = (" + fixed(T(0, 3), 2) + ", " + fixed(T(1, 3), 2) + ", " + fixed(T(2, 3), 2) +
+                 ") m");
+      ui::figure("yaw " + fixed(a.x(), 2) + "\xc2\xb0 pitch " + fixed(a.y(), 2) +
+                 "\xc2\xb0 roll " + fixed(a.z(), 2) + "\xc2\xb0");
       ImGui::Text("%zu GNC inliers, %d iterations", l.pose.inliers.size(), l.pose.iterations);
     } else {
       ImGui::TextColored(kBad, "no pose: %s", l.pose.failure.c_str());
