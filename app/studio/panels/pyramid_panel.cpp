@@ -210,8 +210,10 @@ void pyramid_panel(const Snapshot* s, const RunChanges& changes, const std::stri
   const int clicked = levels_table(*s, shown, changes);
   if (clicked >= 0) view.level = clicked;
   if (!s->source)  // as pagor register --correspondences says it
-    ImGui::TextDisabled(
-        "* selected: without clouds (no D to verify on). Click a row to view its level.");
+    ui::figure(
+        "* selected: lowest S = sum of min(residual, noise bound) over all correspondences (no "
+        "clouds, so no D). Click a row to view its level.",
+        kDim, true);
   else
     ImGui::TextDisabled(
         "* selected: lowest D (\xce\xbc %.2f m, %zu points). Click a row to view its level.",
