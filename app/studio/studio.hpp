@@ -124,6 +124,7 @@ class Studio : public StudioActions {
   };
   std::vector<KeyPress> keys_;
   double frame_ms_ = 0.0;
+  std::uint64_t fit_request_ = 0;  // the data request the camera is to be fitted to (0: any)
 };
 
 }  // namespace pagor::studio
