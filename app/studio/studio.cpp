@@ -328,6 +328,7 @@ void Studio::frame(int width, int height) {
   snapshot_ = worker_.snapshot();
   runs_.observe(snapshot_);
   update_staleness(status);
+  forget_unreadable(status);
   // The data the camera waits for failed (or was replaced by newer data): fit what is shown.
   if (fit_request_ && status.finished >= fit_request_ &&
       (!snapshot_ || snapshot_->request < fit_request_))

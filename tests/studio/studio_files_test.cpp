@@ -342,3 +342,42 @@ TEST_CASE("exports of a stale result are disabled, saying why; the pair view has
   studio::load_session(d.state().session_path, loaded);
   CHECK(loaded.export_path == tmp.file("pair"));
 }
+
+TEST_CASE("a file that fails to open leaves the recent list; the list's label is not cut") {
+  TempDir tmp;
+  studio::AppState s = synthetic_state(tmp);
+  s.recent_file = tmp.file("recent.txt");
+  UiDriver d(s, 1024, 700);
+  d.settle();
+  // Opened once, then gone: picked again, it fails and is dropped.
+  std::filesystem::copy_file(semreg("03/T_target_source.txt"), tmp.file("gt.txt"));
+  d.studio().open_file(tmp.file("gt.txt"), studio::FilePurpose::any);
+  REQUIRE(d.state().recent.size() == 1);
+  std::filesystem::remove(tmp.file("gt.txt"));
+  d.studio().open_file(tmp.file("gt.txt"), studio::FilePurpose::any);
+  CHECK(d.state().message.level == studio::MessageLevel::error);
+  CHECK(d.state().message.text.find("dropped from the recent files") != std::string::npos);
+  CHECK(d.state().recent.empty());
+  studio::AppState reread;
+  reread.recent_file = s.recent_file;
+  studio::load_recent_files(reread);
+  CHECK(reread.recent.empty());  // and from the list kept between runs
+  // A cloud that exists but cannot be read: the worker fails on it, and it is dropped too.
+  std::ofstream(tmp.file("broken.pcd")) << "not a point cloud\n";
+  d.studio().open_file(semreg("03/target.pcd"), studio::FilePurpose::target_cloud);
+  d.studio().open_file(tmp.file("broken.pcd"), studio::FilePurpose::source_cloud);
+  d.settle();
+  CHECK_FALSE(d.studio().worker().status().error.empty());
+  const auto& recent = d.state().recent;
+  CHECK(std::find(recent.begin(), recent.end(), tmp.file("broken.pcd")) == recent.end());
+  CHECK(std::find(recent.begin(), recent.end(), semreg("03/target.pcd")) != recent.end());
+  // The combo's preview fits its frame (it was cut beside the "open a file..." button).
+  d.frames(2);
+  const auto* combo = d.find("recent files", "Pagor Studio");
+  REQUIRE(combo);
+  const ImGuiStyle& style = ImGui::GetStyle();
+  CHECK(ImGui::CalcTextSize(combo->text.c_str()).x + ImGui::GetFrameHeight() +
+            2 * style.FramePadding.x <=
+        combo->frame_w);
+  CHECK(combo->max.x <= combo->clip_max.x + 0.5f);
+}

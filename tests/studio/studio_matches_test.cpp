@@ -200,7 +200,7 @@ TEST_CASE("a correspondences file from the recent list and after clouds: a fresh
   const auto at = std::find(recent.begin(), recent.end(), gedi("04.txt"));
   REQUIRE(at != recent.end());
   const std::string item = gedi("04.txt") + "##recent" + std::to_string(at - recent.begin());
-  REQUIRE(d.click_widget("recent", "Pagor Studio"));
+  REQUIRE(d.click_widget("recent files", "Pagor Studio"));
   REQUIRE(d.click_widget(item));
   CHECK(d.state().data.correspondences == gedi("04.txt"));
   d.settle();

@@ -232,6 +232,9 @@ std::string preset_of(const std::string& config_json, const std::string& fallbac
 /// writes the list to `state.recent_file` when one is set (errors are ignored: a list that cannot
 /// be kept is no reason to stop).
 void remember_file(AppState& state, const std::string& path);
+/// Drops `path` (made absolute) from `state.recent`, as a file that failed to open, and writes
+/// the list. True when it was there.
+bool forget_file(AppState& state, const std::string& path);
 /// Reads `state.recent_file` into `state.recent` (a missing file: an empty list).
 void load_recent_files(AppState& state);
 

@@ -305,7 +305,9 @@ bool begin_combo(const char* label, const char* preview, const char* tip) {
   ImGuiWindow* window = ImGui::GetCurrentWindow();
   const bool open = ImGui::BeginCombo(label, preview);
   // While open, the popup is the current window: record against the combo's own window.
-  registry().add(WidgetKind::combo, label, id, at, to, window).frame_w = to.x - at.x;
+  WidgetRecord& rec = registry().add(WidgetKind::combo, label, id, at, to, window);
+  rec.frame_w = to.x - at.x;
+  rec.text = preview ? preview : "";
   if (!open)
     maybe_tip(tip);
   else if (tip)

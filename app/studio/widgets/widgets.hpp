@@ -41,7 +41,9 @@ struct WidgetRecord {
   ImVec2 clip_min, clip_max;  ///< visible part of its window [px]
   bool visible = false;       ///< inside its window's visible part
   bool has_tooltip = false;   ///< a sentence explains it on hover
-  std::string text;  ///< text kind: the line as drawn; a path field: the part of the path it shows
+  /// text kind: the line as drawn; a path field: the part of the path it shows; a combo: its
+  /// preview (the current choice)
+  std::string text;
   bool enabled = true;   ///< false when drawn disabled
   float lo = 0, hi = 0;  ///< slider / input range (0, 0 when none)
   float frame_w = 0;     ///< width of the frame (sliders, fields: without the label) [px]
