@@ -152,6 +152,23 @@ TEST_CASE("a 2-D sweep over any parameters from the UI, and the flip view opens 
   REQUIRE(r.settings.size() == 4);
   CHECK(r.settings[0].setting.label == "gnc.noise_bound=0.05 m mu=0.3 m");
   CHECK(r.settings[3].setting.config.gnc.noise_bound == 1.0);
+  // The settings table fits its window: every row's last column (its "apply") whole, also in a
+  // narrower window, where the two parameters' setting wraps.
+  for (const int width : {1400, 1000}) {
+    d.resize(width, 1100);
+    d.frames(3);
+    int applies = 0;
+    for (const auto& w : d.widgets())
+      if (w.label.rfind("apply##sweep", 0) == 0) {
+        ++applies;
+        INFO(w.label << " at " << width << " px: " << w.min.x << ".." << w.max.x << ", visible to "
+                     << w.clip_max.x);
+        CHECK(w.max.x <= w.clip_max.x + 0.5f);
+      }
+    CHECK(applies == 4);
+  }
+  d.resize(1400, 1100);
+  d.frames(2);
   // The flip view between the first and last settings lists the pairs that changed.
   d.state().bench.flip_a = 0;
   d.state().bench.flip_b = 3;
