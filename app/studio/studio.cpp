@@ -82,7 +82,11 @@ void Studio::submit_data() {
     state_.camera.top_down = true;
     state_.camera.yaw_deg = kPlanYawDeg;
   }
-  worker_.submit(resolved_data(state_), state_.config, state_.inline_truth);
+  const std::uint64_t request =
+      worker_.submit(resolved_data(state_), state_.config, state_.inline_truth);
+  // The camera frames this data when its result arrives (the result shown until then is of the
+  // data before); if it fails, whatever stays shown.
+  if (!state_.camera_fitted) fit_request_ = request;
 }
 
 void Studio::submit_config() {
@@ -209,7 +213,7 @@ void Studio::left_panel(float left, float H) {
     });
     section("History", false, [&] { history_panel(params_, runs_, *this); });
     section("Session", false, [&] {
-      session_panel(SessionFiles{s.session_path, s.screenshot_path, s.bench.plot_path}, *this);
+      session_panel(SessionFiles{s.session_path, s.screenshot_path, s.export_path}, *this);
     });
     ImGui::PopItemWidth();
   }
@@ -254,7 +258,7 @@ void Studio::pair_view(float x, float w, float H) {
   const bool diagnosis = view.diagnosis.panel;
   if (ImGui::Begin(diagnosis ? "Diagnosis" : "Pyramid", nullptr, kPanelFlags)) {
     bottom_panel_switch(view.diagnosis);
-    const Exports exports{state_.bench.plot_path, *this};
+    const Exports exports{state_.export_path, *this};
     if (diagnosis)
       diagnosis_panel(snapshot_.get(), stale_reason_, view, exports);
     else
@@ -311,17 +315,24 @@ void Studio::report_duplicate_ids() {
 }
 
 CameraControl Studio::camera_control() {
-  return {state_.camera, state_.camera_fitted};
+  return {state_.camera, state_.camera_fitted, fit_request_};
 }
 
 void Studio::frame(int width, int height) {
   const auto t0 = std::chrono::steady_clock::now();
   state_.width = width;
   state_.height = height;
+  // The status before the snapshot: a request it counts as finished is in the snapshot if it
+  // succeeded.
+  const WorkerStatus status = worker_.status();
   snapshot_ = worker_.snapshot();
   runs_.observe(snapshot_);
-  const WorkerStatus status = worker_.status();
   update_staleness(status);
+  forget_unreadable(status);
+  // The data the camera waits for failed (or was replaced by newer data): fit what is shown.
+  if (fit_request_ && status.finished >= fit_request_ &&
+      (!snapshot_ || snapshot_->request < fit_request_))
+    fit_request_ = 0;
 
   ui::registry().begin_frame();
   ImGuiIO& io = ImGui::GetIO();

@@ -124,6 +124,12 @@ class Studio : public StudioActions {
   };
   std::vector<KeyPress> keys_;
   double frame_ms_ = 0.0;
+  std::uint64_t fit_request_ = 0;  // the data request the camera is to be fitted to (0: any)
+  // Files just opened as data, and the worker request that reads them: one the worker fails to
+  // read leaves the recent list as one that failed to open at once does.
+  std::vector<std::string> opened_paths_;
+  std::uint64_t opened_request_ = 0;
+  void forget_unreadable(const WorkerStatus& status);
 };
 
 }  // namespace pagor::studio

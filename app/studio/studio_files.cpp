@@ -38,11 +38,15 @@ void Studio::open_file(const std::string& path, FilePurpose purpose) {
     o = open_file_into(state_, path, purpose);
     remember_file(state_, path);
   } catch (const Error& e) {
-    notify(Message::error(e.what()));
+    // A file that does not open leaves the recent list (picked from it, it would fail again).
+    const bool dropped = forget_file(state_, path);
+    notify(Message::error(std::string(e.what()) +
+                          (dropped ? " (dropped from the recent files)" : "")));
     return;
   }
   if (o.config) params_.commit(state_.config);  // loading parameters is one undo step
   apply_opened(*this, o);
+  if (o.data) opened_paths_ = {path}, opened_request_ = worker_.status().submitted;
   if (!o.session) notify(Message::info(o.what));
 }
 
@@ -51,6 +55,7 @@ void Studio::open_files(const std::vector<std::string>& paths) {
   const Opened o = open_files_into(state_, paths, errors);
   if (o.config) params_.commit(state_.config);
   apply_opened(*this, o);
+  if (o.data) opened_paths_ = paths, opened_request_ = worker_.status().submitted;
   if (!errors.empty()) {
     std::string detail;
     for (const std::string& e : errors) detail += e + "\n";
@@ -59,6 +64,18 @@ void Studio::open_files(const std::vector<std::string>& paths) {
   } else if (!o.session) {
     notify(Message::info(o.what));
   }
+}
+
+void Studio::forget_unreadable(const WorkerStatus& status) {
+  if (!opened_request_ || status.finished < opened_request_) return;
+  const bool failed = !status.error.empty() && (!snapshot_ || snapshot_->request < opened_request_);
+  if (failed)  // the error names the file it could not read
+    for (const std::string& p : opened_paths_)
+      if (status.error.find(p) != std::string::npos ||
+          status.error.find(absolute_path(p)) != std::string::npos)
+        forget_file(state_, p);
+  opened_paths_.clear();
+  opened_request_ = 0;
 }
 
 void Studio::copy_text(const std::string& text, const std::string& what) {

@@ -3,7 +3,9 @@
 // height, intensity and residual.
 
 #include <imgui.h>
+#include <imgui_internal.h>
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <filesystem>
@@ -108,7 +110,7 @@ TEST_CASE("what a file opens as: told by its extension and first lines") {
 TEST_CASE("copy and export: the pose, the result JSON, the levels table") {
   TempDir tmp;
   studio::AppState s = kitti_state(tmp);
-  s.bench.plot_path = tmp.file("out");
+  s.export_path = tmp.file("out");  // the pair view's (the benchmark view has its own)
   UiDriver d(s, 1400, 900);
   d.settle();
   const auto snap = d.studio().worker().snapshot();
@@ -262,3 +264,120 @@ TEST_CASE("colour by height, intensity and residual: the legend's scale is the o
   CHECK(studio::shown_contribution(d.state().view) == studio::Contribution::candidate);
 }
 #endif
+
+namespace {
+
+// Whether ImGui shows a tooltip this frame.
+bool tooltip_shown() {
+  for (ImGuiWindow* w : GImGui->Windows)
+    if (std::string(w->Name).rfind("##Tooltip", 0) == 0 && w->Active) return true;
+  return false;
+}
+
+}  // namespace
+
+TEST_CASE("exports of a stale result are disabled, saying why; the pair view has its own path") {
+  TempDir tmp;
+  studio::AppState s = synthetic_state(tmp);
+  s.export_path = tmp.file("pair");
+  s.bench.plot_path = tmp.file("bench");
+  UiDriver d(s, 1400, 900);
+  d.settle();
+  const char* const buttons[] = {"copy pose 4x4", "copy pose JSON", "copy result JSON",
+                                 "save result JSON", "levels CSV"};
+  const auto check_buttons = [&](bool enabled) {
+    for (const char* b : buttons) {
+      INFO(b);
+      const auto* w = d.find(b, "Pyramid");
+      REQUIRE(w);
+      CHECK(w->enabled == enabled);
+      CHECK(w->has_tooltip);
+    }
+  };
+  check_buttons(true);
+  // The parameters change; the result shown is of the run before.
+  d.state().config.verification.mu = 3.0;
+  d.frame();
+  REQUIRE_FALSE(d.studio().stale_reason().empty());
+  check_buttons(false);
+  ImGui::SetClipboardText("untouched");
+  for (const char* b : buttons) REQUIRE(d.click_widget(b, "Pyramid"));
+  CHECK(std::string(ImGui::GetClipboardText()) == "untouched");
+  CHECK_FALSE(std::filesystem::exists(tmp.file("pair-result.json")));
+  CHECK_FALSE(std::filesystem::exists(tmp.file("pair-levels.csv")));
+  // Hovered, the disabled button says why.
+  const auto* copy = d.find("copy pose 4x4", "Pyramid");
+  d.move(ImVec2((copy->min.x + copy->max.x) * 0.5f, (copy->min.y + copy->max.y) * 0.5f));
+  d.frames(2);
+  CHECK(tooltip_shown());
+  // While the new run is pending, still disabled; once it is in, the new pose is copied.
+  d.studio().submit_config();
+  d.frame();
+  if (!d.studio().stale_reason().empty()) check_buttons(false);
+  d.settle();
+  CHECK(d.studio().stale_reason().empty());
+  check_buttons(true);
+  const auto snap = d.studio().worker().snapshot();
+  REQUIRE(snap->config.verification.mu == 3.0);
+  REQUIRE(d.click_widget("copy result JSON", "Pyramid"));
+  CHECK(std::string(ImGui::GetClipboardText()) == snap->report_json);
+  // The pair view writes to its own export path, not the benchmark view's.
+  REQUIRE(d.click_widget("save result JSON", "Pyramid"));
+  CHECK(std::filesystem::exists(tmp.file("pair-result.json")));
+  CHECK_FALSE(std::filesystem::exists(tmp.file("bench-result.json")));
+  // The same for the diagnosis table (the synthetic scene has a ground truth).
+  d.state().view.diagnosis.panel = true;
+  d.frames(2);
+  const auto* csv = d.find("diagnosis CSV", "Diagnosis");
+  REQUIRE(csv);
+  CHECK(csv->enabled);
+  d.state().config.verification.mu = 2.0;
+  d.frame();
+  csv = d.find("diagnosis CSV", "Diagnosis");
+  REQUIRE(csv);
+  CHECK_FALSE(csv->enabled);
+  // The export path is kept in the session.
+  d.studio().save_session_now();
+  studio::AppState loaded;
+  studio::load_session(d.state().session_path, loaded);
+  CHECK(loaded.export_path == tmp.file("pair"));
+}
+
+TEST_CASE("a file that fails to open leaves the recent list; the list's label is not cut") {
+  TempDir tmp;
+  studio::AppState s = synthetic_state(tmp);
+  s.recent_file = tmp.file("recent.txt");
+  UiDriver d(s, 1024, 700);
+  d.settle();
+  // Opened once, then gone: picked again, it fails and is dropped.
+  std::filesystem::copy_file(semreg("03/T_target_source.txt"), tmp.file("gt.txt"));
+  d.studio().open_file(tmp.file("gt.txt"), studio::FilePurpose::any);
+  REQUIRE(d.state().recent.size() == 1);
+  std::filesystem::remove(tmp.file("gt.txt"));
+  d.studio().open_file(tmp.file("gt.txt"), studio::FilePurpose::any);
+  CHECK(d.state().message.level == studio::MessageLevel::error);
+  CHECK(d.state().message.text.find("dropped from the recent files") != std::string::npos);
+  CHECK(d.state().recent.empty());
+  studio::AppState reread;
+  reread.recent_file = s.recent_file;
+  studio::load_recent_files(reread);
+  CHECK(reread.recent.empty());  // and from the list kept between runs
+  // A cloud that exists but cannot be read: the worker fails on it, and it is dropped too.
+  std::ofstream(tmp.file("broken.pcd")) << "not a point cloud\n";
+  d.studio().open_file(semreg("03/target.pcd"), studio::FilePurpose::target_cloud);
+  d.studio().open_file(tmp.file("broken.pcd"), studio::FilePurpose::source_cloud);
+  d.settle();
+  CHECK_FALSE(d.studio().worker().status().error.empty());
+  const auto& recent = d.state().recent;
+  CHECK(std::find(recent.begin(), recent.end(), tmp.file("broken.pcd")) == recent.end());
+  CHECK(std::find(recent.begin(), recent.end(), semreg("03/target.pcd")) != recent.end());
+  // The combo's preview fits its frame (it was cut beside the "open a file..." button).
+  d.frames(2);
+  const auto* combo = d.find("recent files", "Pagor Studio");
+  REQUIRE(combo);
+  const ImGuiStyle& style = ImGui::GetStyle();
+  CHECK(ImGui::CalcTextSize(combo->text.c_str()).x + ImGui::GetFrameHeight() +
+            2 * style.FramePadding.x <=
+        combo->frame_w);
+  CHECK(combo->max.x <= combo->clip_max.x + 0.5f);
+}

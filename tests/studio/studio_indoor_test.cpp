@@ -12,6 +12,7 @@
 #include "runners/bench_worker.hpp"
 #include "runners/worker.hpp"
 #include "scene/plan_overlay.hpp"
+#include "scene/scene_overlay.hpp"
 #include "studio_test_util.hpp"
 #include "ui_driver.hpp"
 #include "widgets/bench_plots.hpp"
@@ -230,4 +231,40 @@ TEST_CASE("every widget with an indoor pair open, the floor plan layer included"
   d.settle();
   CHECK(acted >= 60);
   WARN("widgets acted on: " << acted << ", distinct: " << d.touched().size());
+}
+
+TEST_CASE("after a failed open, an indoor pair opened is framed by the camera") {
+  TempDir tmp;
+  UiDriver d(synthetic_state(tmp), 1024, 768);
+  d.settle();
+  const Eigen::Vector3f synthetic_target = d.state().camera.target;
+  // As the Data panel's "Open" does it: first a scan that is not there, then the right one.
+  const auto open = [&](const PairSource& data) {
+    d.state().config = preset_config("indoor");
+    d.state().data = data;
+    d.state().have_data = true;
+    d.state().camera_fitted = false;
+    d.state().view.level = -1;
+    d.studio().submit_data();
+    d.frame();
+    d.settle();
+  };
+  PairSource bad = indoor_pair();
+  bad.source = kIndoorData + "no_such_scan.bin";
+  open(bad);
+  CHECK_FALSE(d.studio().worker().status().error.empty());
+  open(indoor_pair());
+  INFO(d.studio().worker().status().error);
+  REQUIRE(d.studio().worker().status().error.empty());
+  const auto snap = d.studio().worker().snapshot();
+  REQUIRE(snap->plan);
+  d.frames(2);
+  // Framed on what is shown now: the scan and its plan, not the synthetic scene before.
+  const studio::ViewState& view = d.state().view;
+  Eigen::Vector3f lo, hi;
+  REQUIRE(studio::shown_bounds(*snap, view, studio::shown_source_pose(view, *snap), lo, hi));
+  const Eigen::Vector3f centre = 0.5f * (lo + hi);
+  REQUIRE((centre - synthetic_target).norm() > 1.0f);  // the two scenes are apart
+  CHECK((d.state().camera.target - centre).norm() < 1e-3f);
+  CHECK(d.state().camera.top_down);
 }

@@ -15,6 +15,8 @@
 #include "pagor/io/correspondence_file.hpp"
 #include "pagor/pipeline.hpp"
 #include "pagor/report.hpp"
+#include "pagor/verify/diagnosis.hpp"
+#include "panels/panels.hpp"
 #include "panels/pyramid_chart.hpp"
 #include "scene/scene_overlay.hpp"
 #include "state/open_file.hpp"
@@ -198,7 +200,7 @@ TEST_CASE("a correspondences file from the recent list and after clouds: a fresh
   const auto at = std::find(recent.begin(), recent.end(), gedi("04.txt"));
   REQUIRE(at != recent.end());
   const std::string item = gedi("04.txt") + "##recent" + std::to_string(at - recent.begin());
-  REQUIRE(d.click_widget("recent", "Pagor Studio"));
+  REQUIRE(d.click_widget("recent files", "Pagor Studio"));
   REQUIRE(d.click_widget(item));
   CHECK(d.state().data.correspondences == gedi("04.txt"));
   d.settle();
@@ -262,4 +264,64 @@ TEST_CASE("an epsilon or mu change on gedi-dev 03 re-runs on the worker (latency
   change("epsilon of level 3 x1.1, independent levels",
          [](Config& c) { c.graph.thresholds[3] *= 1.1; });
   CHECK(d.studio().worker().snapshot()->stage_ran[static_cast<int>(Stage::clique)]);
+}
+
+TEST_CASE("diagnosis of a correspondences file without clouds: no D, the rule named, as the CLI") {
+  TempDir tmp;
+  studio::AppState s = empty_files_state(tmp);
+  s.data.correspondences = gedi("03.txt");
+  s.data.ground_truth = gedi("03.T.txt");
+  s.have_data = true;
+  s.view.diagnosis.panel = true;
+  UiDriver d(std::move(s), 1400, 900);
+  d.settle();
+  const auto snap = d.studio().worker().snapshot();
+  REQUIRE(snap);
+  REQUIRE_FALSE(snap->source);
+  REQUIRE(snap->diagnosis);
+  // The CLI's figures: pagor register --correspondences 03.txt --ground-truth 03.T.txt --json.
+  const Pipeline p = cli_run(gedi("03.txt"), gedi("03.T.txt"), false);
+  const auto cli = diagnose(p);
+  REQUIRE(cli);
+  const CorrespondenceFile file = read_correspondence_file(gedi("03.txt"));
+  std::size_t flagged = 0;
+  for (char f : file.inlier) flagged += f != 0;
+  REQUIRE(flagged > 0);
+  const auto report = nlohmann::json::parse(snap->report_json);
+  CHECK(report["correspondences"]["flagged_inliers"] == flagged);
+  CHECK(report["diagnosis"]["true_correspondences"] == cli->true_correspondences);
+  CHECK(snap->diagnosis->true_correspondences == cli->true_correspondences);
+  d.frames(2);
+  const std::string win = "Diagnosis";
+  // The selection rule the core used (S, not D), no "lowest D", no D of anything.
+  CHECK_FALSE(d.texts("* selected (lowest S = sum of min(residual, noise bound)", win).empty());
+  CHECK(d.texts("lowest D", win).empty());
+  CHECK_FALSE(d.texts("n/a without clouds", win).empty());
+  CHECK(d.texts("D of the truth", win).empty());
+  CHECK(d.texts("inf", win).empty());
+  // One n/a in the D column per level, and the truth's row.
+  CHECK(d.texts("n/a", win).size() >= snap->levels.size() + 1);
+  for (const std::string& t : d.texts("invalid", win)) FAIL_CHECK("an invalid D: " << t);
+  // The file's own inlier count beside the diagnosis' rule, both as the CLI reports them.
+  const std::string line = "the file flags " + std::to_string(flagged) + " of " +
+                           std::to_string(file.items.size()) + " as inliers (its own rule); " +
+                           std::to_string(cli->true_correspondences) + " are within 2 m";
+  CHECK_FALSE(d.texts(line, win).empty());
+  CHECK_FALSE(d.texts("Front end (true: residual <= 2 m)", win).empty());
+  // The pyramid names the same rule.
+  d.state().view.diagnosis.panel = false;
+  d.frames(2);
+  CHECK_FALSE(d.texts("* selected: lowest S = sum of min(residual, noise bound)", "Pyramid").empty());
+  // The status bar lists what ran; the stages with nothing to do without clouds apart.
+  const std::string stages = studio::run_stages_text(*snap);
+  const std::string ran = stages.substr(0, stages.find(';'));
+  CHECK(ran.find("graph") != std::string::npos);
+  CHECK(ran.find("selection by S (no clouds)") != std::string::npos);
+  for (const char* skipped : {"landmarks", "verification_prep", "refinement", "acceptance"}) {
+    INFO(stages);
+    CHECK(ran.find(skipped) == std::string::npos);
+    CHECK(stages.find(skipped, ran.size()) != std::string::npos);
+  }
+  CHECK(stages.find("; skipped without clouds: ") != std::string::npos);
+  CHECK_FALSE(d.texts("ready | " + stages, "##status").empty());
 }

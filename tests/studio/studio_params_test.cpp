@@ -152,6 +152,23 @@ TEST_CASE("a 2-D sweep over any parameters from the UI, and the flip view opens 
   REQUIRE(r.settings.size() == 4);
   CHECK(r.settings[0].setting.label == "gnc.noise_bound=0.05 m mu=0.3 m");
   CHECK(r.settings[3].setting.config.gnc.noise_bound == 1.0);
+  // The settings table fits its window: every row's last column (its "apply") whole, also in a
+  // narrower window, where the two parameters' setting wraps.
+  for (const int width : {1400, 1000}) {
+    d.resize(width, 1100);
+    d.frames(3);
+    int applies = 0;
+    for (const auto& w : d.widgets())
+      if (w.label.rfind("apply##sweep", 0) == 0) {
+        ++applies;
+        INFO(w.label << " at " << width << " px: " << w.min.x << ".." << w.max.x << ", visible to "
+                     << w.clip_max.x);
+        CHECK(w.max.x <= w.clip_max.x + 0.5f);
+      }
+    CHECK(applies == 4);
+  }
+  d.resize(1400, 1100);
+  d.frames(2);
   // The flip view between the first and last settings lists the pairs that changed.
   d.state().bench.flip_a = 0;
   d.state().bench.flip_b = 3;
@@ -175,4 +192,91 @@ TEST_CASE("a 2-D sweep over any parameters from the UI, and the flip view opens 
   } else {
     WARN("no pair changed between the settings: the flip view is empty");
   }
+}
+
+TEST_CASE("a value typed into a slider is applied once, when the field is left, not per keystroke") {
+  TempDir tmp;
+  UiDriver d(synthetic_state(tmp), 900, 1000);
+  d.settle();
+  d.open_all_nodes();
+  const auto* mu = d.find_param("verification.mu");
+  REQUIRE(mu);
+  const ImGuiID id = mu->id;
+  const double mu0 = d.state().config.verification.mu;
+  REQUIRE(mu0 != 0.35);
+  const std::uint64_t submitted = d.studio().worker().status().submitted;
+  const std::size_t runs = d.studio().run_history().runs().size();
+  const std::size_t undo = d.studio().param_history().undo_steps();
+  // Ctrl+click opens the slider's text field; "0.35" typed a character a frame, as a user does.
+  REQUIRE(d.reveal(id));
+  const auto* w = d.find_id(id);
+  REQUIRE(w);
+  const ImVec2 at(w->min.x + w->frame_w * 0.5f, (w->min.y + w->max.y) * 0.5f);
+  d.set_modifiers(true, false);
+  d.click(at);
+  d.set_modifiers(false, false);
+  d.press_key('A', true);
+  for (char32_t c : std::u32string(U"0.35")) {
+    d.chars(std::u32string(1, c));
+    d.frame();
+    // Nothing is applied while typing: not 0, not 0.3; no run, no undo step.
+    CHECK(d.state().config.verification.mu == mu0);
+    CHECK(d.studio().worker().status().submitted == submitted);
+    CHECK(d.studio().param_history().undo_steps() == undo);
+  }
+  d.press_key(keys::Enter);
+  d.frames(2);
+  CHECK(d.state().config.verification.mu == 0.35);
+  CHECK(d.studio().worker().status().submitted == submitted + 1);  // one run, of 0.35
+  d.settle();
+  CHECK(d.studio().run_history().runs().size() == runs + 1);
+  CHECK(d.studio().worker().snapshot()->config.verification.mu == 0.35);
+  CHECK(d.studio().param_history().undo_steps() == undo + 1);
+  // The change display compares 0.35 with the run before it (mu0), no run in between.
+  const auto& changes = d.studio().run_history().changes();
+  CHECK(changes.comparable);
+  bool some_delta = false;
+  for (const auto& l : changes.levels) some_delta = some_delta || (l.d_delta && *l.d_delta != 0);
+  CHECK(some_delta);
+
+  // Escape drops what was typed.
+  d.set_modifiers(true, false);
+  d.click(at);
+  d.set_modifiers(false, false);
+  d.press_key('A', true);
+  d.chars(U"7");
+  d.frame();
+  d.press_key(keys::Escape);
+  d.frames(2);
+  CHECK(d.state().config.verification.mu == 0.35);
+  CHECK(d.studio().worker().status().submitted == submitted + 1);
+
+  // A click elsewhere applies it, as Enter does.
+  d.set_modifiers(true, false);
+  d.click(at);
+  d.set_modifiers(false, false);
+  d.press_key('A', true);
+  d.chars(U"1.5");
+  d.frame();
+  CHECK(d.state().config.verification.mu == 0.35);
+  // The right end of the status bar: no widget there.
+  d.click(ImVec2(static_cast<float>(d.width() - 4), static_cast<float>(d.height() - 14)));
+  d.frames(2);
+  CHECK(d.state().config.verification.mu == 1.5);
+  CHECK(d.studio().worker().status().submitted == submitted + 2);
+
+  // A drag still applies while the button is held.
+  d.settle();
+  w = d.find_id(id);
+  REQUIRE(w);
+  const double before_drag = d.state().config.verification.mu;
+  d.move(ImVec2(w->min.x + w->frame_w * 0.5f, at.y));
+  d.frame();
+  d.button(0, true);
+  d.frame();
+  d.move(ImVec2(w->min.x + w->frame_w * 0.9f, at.y));
+  d.frame();
+  CHECK(d.state().config.verification.mu != before_drag);  // live, the button still down
+  d.button(0, false);
+  d.frame();
 }

@@ -138,6 +138,19 @@ TEST_CASE("shortest: a float's shortest decimal as a double") {
   CHECK(nlohmann::json(studio::shortest(0.1f)).dump() == "0.1");
 }
 
+TEST_CASE("numbers as the studio prints them: no negative zero, a unit on every figure") {
+  CHECK(studio::fixed(-0.0, 2) == "0.00");
+  CHECK(studio::fixed(-0.004, 2) == "0.00");  // pitch -0.004 deg reads 0.00, not -0.00
+  CHECK(studio::fixed(-0.005001, 2) == "-0.01");
+  CHECK(studio::fixed(12.346, 2) == "12.35");
+  CHECK(studio::fixed(-3.0, 0) == "-3");
+  CHECK(studio::with_unit(1.0, "m") == "1 m");  // a legend's tick: "1 m", not "1.0"
+  CHECK(studio::with_unit(0.25, "m") == "0.25 m");
+  CHECK(studio::with_unit(-0.0, "m") == "0 m");
+  CHECK(studio::with_unit(-12.5, "m") == "-12.5 m");
+  CHECK(studio::with_unit(0.5, "") == "0.5");
+}
+
 TEST_CASE("the widget registry reports two widgets of one frame with the same ID") {
   ImGuiContext* ctx = ImGui::CreateContext();
   ImGuiIO& io = ImGui::GetIO();

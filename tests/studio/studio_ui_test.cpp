@@ -2,6 +2,7 @@
 
 #include <imgui_internal.h>
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdlib>
@@ -430,3 +431,28 @@ TEST_CASE("screenshots of the changed views", "[.shots]") {
   shot("driven_help.png");
 }
 #endif
+
+TEST_CASE("a long error in the status bar is cut at the window's edge, and shown whole on hover") {
+  TempDir tmp;
+  UiDriver d(synthetic_state(tmp), 800, 600);
+  d.settle();
+  std::string text = "/a/very/long/path/";
+  while (text.size() < 400) text += "that-goes-on-and-on/";
+  text += "file.pcd: scan does not exist";
+  d.studio().notify(studio::Message::error(text));
+  d.frames(2);
+  const studio::ui::WidgetRecord* line = nullptr;
+  for (const auto& w : d.widgets())
+    if (w.kind == studio::ui::WidgetKind::text && w.window == "##status" &&
+        w.text == "| error: " + text)
+      line = &w;
+  REQUIRE(line);
+  CHECK(line->max.x > line->clip_max.x);  // cut: the window is narrower than the line
+  CHECK(line->has_tooltip);
+  d.move(ImVec2(std::min(line->min.x + 40, line->clip_max.x - 4), (line->min.y + line->max.y) / 2));
+  d.frames(2);
+  bool shown = false;
+  for (ImGuiWindow* w : GImGui->Windows)
+    shown = shown || (std::string(w->Name).rfind("##Tooltip", 0) == 0 && w->Active);
+  CHECK(shown);
+}

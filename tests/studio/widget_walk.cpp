@@ -28,11 +28,11 @@ namespace {
 
 struct Saved {
   PairSource data;
-  std::string pairs_file, session_path, screenshot_path;
+  std::string pairs_file, session_path, screenshot_path, export_path;
   studio::BenchViewState bench;
 };
 Saved save(const studio::AppState& s) {
-  return {s.data, s.pairs_file, s.session_path, s.screenshot_path, s.bench};
+  return {s.data, s.pairs_file, s.session_path, s.screenshot_path, s.export_path, s.bench};
 }
 void restore(UiDriver& d, const Saved& v, bool resubmit) {
   studio::AppState& s = d.state();
@@ -43,6 +43,7 @@ void restore(UiDriver& d, const Saved& v, bool resubmit) {
   s.pairs_file = v.pairs_file;
   s.session_path = v.session_path;
   s.screenshot_path = v.screenshot_path;
+  s.export_path = v.export_path;
   s.bench.path = v.bench.path;
   s.bench.kitti_root = v.bench.kitti_root;
   s.bench.sequence = v.bench.sequence;
@@ -70,6 +71,7 @@ void act_on_text(UiDriver& d, const WidgetRecord& w) {
       s.data.target_labels == expected || s.data.ground_truth == expected ||
       s.data.correspondences == expected ||
       s.pairs_file == expected || s.session_path == expected || s.screenshot_path == expected ||
+      s.export_path == expected ||
       s.bench.path == expected || s.bench.kitti_root == expected || s.bench.sequence == expected ||
       s.bench.config_path == expected || s.bench.filter == expected ||
       s.bench.plot_path == expected || s.bench.sweep_values == expected ||

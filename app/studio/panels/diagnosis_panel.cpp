@@ -8,6 +8,7 @@
 #include <cstdio>
 
 #include "panels/panels.hpp"
+#include "widgets/number_format.hpp"
 #include "widgets/widgets.hpp"
 
 namespace pagor::studio {
@@ -27,8 +28,24 @@ void cell(std::size_t v) {
   cell_text(t);
 }
 
-void front_end_table(const Diagnosis& d) {
-  ImGui::Text("Front end (true: residual <= %.1f m)", d.residual_tolerance);
+// A matcher's file with inlier flags: how many it flags, beside the diagnosis' own count (its
+// rule is the residual under the truth; pagor register --json reports both the same way:
+// correspondences.flagged_inliers and diagnosis.true_correspondences).
+void flags_line(const Snapshot& s, const Diagnosis& d) {
+  if (s.inlier_flags.empty()) return;
+  std::size_t flagged = 0;
+  for (char f : s.inlier_flags) flagged += f != 0;
+  ui::figure(ui::format("the file flags %zu of %zu as inliers (its own rule); %zu are within "
+                        "%s of the truth",
+                        flagged, s.inlier_flags.size(), d.true_correspondences,
+                        with_unit(d.residual_tolerance, "m").c_str()),
+             kDim, true);
+}
+
+void front_end_table(const Snapshot& s, const Diagnosis& d) {
+  ui::figure("Front end (true: residual <= " + with_unit(d.residual_tolerance, "m") + ")",
+             ImVec4(0, 0, 0, 0), true);
+  flags_line(s, d);
   const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_Borders |
                                 ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_ScrollX;
   const float h =
@@ -63,8 +80,8 @@ void front_end_table(const Diagnosis& d) {
                       d.min_true);
 }
 
-// One level's row; true when its label was clicked.
-bool level_row(const Diagnosis& d, std::size_t l, int shown) {
+// One level's row; true when its label was clicked. Without clouds there is no D (n/a).
+bool level_row(const Diagnosis& d, std::size_t l, int shown, bool clouds) {
   const LevelDiagnosis& x = d.levels[l];
   ImGui::TableNextRow();
   if (static_cast<int>(l) == d.at_fault_level)
@@ -100,7 +117,9 @@ bool level_row(const Diagnosis& d, std::size_t l, int shown) {
   else
     ImGui::TextColored(kDim, "no pose");
   ImGui::TableNextColumn();
-  if (std::isfinite(x.score))
+  if (!clouds)
+    ui::figure("n/a", kDim);
+  else if (std::isfinite(x.score))
     ImGui::Text("%.1f", x.score);
   else
     ImGui::TextColored(kDim, "invalid");
@@ -111,7 +130,7 @@ bool level_row(const Diagnosis& d, std::size_t l, int shown) {
 }
 
 // Per level; returns the level clicked, or -1.
-int levels_table(const Diagnosis& d, int shown) {
+int levels_table(const Diagnosis& d, int shown, bool clouds) {
   int clicked = -1;
   const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_Borders |
                                 ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_ScrollX;
@@ -123,14 +142,16 @@ int levels_table(const Diagnosis& d, int shown) {
     ImGui::TableSetupColumn(c);
   ImGui::TableHeadersRow();
   for (std::size_t l = 0; l < d.levels.size(); ++l)
-    if (level_row(d, l, shown)) clicked = static_cast<int>(l);
+    if (level_row(d, l, shown, clouds)) clicked = static_cast<int>(l);
   ImGui::TableNextRow();
   ImGui::TableNextColumn();
   ImGui::TextUnformatted("truth");
   for (int c = 0; c < 6; ++c) ImGui::TableNextColumn();
   ImGui::TextColored(kDim, "ground truth");
   ImGui::TableNextColumn();
-  if (std::isfinite(d.gt_score))
+  if (!clouds)
+    ui::figure("n/a", kDim);
+  else if (std::isfinite(d.gt_score))
     ImGui::TextColored(d.score_misled ? kBad : kGood, "%.1f", d.gt_score);
   ImGui::EndTable();
   return clicked;
@@ -202,23 +223,35 @@ void diagnosis_panel(const Snapshot* s, const std::string& stale_reason, ViewSta
       std::string("verdict: ") + verdict_name(d.verdict) + " - " + verdict_sentence(d.verdict),
       ok ? kGood : kBad);
   ui::figure("why: " + d.explanation, ok ? kGood : kBad, true);
-  if (ui::small_button("diagnosis CSV",
-                       "Writes the per-level table to <export path>-diagnosis.csv."))
+  if (result_button("diagnosis CSV",
+                    "Writes the per-level table to <export path>-diagnosis.csv (the export path "
+                    "of the Session panel).",
+                    stale_reason))
     write_export(exports, "diagnosis.csv", diagnosis_csv(d));
 
   const float w = ImGui::GetContentRegionAvail().x;
   const float front_w = std::min(330.0f, w * 0.28f), controls_w = std::min(260.0f, w * 0.22f);
   ImGui::BeginChild("diag_front", ImVec2(front_w, 0));
-  front_end_table(d);
+  front_end_table(*s, d);
   ImGui::EndChild();
   ImGui::SameLine();
   ImGui::BeginChild("diag_mid", ImVec2(w - front_w - controls_w - 16.0f, 0));
   ImGui::TextUnformatted("Per level: the clique against the most consistent true ones");
   const int shown = shown_level(view, s->selected, static_cast<int>(s->levels.size()));
-  const int clicked = levels_table(d, shown);
+  const bool clouds = s->source != nullptr;
+  const int clicked = levels_table(d, shown, clouds);
   if (clicked >= 0) view.level = clicked;
-  ImGui::TextDisabled("* selected (lowest D). Shaded: the level the verdict is about.");
-  if (d.selected >= 0)
+  // The rule the selection followed, as pagor register --correspondences names it.
+  if (clouds)
+    ui::figure_dim("* selected (lowest D). Shaded: the level the verdict is about.");
+  else
+    ui::figure(
+        "* selected (lowest S = sum of min(residual, noise bound) over all correspondences; no "
+        "clouds, so no D). Shaded: the level the verdict is about.",
+        kDim, true);
+  if (!clouds)
+    ui::figure_dim("D (verification on the clouds): n/a without clouds");
+  else if (d.selected >= 0)
     ImGui::TextColored(d.score_misled ? kBad : kDim,
                        "D of the truth %.1f m vs selected %.1f m%s (\xce\xbc %.2f m, %zu points)",
                        d.gt_score, d.levels[static_cast<std::size_t>(d.selected)].score,

@@ -92,7 +92,18 @@ std::string diagnosis_csv(const Diagnosis& d) {
   return out;
 }
 
-void result_exports(const Snapshot& s, const Exports& to) {
+bool result_button(const char* label, const char* tip, const std::string& stale_reason) {
+  if (stale_reason.empty()) return ui::small_button(label, tip);
+  ImGui::BeginDisabled();
+  const std::string why = std::string(tip) +
+                          "\nDisabled: the result shown is stale (" + stale_reason +
+                          "); it would export the earlier run's. Wait for the run to finish.";
+  ui::small_button(label, why.c_str());
+  ImGui::EndDisabled();
+  return false;
+}
+
+void result_exports(const Snapshot& s, const std::string& stale_reason, const Exports& to) {
   const bool selected = s.selected >= 0 && s.selected < static_cast<int>(s.levels.size());
   // The selected pose as the CLI reports it: refined when refinement applied.
   const bool refined = s.refinement.ran && s.refinement.applied;
@@ -101,23 +112,31 @@ void result_exports(const Snapshot& s, const Exports& to) {
                           ? s.refinement.T_after
                           : s.levels[static_cast<std::size_t>(s.selected)].pose.T_target_source;
   ImGui::BeginDisabled(!selected);
-  if (ui::small_button("copy pose 4x4",
-                       "The selected pose T_target_source (refined when "
-                       "refinement applied) as 4 rows of 4 numbers."))
+  if (result_button("copy pose 4x4",
+                    "The selected pose T_target_source (refined when refinement applied) as 4 "
+                    "rows of 4 numbers.",
+                    stale_reason))
     to.actions.copy_text(pose_matrix_text(T), "the pose as a 4x4 matrix");
   ImGui::SameLine();
-  if (ui::small_button("copy pose JSON", "The selected pose as JSON, with its level."))
+  if (result_button("copy pose JSON", "The selected pose as JSON, with its level.", stale_reason))
     to.actions.copy_text(pose_json(T, s.selected, refined), "the pose as JSON");
   ImGui::EndDisabled();
   ImGui::SameLine();
-  if (ui::small_button("copy result JSON",
-                       "The whole result as pagor register --json writes it (pagor.register/1)."))
+  if (result_button("copy result JSON",
+                    "The whole result as pagor register --json writes it (pagor.register/1).",
+                    stale_reason))
     to.actions.copy_text(s.report_json, "the result JSON");
   ImGui::SameLine();
-  if (ui::small_button("save result JSON", "Writes the result JSON to <export path>-result.json."))
+  if (result_button("save result JSON",
+                    "Writes the result JSON to <export path>-result.json (the export path of the "
+                    "Session panel).",
+                    stale_reason))
     write_export(to, "result.json", s.report_json);
   ImGui::SameLine();
-  if (ui::small_button("levels CSV", "Writes the levels table to <export path>-levels.csv."))
+  if (result_button("levels CSV",
+                    "Writes the levels table to <export path>-levels.csv (the export path of the "
+                    "Session panel).",
+                    stale_reason))
     write_export(to, "levels.csv", levels_csv(s));
 }
 

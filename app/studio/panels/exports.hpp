@@ -13,7 +13,7 @@ namespace pagor::studio {
 
 /// Where exports go: `<base>-<name>`, and who tells the user.
 struct Exports {
-  const std::string& base;  ///< the export path (state.bench.plot_path)
+  const std::string& base;  ///< the export path (the pair view's, or the benchmark view's)
   StudioActions& actions;   ///< renders PNGs, copies, says where files went
 };
 
@@ -31,8 +31,14 @@ std::string levels_csv(const Snapshot& s);
 /// recall (empty when undefined), errors, D, GNC inliers (true).
 std::string diagnosis_csv(const Diagnosis& d);
 
+/// An export button of a run's result: disabled, with a tooltip saying why, while the result is
+/// stale (`stale_reason` not empty: a pair or parameter change whose run has not finished), so
+/// that nothing exports an earlier pair's pose or an earlier run's figures as current. True when
+/// clicked.
+bool result_button(const char* label, const char* tip, const std::string& stale_reason);
+
 /// Buttons: copy the selected pose (4x4, JSON), copy the result JSON, write the result JSON and
-/// the levels table (CSV).
-void result_exports(const Snapshot& s, const Exports& to);
+/// the levels table (CSV); each disabled while the result is stale.
+void result_exports(const Snapshot& s, const std::string& stale_reason, const Exports& to);
 
 }  // namespace pagor::studio

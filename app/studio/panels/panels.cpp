@@ -105,8 +105,11 @@ void pairs_fields(AppState& s, StudioActions& actions) {
 // The recently opened files, newest first; a pick opens it again.
 void recent_files(AppState& s, StudioActions& actions) {
   if (s.recent.empty()) return;
-  if (ui::begin_combo("recent", "open a recent file...",
-                      "Files opened recently (by the browser, a drop or here), newest first.")) {
+  // On a line of its own, as wide as the fields: its preview is never cut.
+  const std::string preview = std::to_string(s.recent.size()) + " files, newest first";
+  if (ui::begin_combo("recent files", preview.c_str(),
+                      "Files opened recently (by the browser, a drop or here), newest first; a "
+                      "file that failed to open leaves the list.")) {
     const std::vector<std::string> recent = s.recent;  // opening reorders the list
     for (std::size_t i = 0; i < recent.size(); ++i)
       if (ui::selectable((recent[i] + "##recent" + std::to_string(i)).c_str(), false))
@@ -188,7 +191,6 @@ void data_panel(AppState& s, StudioActions& actions) {
                  "configuration, a session, a pairs file or manifest, pagor bench results. "
                  "Files can also be dropped on the window."))
     open_file_dialog(s, FilePurpose::any, "");
-  if (!s.recent.empty()) ImGui::SameLine();
   recent_files(s, actions);
   indoor_preset_hint(s.config, s.preset, s.have_data && is_indoor(d), "data", actions);
 }

@@ -22,7 +22,7 @@ class BenchWorker;
 struct SessionFiles {
   std::string& session_path;     ///< the session file saved and loaded
   std::string& screenshot_path;  ///< where a screenshot is written (PNG)
-  std::string& export_path;      ///< where exports go: <export path>-<name>
+  std::string& export_path;      ///< where the pair view's exports go: <export path>-<name>
 };
 
 /// Moves through the pairs file or manifest by `delta` (clamped) and opens that pair.
@@ -70,6 +70,10 @@ void bottom_panel_switch(DiagnosisView& diagnosis);
 /// the worker's error or else the last message for the user.
 void status_bar(const WorkerStatus& status, const Snapshot* snapshot, const Message& message,
                 double frame_ms);
+/// What the last run computed, for the status bar: "last run 12 ms: graph, clique, ..."; without
+/// clouds the stages that had nothing to work on are listed apart as skipped, and verification is
+/// named as the selection it was (by S over the correspondences).
+std::string run_stages_text(const Snapshot& snapshot);
 /// The benchmark view: the open pairs set, its table, rates and plots, and sweeps.
 void benchmark_view(AppState& state, BenchWorker& bench, StudioActions& actions);
 

@@ -11,6 +11,7 @@
 #include "panels/exports.hpp"
 #include "panels/panels.hpp"
 #include "panels/pyramid_chart.hpp"
+#include "widgets/number_format.hpp"
 #include "widgets/widgets.hpp"
 
 namespace pagor::studio {
@@ -88,9 +89,10 @@ bool level_row(const Snapshot& s, int i, int shown, const RunChanges& changes) {
   ImGui::TableNextColumn();
   if (l.pose.valid) {
     const Transform& T = l.pose.T_target_source;
-    ImGui::Text("%7.2f %6.2f %6.2f", T(0, 3), T(1, 3), T(2, 3));
+    ImGui::Text("%7s %6s %6s", fixed(T(0, 3), 2).c_str(), fixed(T(1, 3), 2).c_str(),
+                fixed(T(2, 3), 2).c_str());
     ImGui::TableNextColumn();
-    ImGui::Text("%.2f", yaw_pitch_roll_deg(T.block<3, 3>(0, 0)).x());
+    ImGui::TextUnformatted(fixed(yaw_pitch_roll_deg(T.block<3, 3>(0, 0)).x(), 2).c_str());
   } else {
     ImGui::TextColored(kDim, "%s", l.pose.failure.c_str());
     ImGui::TableNextColumn();
@@ -140,8 +142,10 @@ void level_details(const Snapshot& s, int shown) {
     if (l.pose.valid) {
       const Transform& T = l.pose.T_target_source;
       const Eigen::Vector3d a = yaw_pitch_roll_deg(T.block<3, 3>(0, 0));
-      ImGui::Text("t = (%.2f, %.2f, %.2f) m", T(0, 3), T(1, 3), T(2, 3));
-      ImGui::Text("yaw %.2f\xc2\xb0 pitch %.2f\xc2\xb0 roll %.2f\xc2\xb0", a.x(), a.y(), a.z());
+      ui::figure("t = (" + fixed(T(0, 3), 2) + ", " + fixed(T(1, 3), 2) + ", " + fixed(T(2, 3), 2) +
+                 ") m");
+      ui::figure("yaw " + fixed(a.x(), 2) + "\xc2\xb0 pitch " + fixed(a.y(), 2) +
+                 "\xc2\xb0 roll " + fixed(a.z(), 2) + "\xc2\xb0");
       ImGui::Text("%zu GNC inliers, %d iterations", l.pose.inliers.size(), l.pose.iterations);
     } else {
       ImGui::TextColored(kBad, "no pose: %s", l.pose.failure.c_str());
@@ -198,7 +202,7 @@ void pyramid_panel(const Snapshot* s, const RunChanges& changes, const std::stri
                         s->correspondences_capped ? " (capped)" : "");
   diagnosis_verdict_line(*s);
   warning_lines(*s);
-  result_exports(*s, exports);
+  result_exports(*s, stale_reason, exports);
   const int shown = shown_level(view, s->selected, static_cast<int>(s->levels.size()));
   origin_line(*s, shown);
   const float chart_w = std::min(330.0f, ImGui::GetContentRegionAvail().x * 0.34f);
@@ -206,8 +210,10 @@ void pyramid_panel(const Snapshot* s, const RunChanges& changes, const std::stri
   const int clicked = levels_table(*s, shown, changes);
   if (clicked >= 0) view.level = clicked;
   if (!s->source)  // as pagor register --correspondences says it
-    ImGui::TextDisabled(
-        "* selected: without clouds (no D to verify on). Click a row to view its level.");
+    ui::figure(
+        "* selected: lowest S = sum of min(residual, noise bound) over all correspondences (no "
+        "clouds, so no D). Click a row to view its level.",
+        kDim, true);
   else
     ImGui::TextDisabled(
         "* selected: lowest D (\xce\xbc %.2f m, %zu points). Click a row to view its level.",

@@ -56,8 +56,8 @@ void session_panel(SessionFiles files, StudioActions& actions) {
   if (ui::button("save screenshot", ImVec2(0, 0), "Writes the whole window as a PNG (S)."))
     actions.save_screenshot();
   ui::input_text("export path", &files.export_path,
-                 "Exports (tables as CSV, the result JSON, plots as PNG and SVG) are written to "
-                 "<export path>-<name>.");
+                 "The pair view's exports (the result JSON, the levels and diagnosis tables as "
+                 "CSV) are written to <export path>-<name>. The benchmark view has its own.");
 }
 
 }  // namespace pagor::studio

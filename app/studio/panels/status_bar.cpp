@@ -14,33 +14,53 @@ namespace {
 const ImVec4 kErrorColor(1.0f, 0.35f, 0.35f, 1.0f), kWarningColor(1.0f, 0.8f, 0.3f, 1.0f);
 
 // The worker's error first (the results shown are not of the last request), else the message.
+// The bar is one line: hovering it shows the whole text (a long error is cut at the window's
+// edge) and any detail.
 void message_line(const std::string& worker_error, const Message& message) {
-  if (!worker_error.empty()) {
-    ImGui::SameLine();
-    ImGui::TextColored(kErrorColor, "| error: %s", worker_error.c_str());
-    return;
-  }
-  if (message.text.empty()) return;
+  Message m = worker_error.empty() ? message : Message::error(worker_error);
+  if (m.text.empty()) return;
   ImGui::SameLine();
-  switch (message.level) {
-    case MessageLevel::error:
-      ImGui::TextColored(kErrorColor, "| error: %s", message.text.c_str());
-      break;
-    case MessageLevel::warning:
-      ImGui::TextColored(kWarningColor, "| warning: %s", message.text.c_str());
-      break;
-    case MessageLevel::info:
-      ImGui::TextDisabled("| %s", message.text.c_str());
-      break;
-  }
-  if (!message.detail.empty() && ImGui::IsItemHovered()) {
-    ImGui::BeginTooltip();
-    ImGui::TextUnformatted(message.detail.c_str());
-    ImGui::EndTooltip();
-  }
+  const std::string text = (m.level == MessageLevel::error     ? "| error: "
+                            : m.level == MessageLevel::warning ? "| warning: "
+                                                               : "| ") +
+                           m.text;
+  const ImVec4 color = m.level == MessageLevel::error     ? kErrorColor
+                       : m.level == MessageLevel::warning ? kWarningColor
+                                                          : ImGui::GetStyle().Colors[ImGuiCol_TextDisabled];
+  ui::figure(text, color);
+  const std::string full = m.text + (m.detail.empty() ? "" : "\n\n" + m.detail);
+  ui::tooltip(full.c_str());
+}
+
+// Stages the pipeline passes over without clouds (a matcher's correspondences alone): no
+// landmarks to extract, no clouds to verify, refine or accept on.
+bool needs_clouds(Stage stage) {
+  return stage == Stage::landmarks || stage == Stage::verification_prep ||
+         stage == Stage::refinement || stage == Stage::acceptance;
 }
 
 }  // namespace
+
+std::string run_stages_text(const Snapshot& s) {
+  const bool clouds = s.source != nullptr;
+  std::string ran, skipped;
+  double total = 0;
+  for (int i = 0; i < kStageCount; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    if (!s.stage_ran[k]) continue;
+    const Stage stage = static_cast<Stage>(i);
+    total += s.stage_ms[k];
+    std::string& list = !clouds && needs_clouds(stage) ? skipped : ran;
+    const std::string name = !clouds && stage == Stage::verification
+                                 ? "selection by S (no clouds)"
+                                 : stage_name(stage);
+    list += (list.empty() ? "" : ", ") + name;
+  }
+  std::string text = ui::format("last run %.0f ms: ", total) +
+                     (ran.empty() ? "nothing to recompute" : ran);
+  if (!skipped.empty()) text += "; skipped without clouds: " + skipped;
+  return text;
+}
 
 void status_bar(const WorkerStatus& status, const Snapshot* snapshot, const Message& message,
                 double frame_ms) {
@@ -50,22 +70,16 @@ void status_bar(const WorkerStatus& status, const Snapshot* snapshot, const Mess
     ImGui::Text("%s ...", status.activity.empty() ? "working" : status.activity.c_str());
   } else if (snapshot) {
     const Snapshot& s = *snapshot;
-    std::string ran, times;
-    double total = 0;
-    for (int i = 0; i < kStageCount; ++i) {
-      const auto k = static_cast<std::size_t>(i);
-      if (!s.stage_ran[k]) continue;
-      ran += std::string(ran.empty() ? "" : ", ") + stage_name(static_cast<Stage>(i));
-      total += s.stage_ms[k];
-    }
-    ImGui::Text("ready | last run %.0f ms: %s", total,
-                ran.empty() ? "nothing to recompute" : ran.c_str());
-    if (ImGui::IsItemHovered()) {
+    if (ui::figure("ready | " + run_stages_text(s))) {
       ImGui::BeginTooltip();
-      for (int i = 0; i < kStageCount; ++i)
-        ImGui::Text("%-18s %8.1f ms%s", stage_name(static_cast<Stage>(i)),
-                    s.stage_ms[static_cast<std::size_t>(i)],
-                    s.stage_ran[static_cast<std::size_t>(i)] ? "" : " (cached)");
+      for (int i = 0; i < kStageCount; ++i) {
+        const Stage stage = static_cast<Stage>(i);
+        const auto k = static_cast<std::size_t>(i);
+        ImGui::Text("%-18s %8.1f ms%s", stage_name(stage), s.stage_ms[k],
+                    !s.source && needs_clouds(stage) ? " (skipped: no clouds)"
+                    : s.stage_ran[k]                 ? ""
+                                                     : " (cached)");
+      }
       ImGui::EndTooltip();
     }
   } else {

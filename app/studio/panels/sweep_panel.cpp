@@ -154,18 +154,22 @@ void flip_view(AppState& state, const SweepResult& r, const PairSet& set, Studio
 
 // One row per setting with its rates; "apply" sets the swept values only.
 void settings_table(AppState& state, const SweepResult& r, StudioActions& actions) {
-  if (!ImGui::BeginTable("##sweep_rows", 6, ImGuiTableFlags_RowBg | ImGuiTableFlags_Borders))
+  // The figures' columns as wide as their text; the setting (two parameters' values in a 2-D
+  // sweep) takes the rest and wraps, so the last column is never cut.
+  if (!ImGui::BeginTable("##sweep_rows", 6,
+                         ImGuiTableFlags_RowBg | ImGuiTableFlags_Borders |
+                             ImGuiTableFlags_SizingFixedFit))
     return;
-  for (const char* c :
-       {"setting", "success", "upper bound", "verdict precision", "mean time [ms]", ""})
-    ImGui::TableSetupColumn(c);
+  ImGui::TableSetupColumn("setting", ImGuiTableColumnFlags_WidthStretch);
+  for (const char* c : {"success", "upper bound", "verdict precision", "mean time [ms]", ""})
+    ImGui::TableSetupColumn(c, ImGuiTableColumnFlags_WidthFixed);
   ImGui::TableHeadersRow();
   for (std::size_t k = 0; k < r.settings.size(); ++k) {
     const SweepSettingResult& x = r.settings[k];
     const BenchmarkSummary& m = x.summary;
     ImGui::TableNextRow();
     ImGui::TableNextColumn();
-    ImGui::TextUnformatted(x.setting.label.c_str());
+    ui::figure(x.setting.label, ImVec4(0, 0, 0, 0), true);
     ImGui::TableNextColumn();
     ui::figure(
         ui::format("%d/%d (%s)", m.successes, m.with_truth, rate_text(m.success_rate()).c_str()));
@@ -175,7 +179,7 @@ void settings_table(AppState& state, const SweepResult& r, StudioActions& action
     ImGui::TableNextColumn();
     ui::figure(rate_text(m.precision()));
     ImGui::TableNextColumn();
-    ImGui::Text("%.0f", m.mean_total_ms);
+    ui::figure(ui::format("%.0f", m.mean_total_ms));
     ImGui::TableNextColumn();
     if (ui::small_button(("apply##sweep" + std::to_string(k)).c_str(),
                          "Set this setting's swept values in the session's parameters; every "

@@ -61,7 +61,7 @@ std::vector<Rgba> ClassColors::per_point(const PointCloud& cloud, const LabelSch
 }
 
 ColorScale height_scale(const Snapshot& s) {
-  ColorScale c{"height z [m]", 0, 1, false};
+  ColorScale c{"height z [m]", 0, 1, false, "m"};
   if (!s.target || s.target->points.empty()) return c;
   std::vector<float> z =
       sample(s.target->points.size(), [&](std::size_t i) { return s.target->points[i].z(); });

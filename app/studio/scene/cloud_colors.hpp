@@ -35,6 +35,7 @@ struct ColorScale {
   std::string title;  ///< with its unit, e.g. "height z [m]"
   double lo = 0, hi = 1;
   bool valid = false;  ///< false: nothing to scale (no intensities)
+  std::string unit;    ///< of lo and hi, printed after them ("m"; empty: unitless)
 };
 
 /// One class as drawn: its colour and its points in both clouds.

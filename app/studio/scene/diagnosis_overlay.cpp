@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "widgets/number_format.hpp"
+
 namespace pagor::studio {
 namespace {
 
@@ -23,8 +25,8 @@ bool line_ends(const ViewRect& r, const Correspondence& c, const Transform& pose
   return screen(r, transform_point(pose, c.p), a) && screen(r, c.q.cast<float>(), b);
 }
 
-// A horizontal colour bar from 0 to `top` with three ticks and a title.
-void colour_bar(ImDrawList* dl, ImVec2& at, const char* title, double top, const char* mid_label) {
+// A horizontal colour bar from 0 to `top` [m] with three ticks, each with its unit, and a title.
+void colour_bar(ImDrawList* dl, ImVec2& at, const char* title, double top, double mid) {
   const ImU32 text = IM_COL32(230, 230, 230, 255);
   dl->AddText(at, text, title);
   at.y += 17;
@@ -36,11 +38,13 @@ void colour_bar(ImDrawList* dl, ImVec2& at, const char* title, double top, const
     dl->AddRectFilled(ImVec2(x0, at.y), ImVec2(x1 + 0.5f, at.y + h),
                       col(diagnosis_colormap((static_cast<float>(i) + 0.5f) / steps), 255));
   }
-  char t[32];
-  dl->AddText(ImVec2(at.x, at.y + h + 1), text, "0");
-  dl->AddText(ImVec2(at.x + w * 0.5f - 12, at.y + h + 1), text, mid_label);
-  std::snprintf(t, sizeof(t), "%.1f", top);
-  dl->AddText(ImVec2(at.x + w - ImGui::CalcTextSize(t).x, at.y + h + 1), text, t);
+  const std::string lo = with_unit(0.0, "m"), middle = with_unit(mid, "m"),
+                    hi = with_unit(top, "m");
+  dl->AddText(ImVec2(at.x, at.y + h + 1), text, lo.c_str());
+  dl->AddText(ImVec2(at.x + (w - ImGui::CalcTextSize(middle.c_str()).x) * 0.5f, at.y + h + 1),
+              text, middle.c_str());
+  dl->AddText(ImVec2(at.x + w - ImGui::CalcTextSize(hi.c_str()).x, at.y + h + 1), text,
+              hi.c_str());
   at.y += h + 20;
 }
 
@@ -121,21 +125,19 @@ void draw_diagnosis_legend(ImDrawList* dl, ImVec2 at, const Snapshot& s, const V
   if (h <= 0) return;
   dl->AddRectFilled(ImVec2(at.x - 4, at.y - 4), ImVec2(at.x + 190, at.y + h),
                     IM_COL32(0, 0, 0, 150), 4.0f);
-  char mid[32], title[64];
-  if (view.diagnosis.color_by_residual && s.diagnosis) {
-    std::snprintf(mid, sizeof(mid), "%.1f", s.diagnosis->residual_tolerance);
-    colour_bar(dl, at, "lines: truth residual [m]", residual_scale(s), mid);
-  }
+  char title[64];
+  if (view.diagnosis.color_by_residual && s.diagnosis)
+    colour_bar(dl, at, "lines: truth residual", residual_scale(s),
+               s.diagnosis->residual_tolerance);
   if (shown_contribution(view) != Contribution::off && s.verification_source) {
     const double mu = s.config.verification.mu;
-    std::snprintf(mid, sizeof(mid), "%.2f", 0.5 * mu);
     if (shown_contribution(view) == Contribution::ground_truth)
-      std::snprintf(title, sizeof(title), "part of D, truth [m]");
+      std::snprintf(title, sizeof(title), "part of D, truth");
     else if (view.color == ColorMode::residual)
-      std::snprintf(title, sizeof(title), "residual min(d, \xce\xbc), L%d [m]", level);
+      std::snprintf(title, sizeof(title), "residual min(d, \xce\xbc), L%d", level);
     else
-      std::snprintf(title, sizeof(title), "part of D, L%d [m]", level);
-    colour_bar(dl, at, title, mu, mid);
+      std::snprintf(title, sizeof(title), "part of D, L%d", level);
+    colour_bar(dl, at, title, mu, 0.5 * mu);
   }
 }
 

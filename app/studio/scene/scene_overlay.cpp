@@ -7,6 +7,7 @@
 
 #include "scene/diagnosis_overlay.hpp"
 #include "scene/plan_overlay.hpp"
+#include "widgets/number_format.hpp"
 
 namespace pagor::studio {
 namespace {
@@ -267,11 +268,10 @@ void scale_bar(ImDrawList* dl, ImVec2& at, const ColorScale& scale) {
     dl->AddRectFilled(ImVec2(at.x + w * i / steps, at.y),
                       ImVec2(at.x + w * (i + 1) / steps + 0.5f, at.y + h),
                       col(scale_color((i + 0.5) / steps)));
-  char lo[32], hi[32];
-  std::snprintf(lo, sizeof(lo), "%.3g", scale.lo);
-  std::snprintf(hi, sizeof(hi), "%.3g", scale.hi);
-  dl->AddText(ImVec2(at.x, at.y + h + 1), text, lo);
-  dl->AddText(ImVec2(at.x + w - ImGui::CalcTextSize(hi).x, at.y + h + 1), text, hi);
+  const std::string lo = with_unit(scale.lo, scale.unit), hi = with_unit(scale.hi, scale.unit);
+  dl->AddText(ImVec2(at.x, at.y + h + 1), text, lo.c_str());
+  dl->AddText(ImVec2(at.x + w - ImGui::CalcTextSize(hi.c_str()).x, at.y + h + 1), text,
+              hi.c_str());
   at.y += h + 20;
 }
 

@@ -3,6 +3,8 @@
 /// The 3D view's window: the scene image, camera input (orbit, pan, zoom), hover tooltips over
 /// landmarks and correspondence lines, and the legends.
 
+#include <cstdint>
+
 #include "runners/worker.hpp"
 #include "scene/scene_view.hpp"
 #include "state/app_state.hpp"
@@ -14,6 +16,9 @@ namespace pagor::studio {
 struct CameraControl {
   Camera& camera;
   bool& fitted;  ///< cleared: fit the camera to everything shown at the next frame
+  /// The fit waits for the result of this worker request (newly opened data), so that the camera
+  /// frames the new data, not the result still shown before it arrives; 0: fit what is shown.
+  std::uint64_t fit_request = 0;
   /// Back to the default camera, keeping top-down, and fitted at the next frame.
   void reset() const;
 };

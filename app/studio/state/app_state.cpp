@@ -139,21 +139,39 @@ std::string preset_of(const std::string& config_json, const std::string& fallbac
   return fallback;
 }
 
-void remember_file(AppState& state, const std::string& path) {
-  const std::string p = absolute_path(path);
-  auto& r = state.recent;
-  r.erase(std::remove(r.begin(), r.end(), p), r.end());
-  r.insert(r.begin(), p);
-  if (r.size() > kMaxRecent) r.resize(kMaxRecent);
+namespace {
+
+void save_recent_files(const AppState& state) {
   if (state.recent_file.empty()) return;
   std::string text;
-  for (const std::string& f : r) text += f + "\n";
+  for (const std::string& f : state.recent) text += f + "\n";
   try {
     std::error_code ec;
     std::filesystem::create_directories(std::filesystem::path(state.recent_file).parent_path(), ec);
     write_file_atomic(state.recent_file, text);
   } catch (const Error&) {
   }
+}
+
+}  // namespace
+
+void remember_file(AppState& state, const std::string& path) {
+  const std::string p = absolute_path(path);
+  auto& r = state.recent;
+  r.erase(std::remove(r.begin(), r.end(), p), r.end());
+  r.insert(r.begin(), p);
+  if (r.size() > kMaxRecent) r.resize(kMaxRecent);
+  save_recent_files(state);
+}
+
+bool forget_file(AppState& state, const std::string& path) {
+  const std::string p = absolute_path(path);
+  auto& r = state.recent;
+  const auto end = std::remove(r.begin(), r.end(), p);
+  if (end == r.end()) return false;
+  r.erase(end, r.end());
+  save_recent_files(state);
+  return true;
 }
 
 void load_recent_files(AppState& state) {

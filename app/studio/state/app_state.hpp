@@ -174,6 +174,9 @@ struct AppState {
 
   std::string session_path = "pagor-session.json";
   std::string screenshot_path = "pagor-studio.png";
+  /// The pair view's exports (result JSON, levels and diagnosis CSV) go to <export_path>-<name>;
+  /// the benchmark view has its own (bench.plot_path).
+  std::string export_path = "pagor-pair";
   Message message;  ///< the last message for the user (StudioActions::notify), in the status bar
   bool want_screenshot = false;
   std::vector<Pick> picks;          ///< at most two: coordinates, and the distance between
@@ -229,6 +232,9 @@ std::string preset_of(const std::string& config_json, const std::string& fallbac
 /// writes the list to `state.recent_file` when one is set (errors are ignored: a list that cannot
 /// be kept is no reason to stop).
 void remember_file(AppState& state, const std::string& path);
+/// Drops `path` (made absolute) from `state.recent`, as a file that failed to open, and writes
+/// the list. True when it was there.
+bool forget_file(AppState& state, const std::string& path);
 /// Reads `state.recent_file` into `state.recent` (a missing file: an empty list).
 void load_recent_files(AppState& state);
 

@@ -211,6 +211,7 @@ Opened open_files_into(AppState& s, const std::vector<std::string>& paths,
       remember_file(s, p);
     } catch (const Error& ex) {
       errors.push_back(ex.what());
+      forget_file(s, p);  // the recent list holds files that open
     }
   }
   all.data = all.data && data_ready(s.data);

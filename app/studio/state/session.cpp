@@ -255,6 +255,7 @@ void save_session(const AppState& s, const std::string& path) {
   json j = {{"schema", "pagor.session/1"},
             {"data", s.have_data ? data_json(s.data, s.inline_truth) : json()},
             {"pairs_file", s.pairs_file},
+            {"export_path", s.export_path},
             {"config", session_config(s)},
             {"camera",
              {{"target", {number(c.target.x()), number(c.target.y()), number(c.target.z())}},
@@ -304,8 +305,8 @@ void load_session(const std::string& path, AppState& s) {
   }
   if (!j.is_object()) throw InputError(path + ": expected a JSON object");
   reject_unknown(j, path + ":",
-                 {"schema", "data", "pairs_file", "config", "camera", "view", "layout", "window",
-                  "benchmark"});
+                 {"schema", "data", "pairs_file", "export_path", "config", "camera", "view",
+                  "layout", "window", "benchmark"});
   const std::string schema = get_string(j, "schema", path + ":", "pagor.session/1");
   if (schema != "pagor.session/1")
     throw InputError(path + ": schema: expected \"pagor.session/1\", got \"" + schema + "\"");
@@ -321,6 +322,7 @@ void load_session(const std::string& path, AppState& s) {
     next.have_data = true;
   }
   next.pairs_file = get_string(j, "pairs_file", path + ":", "");
+  next.export_path = get_string(j, "export_path", path + ":", next.export_path);
   next.base_dir = base.string();
   next.pairs = PairSet{};
   next.pair_index = -1;

@@ -37,6 +37,58 @@ void record_ranged(WidgetKind kind, const char* label, ImGuiID id, float frame_w
   maybe_tip(tip);
 }
 
+// A number typed into a widget's text field is applied when the field is left (Enter, Tab, a
+// click elsewhere), not at every keystroke: typing "0.35" must not apply 0, 0.3 and 0.35 in turn
+// (three runs, and a comparison with a run of a value nobody meant). While the field is active
+// ImGui edits its own text and parses it into the copy handed to it each frame; that value waits
+// here. Escape restores the text it started from, so the copy comes back unchanged.
+template <class T>
+class TypedValues {
+ public:
+  /// The value to hand to the widget this frame: the one being typed, else `v`.
+  T start(ImGuiID id, T v) {
+    const auto it = held_.find(id);
+    if (it == held_.end()) return v;
+    // Not drawn last frame (its panel closed while typing): the edit is gone with the field.
+    if (it->second.frame < ImGui::GetFrameCount() - 1) {
+      held_.erase(it);
+      return v;
+    }
+    return it->second.value;
+  }
+  /// After the widget: while `typing`, holds `value` and returns false; else true (apply it).
+  bool finish(ImGuiID id, bool typing, T value) {
+    if (typing) {
+      held_[id] = Held{value, ImGui::GetFrameCount()};
+      return false;
+    }
+    held_.erase(id);
+    return true;
+  }
+
+ private:
+  struct Held {
+    T value;
+    int frame;
+  };
+  std::unordered_map<ImGuiID, Held> held_;
+};
+
+template <class T>
+TypedValues<T>& typed_values() {
+  static TypedValues<T> values;
+  return values;
+}
+
+// Whether the text field of the number widget `id` is being typed into: a slider's Ctrl+click
+// field, or an input field (whose text field has the widget's own ID).
+bool slider_typing(ImGuiID id) {
+  return ImGui::TempInputIsActive(id);
+}
+bool field_typing(ImGuiID id) {
+  return ImGui::GetActiveID() == id;
+}
+
 }  // namespace
 
 const char* to_string(WidgetKind kind) {
@@ -117,12 +169,16 @@ WidgetRecord& WidgetRegistry::add(WidgetKind kind, const char* label, ImGuiID id
 
 void tooltip(const char* tip) {
   registry().mark_last_explained();
-  if (ImGui::IsItemHovered()) {
+  // A disabled item explains itself too: why it is disabled is what the user asks then.
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
+    // Opaque and legible also over a disabled item or a dimmed (stale) panel.
+    ImGui::PushStyleVar(ImGuiStyleVar_Alpha, 1.0f);
     ImGui::BeginTooltip();
     ImGui::PushTextWrapPos(ImGui::GetFontSize() * 28.0f);
     ImGui::TextUnformatted(tip);
     ImGui::PopTextWrapPos();
     ImGui::EndTooltip();
+    ImGui::PopStyleVar();
   }
 }
 
@@ -172,10 +228,15 @@ bool slider_float(const char* label, float* v, float lo, float hi, const char* f
   const ImGuiSliderFlags flags =
       ImGuiSliderFlags_AlwaysClamp | (log ? ImGuiSliderFlags_Logarithmic : 0);
   const float frame_w = ImGui::CalcItemWidth();
-  bool r = ImGui::SliderFloat(label, v, lo, hi, fmt, flags);
-  if (!(*v >= lo && *v <= hi)) {  // NaN typed, or a value past the range
-    *v = std::isnan(*v) ? lo : std::clamp(*v, lo, hi);
-    r = true;
+  // A drag applies at once; a typed value when its field is left.
+  float value = typed_values<float>().start(id, *v);
+  ImGui::SliderFloat(label, &value, lo, hi, fmt, flags);
+  bool r = false;
+  if (typed_values<float>().finish(id, slider_typing(id), value)) {
+    if (!(value >= lo && value <= hi))  // NaN typed, or a value past the range
+      value = std::isnan(value) ? lo : std::clamp(value, lo, hi);
+    r = value != *v;
+    *v = value;
   }
   record_ranged(WidgetKind::slider, label, id, frame_w, lo, hi, tip);
   return r;
@@ -186,10 +247,13 @@ bool slider_int(const char* label, int* v, int lo, int hi, bool log, const char*
   const ImGuiSliderFlags flags =
       ImGuiSliderFlags_AlwaysClamp | (log ? ImGuiSliderFlags_Logarithmic : 0);
   const float frame_w = ImGui::CalcItemWidth();
-  bool r = ImGui::SliderInt(label, v, lo, hi, "%d", flags);
-  if (*v < lo || *v > hi) {
-    *v = std::clamp(*v, lo, hi);
-    r = true;
+  int value = typed_values<int>().start(id, *v);
+  ImGui::SliderInt(label, &value, lo, hi, "%d", flags);
+  bool r = false;
+  if (typed_values<int>().finish(id, slider_typing(id), value)) {
+    value = std::clamp(value, lo, hi);
+    r = value != *v;
+    *v = value;
   }
   record_ranged(WidgetKind::slider, label, id, frame_w, lo, hi, tip);
   return r;
@@ -217,12 +281,15 @@ bool input_int(const char* label, int* v, int lo, int hi, int step, bool on_ente
                const char* tip) {
   const ImGuiID id = ImGui::GetID(label);
   const float frame_w = ImGui::CalcItemWidth();
-  int value = *v;
+  // With `on_enter` ImGui parses the text on Enter only (a click elsewhere drops the edit);
+  // without, a typed value waits until the field is left. The +/- buttons apply at once.
+  int value = on_enter ? *v : typed_values<int>().start(id, *v);
   const bool r = ImGui::InputInt(label, &value, step, step * 10,
                                  on_enter ? ImGuiInputTextFlags_EnterReturnsTrue : 0);
+  const bool apply = on_enter || typed_values<int>().finish(id, field_typing(id), value);
   // Written back only when the user edited it: a value loaded from a file is not changed silently.
   bool changed = false;
-  if (r || value != *v) {
+  if (apply && (r || value != *v)) {
     const int clamped = std::clamp(value, lo, hi);
     changed = clamped != *v;
     *v = clamped;
@@ -238,7 +305,9 @@ bool begin_combo(const char* label, const char* preview, const char* tip) {
   ImGuiWindow* window = ImGui::GetCurrentWindow();
   const bool open = ImGui::BeginCombo(label, preview);
   // While open, the popup is the current window: record against the combo's own window.
-  registry().add(WidgetKind::combo, label, id, at, to, window).frame_w = to.x - at.x;
+  WidgetRecord& rec = registry().add(WidgetKind::combo, label, id, at, to, window);
+  rec.frame_w = to.x - at.x;
+  rec.text = preview ? preview : "";
   if (!open)
     maybe_tip(tip);
   else if (tip)
@@ -351,11 +420,11 @@ bool input_double(const char* label, double* v, double lo, double hi, const char
                   const char* tip) {
   const ImGuiID id = ImGui::GetID(label);
   const float frame_w = ImGui::CalcItemWidth();
-  double value = *v;
-  const bool enter =
-      ImGui::InputDouble(label, &value, 0.0, 0.0, fmt, ImGuiInputTextFlags_EnterReturnsTrue);
+  double value = typed_values<double>().start(id, *v);
+  ImGui::InputDouble(label, &value, 0.0, 0.0, fmt);
   bool changed = false;
-  if ((enter || ImGui::IsItemDeactivatedAfterEdit()) && value != *v) {
+  if (typed_values<double>().finish(id, field_typing(id), value) && value != *v &&
+      !(std::isnan(value) && std::isnan(*v))) {
     const double clamped = std::isnan(value) ? lo : std::clamp(value, lo, hi);
     changed = clamped != *v;
     *v = clamped;
@@ -367,11 +436,10 @@ bool input_double(const char* label, double* v, double lo, double hi, const char
 bool input_int64(const char* label, long long* v, long long lo, long long hi, const char* tip) {
   const ImGuiID id = ImGui::GetID(label);
   const float frame_w = ImGui::CalcItemWidth();
-  long long value = *v;
-  const bool enter = ImGui::InputScalar(label, ImGuiDataType_S64, &value, nullptr, nullptr, "%lld",
-                                        ImGuiInputTextFlags_EnterReturnsTrue);
+  long long value = typed_values<long long>().start(id, *v);
+  ImGui::InputScalar(label, ImGuiDataType_S64, &value, nullptr, nullptr, "%lld");
   bool changed = false;
-  if ((enter || ImGui::IsItemDeactivatedAfterEdit()) && value != *v) {
+  if (typed_values<long long>().finish(id, field_typing(id), value) && value != *v) {
     const long long clamped = std::clamp(value, lo, hi);
     changed = clamped != *v;
     *v = clamped;

@@ -41,7 +41,9 @@ struct WidgetRecord {
   ImVec2 clip_min, clip_max;  ///< visible part of its window [px]
   bool visible = false;       ///< inside its window's visible part
   bool has_tooltip = false;   ///< a sentence explains it on hover
-  std::string text;  ///< text kind: the line as drawn; a path field: the part of the path it shows
+  /// text kind: the line as drawn; a path field: the part of the path it shows; a combo: its
+  /// preview (the current choice)
+  std::string text;
   bool enabled = true;   ///< false when drawn disabled
   float lo = 0, hi = 0;  ///< slider / input range (0, 0 when none)
   float frame_w = 0;     ///< width of the frame (sliders, fields: without the label) [px]
@@ -87,7 +89,9 @@ WidgetRegistry& registry();
 void tooltip(const char* tip);
 
 // Wrappers: same meaning as ImGui's, plus registration. Ranges are always enforced (a value typed
-// with Ctrl+click is clamped to [lo, hi]).
+// with Ctrl+click is clamped to [lo, hi]). A number typed into a slider's Ctrl+click field or a
+// number field is applied once, when the field is left (Enter, Tab, a click elsewhere; Escape
+// drops it), never at each keystroke; a slider dragged applies at once.
 bool button(const char* label, ImVec2 size = ImVec2(0, 0), const char* tip = nullptr);
 bool small_button(const char* label, const char* tip = nullptr);
 bool arrow_button(const char* id, ImGuiDir dir, const char* tip = nullptr);
