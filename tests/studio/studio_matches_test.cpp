@@ -62,6 +62,11 @@ void check_same(const studio::Snapshot& s, const Pipeline& p) {
   CHECK(s.selected == p.selected_level());
   for (std::size_t l = 0; l < s.levels.size(); ++l) {
     CHECK(s.levels[l].clique == p.cliques()[l].vertices);
+    // How each level's search ended, as the CLI reports it (proven, bound, budget, start).
+    CHECK(s.levels[l].clique_proven == p.cliques()[l].optimal);
+    CHECK(s.levels[l].clique_upper_bound == p.cliques()[l].upper_bound);
+    CHECK(s.levels[l].clique_budget == p.cliques()[l].budget);
+    CHECK(s.levels[l].clique_start == p.cliques()[l].start);
     CHECK(s.levels[l].pose.T_target_source.isApprox(p.poses()[l].T_target_source, 1e-12));
   }
   CHECK(s.acceptance.verified == p.acceptance().verified);

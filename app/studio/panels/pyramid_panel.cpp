@@ -43,6 +43,21 @@ void change_line(const RunChanges& changes, const std::string& stale_reason) {
   }
 }
 
+// How the level's clique search ended: proven maximum, or the bound it reached and the budget that
+// stopped it; and how it started.
+std::string clique_search_text(const LevelView& l) {
+  std::string out;
+  if (l.clique_proven)
+    out = "proven maximum";
+  else if (l.clique_upper_bound > static_cast<int>(l.clique.size()))
+    out = "not proven; bound " + std::to_string(l.clique_upper_bound);
+  else
+    out = "not proven (relaxation only)";
+  if (l.clique_budget != CliqueBudget::none)
+    out += std::string("; ") + to_string(l.clique_budget) + " budget ran out";
+  return out + "; start " + to_string(l.clique_start);
+}
+
 // One level's row of the table; true when its label was clicked.
 bool level_row(const Snapshot& s, int i, int shown, const RunChanges& changes) {
   const bool gt = s.ground_truth.has_value();
@@ -67,7 +82,10 @@ bool level_row(const Snapshot& s, int i, int shown, const RunChanges& changes) {
   ImGui::TableNextColumn();
   ImGui::Text("%zu", l.edges);
   ImGui::TableNextColumn();
-  ImGui::Text("%zu", l.clique.size());
+  if (l.clique_proven || l.clique_upper_bound <= static_cast<int>(l.clique.size()))
+    ImGui::Text("%zu", l.clique.size());
+  else  // not proven maximum: the bound the search reached
+    ImGui::Text("%zu (bound %d)", l.clique.size(), l.clique_upper_bound);
   ImGui::TableNextColumn();
   if (l.pose.valid && std::isfinite(l.score))
     ImGui::Text("%.1f", l.score);
@@ -139,6 +157,7 @@ void level_details(const Snapshot& s, int shown) {
     ImGui::Spacing();
     ImGui::Text("level %d (\xce\xb5 %.3f%s): clique of %zu", shown, l.epsilon,
                 trim_unit_suffix(s.config.graph.trim), l.clique.size());
+    ui::figure_dim(clique_search_text(l));
     if (l.pose.valid) {
       const Transform& T = l.pose.T_target_source;
       const Eigen::Vector3d a = yaw_pitch_roll_deg(T.block<3, 3>(0, 0));

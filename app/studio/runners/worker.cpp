@@ -272,6 +272,10 @@ std::shared_ptr<Snapshot> Worker::make_snapshot(std::uint64_t request) const {
     v.vertices = g.active_vertices(static_cast<int>(l));
     v.edges = g.edges_at_level[l];
     v.clique = p.cliques()[l].vertices;
+    v.clique_proven = p.cliques()[l].optimal;
+    v.clique_upper_bound = p.cliques()[l].upper_bound;
+    v.clique_budget = p.cliques()[l].budget;
+    v.clique_start = p.cliques()[l].start;
     v.pose = p.poses()[l];
     v.score = p.verification().scores[l];
     if (l < p.level_errors().size()) v.error = p.level_errors()[l];

@@ -26,6 +26,10 @@ struct LevelView {
   double epsilon = 0;
   std::size_t vertices = 0, edges = 0;
   std::vector<int> clique;  ///< correspondence indices
+  bool clique_proven = false;  ///< the clique is proven maximum on its level
+  int clique_upper_bound = 0;  ///< bound on the level's clique number the search reached
+  CliqueBudget clique_budget = CliqueBudget::none;  ///< which budget cut the search short
+  CliqueStart clique_start = CliqueStart::cold;     ///< how the level's search started
   PoseEstimate pose;
   double score = 0;  ///< D [m]; +inf when invalid
   std::optional<PoseError> error;

@@ -101,6 +101,8 @@ void diagnose_levels(const DiagnosisInput& in, const Transform& T_gt, const Diag
   const PyramidGraph true_graph = build_pyramid_graph(true_items, in.config->graph);
   CliqueParams exact = in.config->clique;
   exact.exact_max_nodes = params.exact_max_nodes;
+  // Bounded by nodes only: a diagnosis must not depend on how busy the machine is.
+  exact.exact_time_budget_ms = 0;
 
   for (std::size_t l = 0; l < in.cliques->size(); ++l) {
     const int level = static_cast<int>(l);
