@@ -3,6 +3,7 @@
 // gedi-dev problems when the shared data is there.
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <array>
 #include <catch2/catch.hpp>
 #include <filesystem>
@@ -329,3 +330,45 @@ TEST_CASE("gedi-dev fused with the landmarks of the semreg-dev clouds") {
         l.clique_true_origin.matcher);
 }
 #endif
+
+TEST_CASE("a pair's time budget stops the clique search with the best cliques so far, and says so") {
+  // 3000 generated correspondences: building their graph alone takes longer than a 1 ms budget,
+  // so every level of the clique search starts past the deadline.
+  AssociationParams a;
+  a.m = 3000;
+  a.seed = 5;
+  const AssociationProblem problem = association_problem(a);
+  for (const CliqueSolver solver :
+       {CliqueSolver::cascaded, CliqueSolver::independent, CliqueSolver::exact}) {
+    INFO("solver " << to_string(solver));
+    Config config = default_config();
+    config.clique.solver = solver;
+    config.clique.pair_time_budget_ms = 1;
+    Pipeline p(config);
+    p.set_matches(problem.correspondences);
+    p.run();
+    CHECK(p.pair_time_budget_hit());
+    bool any_time = false;
+    for (int l = 0; l < p.graph().levels(); ++l) {
+      const CliqueResult& c = p.cliques()[static_cast<std::size_t>(l)];
+      CHECK(is_clique(p.graph(), l, c.vertices));
+      CHECK_FALSE(c.vertices.empty());  // at least the lower bound
+      if (c.budget == CliqueBudget::time) CHECK_FALSE(c.optimal);
+      any_time |= c.budget == CliqueBudget::time;
+    }
+    CHECK(any_time);
+    const auto w = p.warnings();
+    CHECK(std::any_of(w.begin(), w.end(), [](const std::string& s) {
+      return s.find("pair_time_budget_ms") != std::string::npos;
+    }));
+    const nlohmann::json j =
+        nlohmann::json::parse(registration_report_json(p, "matches", "matches"));
+    CHECK(j["pair_time_budget_hit"] == true);
+  }
+  // With the default budget the same problem finishes: nothing is cut short.
+  Pipeline p(default_config());
+  p.set_matches(problem.correspondences);
+  p.run();
+  CHECK_FALSE(p.pair_time_budget_hit());
+  for (const CliqueResult& c : p.cliques()) CHECK(c.budget != CliqueBudget::time);
+}

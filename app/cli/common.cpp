@@ -65,10 +65,13 @@ void with_config_origin(const Args& args, const std::function<void()>& stage) {
 void print_clique_search(const Pipeline& p) {
   const bool exact = p.config().clique.solver == CliqueSolver::exact;
   for (const CliqueResult& c : p.cliques()) {
-    if (c.budget != CliqueBudget::none)
+    if (c.budget != CliqueBudget::none && c.upper_bound > static_cast<int>(c.vertices.size()))
       std::printf("  level %d: clique search stopped by its %s budget: %zu members, at most %d\n",
                   c.level, c.budget == CliqueBudget::nodes ? "node" : "time", c.vertices.size(),
                   c.upper_bound);
+    else if (c.budget != CliqueBudget::none)  // stopped before any bound was reached
+      std::printf("  level %d: clique search stopped by its %s budget: %zu members, no bound\n",
+                  c.level, c.budget == CliqueBudget::nodes ? "node" : "time", c.vertices.size());
     else if (exact && c.optimal)
       std::printf("  level %d: clique of %zu proven maximum\n", c.level, c.vertices.size());
     if (c.start == CliqueStart::fallback)

@@ -141,6 +141,7 @@ void Pipeline::set_config(const Config& config) {
 void Pipeline::run(const ProgressFn& progress, const std::atomic<bool>* cancel) {
   if (!has_input())
     throw InputError("the pipeline has no input: neither clouds nor a matcher's correspondences");
+  run_started_ = std::chrono::steady_clock::now();
   for (int i = 0; i < kStageCount; ++i) {
     if (!stale_[static_cast<std::size_t>(i)]) continue;
     if (cancel && cancel->load()) throw Cancelled();
@@ -216,9 +217,15 @@ void Pipeline::run_stage(Stage stage) {
     case Stage::graph:
       graph_ = build_pyramid_graph(correspondences_.items, config_.graph, threads_);
       break;
-    case Stage::clique:
-      cliques_ = solve_pyramid(graph_, config_.clique);
+    case Stage::clique: {
+      const Deadline deadline = clique_deadline();
+      cliques_ = solve_pyramid(graph_, config_.clique, deadline);
+      // A level cut short by time after the pair's deadline (not by the exact solver's own share).
+      pair_budget_hit_ = false;
+      if (deadline != kNoDeadline && std::chrono::steady_clock::now() > deadline)
+        for (const CliqueResult& c : cliques_) pair_budget_hit_ |= c.budget == CliqueBudget::time;
       break;
+    }
     case Stage::gnc:
       run_gnc();
       break;
@@ -373,6 +380,16 @@ bool Pipeline::upper_bound_success() const {
   return false;
 }
 
+bool Pipeline::pair_time_budget_hit() const {
+  return pair_budget_hit_;
+}
+
+Deadline Pipeline::clique_deadline() const {
+  if (config_.clique.pair_time_budget_ms <= 0) return kNoDeadline;
+  return run_started_ + std::chrono::microseconds(
+                            static_cast<long long>(1000.0 * config_.clique.pair_time_budget_ms));
+}
+
 std::vector<std::string> Pipeline::warnings() const {
   std::vector<std::string> out;
   for (const auto& w : source_landmarks_.warnings) out.push_back("source: " + w);
@@ -383,6 +400,11 @@ std::vector<std::string> Pipeline::warnings() const {
       out.push_back("level " + std::to_string(l) + ": no pose (" + poses_[l].failure + ")");
   if (!poses_.empty() && verification_.selected < 0)
     out.push_back("no valid candidate on any level");
+  if (pair_time_budget_hit())
+    out.push_back("the pair's time budget (clique.pair_time_budget_ms = " +
+                  number_text(config_.clique.pair_time_budget_ms) +
+                  " ms) ran out in the clique search: the levels whose budget reads 'time' keep "
+                  "the best clique found so far");
   return out;
 }
 

@@ -194,6 +194,7 @@ json report_object(const Pipeline& p, const std::string& source_name,
         {"target", labels_json(p.target_landmarks().labels)}}},
       {"timings_ms", timings},
       {"warnings", p.warnings()},
+      {"pair_time_budget_hit", p.pair_time_budget_hit()},
       {"config", json::parse(config_to_json(p.config()))}};
   return out;
 }

@@ -13,6 +13,7 @@
 /// `correspondences.fuse_matches`) and verification, refinement and acceptance run as usual.
 
 #include <array>
+#include <chrono>
 #include <atomic>
 #include <functional>
 #include <optional>
@@ -146,6 +147,10 @@ class Pipeline {
   double time_ms(Stage stage) const { return times_[static_cast<std::size_t>(stage)]; }
   /// Warnings collected by the last run of each stage.
   std::vector<std::string> warnings() const;
+  /// Whether the last run's clique search stopped at the pair's time budget
+  /// (clique.pair_time_budget_ms, counted from the start of run()); the levels it cut short have
+  /// budget `time` and keep the best clique found so far. The warnings say so too.
+  bool pair_time_budget_hit() const;
 
  private:
   void mark_stale(Stage stage);
@@ -185,6 +190,9 @@ class Pipeline {
   std::array<bool, kStageCount> stale_{};
   std::array<int, kStageCount> runs_{};
   std::array<double, kStageCount> times_{};
+  std::chrono::steady_clock::time_point run_started_{};
+  bool pair_budget_hit_ = false;
+  Deadline clique_deadline() const;
 };
 
 }  // namespace pagor

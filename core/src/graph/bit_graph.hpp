@@ -93,6 +93,11 @@ struct SearchBudget {
     return !exhausted();
   }
   bool exhausted() const { return out_of_nodes || out_of_time; }
+  /// Reads the clock (between searches, where no node is spent); false once past the deadline.
+  bool in_time() {
+    if (deadline != Clock::time_point::max() && Clock::now() > deadline) out_of_time = true;
+    return !out_of_time;
+  }
 };
 
 /// A maximum clique of `g` if it has more than `lower` vertices, else empty (local ids). Branch

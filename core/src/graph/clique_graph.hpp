@@ -280,7 +280,8 @@ bool is_clique(const Graph& g, const std::vector<int>& vertices, Marks& marks) {
 /// the search finished within `max_nodes` branch-and-bound nodes.
 /// `bound`, if given, receives the upper bound on the clique number the search reached.
 std::vector<int> larger_clique(const PyramidGraph& g, int level, std::vector<int> best,
-                               long max_nodes, bool& optimal, int* bound = nullptr);
+                               long max_nodes, bool& optimal, int* bound = nullptr,
+                               Deadline deadline = kNoDeadline, bool* out_of_time = nullptr);
 
 struct SearchBudget;
 /// The exact solver on one level within `budget` (nodes and deadline, shared by the levels of a

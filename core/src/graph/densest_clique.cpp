@@ -55,7 +55,8 @@ std::vector<int> lower_bound(const detail::PyramidLevel& view, const std::vector
 // prove_first: the lower bound's clique, when a bounded exact search proves it maximum (then the
 // relaxation cannot return a larger one); `r` is left untouched otherwise.
 bool proven_without_relaxation(const PyramidGraph& g, int level, const CliqueParams& p,
-                               const std::vector<int>& known_clique, double d0, CliqueResult& r) {
+                               const std::vector<int>& known_clique, double d0, CliqueResult& r,
+                               Deadline deadline) {
   if (!p.prove_first || g.affinity != AffinityKind::binary || g.vertices == 0 ||
       (static_cast<std::size_t>(level) < g.edges_at_level.size() &&
        static_cast<long>(g.edges_at_level[static_cast<std::size_t>(level)]) <
@@ -67,7 +68,8 @@ bool proven_without_relaxation(const PyramidGraph& g, int level, const CliquePar
       lower_bound(view, detail::level_degrees(g, level), known_clique, p, marks);
   bool optimal = false;
   int bound = 0;
-  lower = detail::larger_clique(g, level, std::move(lower), p.cascade_check_nodes, optimal, &bound);
+  lower = detail::larger_clique(g, level, std::move(lower), p.cascade_check_nodes, optimal, &bound,
+                                deadline);
   if (!optimal) return false;
   r.level = level;
   r.vertices = std::move(lower);
@@ -84,7 +86,8 @@ bool proven_without_relaxation(const PyramidGraph& g, int level, const CliquePar
 
 // The relaxation on one level (solve_clipper without the warm level's checks); no timing.
 CliqueResult relax_level(const PyramidGraph& g, int level, const std::vector<double>& u0,
-                         const CliqueParams& p, const std::vector<int>& known_clique, double d0) {
+                         const CliqueParams& p, const std::vector<int>& known_clique, double d0,
+                         Deadline deadline) {
   CliqueResult r;
   r.level = level;
   if (g.vertices == 0) return r;
@@ -135,7 +138,7 @@ CliqueResult relax_level(const PyramidGraph& g, int level, const std::vector<dou
   }
 
   const std::vector<int> local =
-      sub.size() > 0 ? detail::relax(sub, u, d0, p, r) : std::vector<int>{};
+      sub.size() > 0 ? detail::relax(sub, u, d0, p, r, deadline) : std::vector<int>{};
   for (std::size_t i = 0; i < sub.size(); ++i) r.u[static_cast<std::size_t>(sub.ids[i])] = u[i];
   std::vector<int> found;
   for (int v : local) found.push_back(sub.ids[static_cast<std::size_t>(v)]);
@@ -149,14 +152,15 @@ CliqueResult relax_level(const PyramidGraph& g, int level, const std::vector<dou
 }  // namespace
 
 CliqueResult solve_clipper(const PyramidGraph& g, int level, const std::vector<double>& u0,
-                           const CliqueParams& p, const std::vector<int>& known_clique, double d0) {
+                           const CliqueParams& p, const std::vector<int>& known_clique, double d0,
+                           Deadline deadline) {
   const auto t0 = Clock::now();
   CliqueResult r;
-  if (proven_without_relaxation(g, level, p, known_clique, d0, r)) {
+  if (proven_without_relaxation(g, level, p, known_clique, d0, r, deadline)) {
     r.time_ms = ms_since(t0);
     return r;
   }
-  r = relax_level(g, level, u0, p, known_clique, d0);
+  r = relax_level(g, level, u0, p, known_clique, d0, deadline);
   const bool warm = p.prune && !known_clique.empty() && g.vertices > 0;
   // A warm start can settle in a worse local optimum than a cold one (KITTI 20 -> 30, level 2:
   // 29 against 30; gedi-dev 03, level 2: 66 against 68). A warm level therefore ends with a
@@ -165,11 +169,18 @@ CliqueResult solve_clipper(const PyramidGraph& g, int level, const std::vector<d
   // that proves the clique maximum, the level is also solved from the cold start, exactly as the
   // independent solver does, and the larger clique is kept: the cascade never loses to it.
   if (warm && !r.optimal) {
+    bool late = false;
     r.vertices = detail::larger_clique(g, level, std::move(r.vertices), p.cascade_check_nodes,
-                                       r.optimal, &r.upper_bound);  // 0 nodes: colouring only
-    if (!r.optimal && p.cascade_check_nodes > 0) r.budget = CliqueBudget::nodes;
-    if (!r.optimal && p.cascade_fallback) {
-      CliqueResult cold = relax_level(g, level, random_start(g.vertices, p.seed), p, {}, 0.0);
+                                       r.optimal, &r.upper_bound, deadline, &late);
+    // 0 nodes: the colouring's proof only
+    if (!r.optimal && (late || r.budget == CliqueBudget::time))
+      r.budget = CliqueBudget::time;
+    else if (!r.optimal && p.cascade_check_nodes > 0)
+      r.budget = CliqueBudget::nodes;
+    if (!r.optimal && p.cascade_fallback && r.budget != CliqueBudget::time) {
+      CliqueResult cold =
+          relax_level(g, level, random_start(g.vertices, p.seed), p, {}, 0.0, deadline);
+      if (cold.budget == CliqueBudget::time) r.budget = CliqueBudget::time;
       r.gradient_steps += cold.gradient_steps;
       r.penalty_updates += cold.penalty_updates;
       if (cold.vertices.size() > r.vertices.size()) {
@@ -184,7 +195,8 @@ CliqueResult solve_clipper(const PyramidGraph& g, int level, const std::vector<d
   return r;
 }
 
-std::vector<CliqueResult> solve_pyramid(const PyramidGraph& g, const CliqueParams& p) {
+std::vector<CliqueResult> solve_pyramid(const PyramidGraph& g, const CliqueParams& p,
+                                        Deadline deadline) {
   const auto t0 = Clock::now();
   std::vector<CliqueResult> out;
   const std::vector<double> start = random_start(g.vertices, p.seed);
@@ -195,25 +207,27 @@ std::vector<CliqueResult> solve_pyramid(const PyramidGraph& g, const CliqueParam
   for (int l = 0; l < g.levels(); ++l) {
     switch (p.solver) {
       case CliqueSolver::exact:
+        budget.deadline = deadline;
         if (p.exact_time_budget_ms > 0)
-          budget.deadline = t0 + std::chrono::microseconds(static_cast<long>(
-                                     1000.0 * p.exact_time_budget_ms * (l + 1) / g.levels()));
+          budget.deadline = std::min(
+              deadline, t0 + std::chrono::microseconds(static_cast<long>(
+                                 1000.0 * p.exact_time_budget_ms * (l + 1) / g.levels())));
         budget.out_of_time = false;  // a level's share is its own
         // Level l-1's clique is a clique here too (levels nest): the search starts from it.
         out.push_back(detail::exact_level(g, l, p, budget,
                                           l > 0 ? out.back().vertices : std::vector<int>{}));
         break;
       case CliqueSolver::independent:
-        out.push_back(solve_clipper(g, l, start, p));
+        out.push_back(solve_clipper(g, l, start, p, {}, 0.0, deadline));
         break;
       case CliqueSolver::cascaded:
         // Alg. 1: level l starts where level l-1 ended. Its edges are a subset of level l's, so its
         // clique is also a clique here: a lower bound for pruning.
         if (l == 0)
-          out.push_back(solve_clipper(g, l, start, p));
+          out.push_back(solve_clipper(g, l, start, p, {}, 0.0, deadline));
         else
           out.push_back(solve_clipper(g, l, out.back().u, p, out.back().vertices,
-                                      p.warm_start_penalty * out.back().penalty));
+                                      p.warm_start_penalty * out.back().penalty, deadline));
         break;
     }
   }

@@ -274,7 +274,7 @@ std::vector<int> search_from(const detail::LevelCsr& csr, const detail::CoreDeco
   if (csr.size() - first <= kMaxSuffixBits) {
     const SuffixBits s = suffix_bits(csr, cd, first);
     std::vector<detail::Word> C(static_cast<std::size_t>(s.bits.words()));
-    for (; i >= first && !budget.exhausted(); --i) {
+    for (; i >= first && !budget.exhausted() && ((i & 15) != 0 || budget.in_time()); --i) {
       const int size = static_cast<int>(best.size());
       if (cd.core[static_cast<std::size_t>(cd.order[static_cast<std::size_t>(i)])] < size) {
         i = first - 1;  // every earlier vertex has a core number this low too
@@ -312,7 +312,8 @@ std::vector<int> search_from(const detail::LevelCsr& csr, const detail::CoreDeco
 }  // namespace
 
 std::vector<int> detail::larger_clique(const PyramidGraph& g, int level, std::vector<int> best,
-                                       long max_nodes, bool& optimal, int* bound) {
+                                       long max_nodes, bool& optimal, int* bound,
+                                       Deadline deadline, bool* out_of_time) {
   optimal = true;
   if (bound) *bound = static_cast<int>(best.size());
   std::sort(best.begin(), best.end());
@@ -328,12 +329,14 @@ std::vector<int> detail::larger_clique(const PyramidGraph& g, int level, std::ve
   detail::SearchBudget budget;
   budget.max_nodes = max_nodes > 0 ? max_nodes : -1;
   if (max_nodes <= 0) budget.out_of_nodes = true;  // no search: only the colouring's proof
+  budget.deadline = deadline;
   int reached = 0;
   // search_from only reads best's size; what it returns is best itself or a larger clique in the
   // core's local ids.
   std::vector<int> found =
       search_from(csr, detail::core_decomposition(csr), best, budget, optimal, reached);
   if (bound) *bound = reached;
+  if (out_of_time) *out_of_time = budget.out_of_time;
   if (found.size() <= best.size()) return best;
   for (int& v : found) v = keep[static_cast<std::size_t>(v)];
   std::sort(found.begin(), found.end());

@@ -1,6 +1,7 @@
 #include "graph/relaxation.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <numeric>
@@ -182,7 +183,7 @@ bool project(std::vector<double>& u) {
 
 // The relaxation proper on a level graph, from a non-negative unit vector u.
 std::vector<int> relax(const LevelGraph& g, std::vector<double>& u, double d, const CliqueParams& p,
-                       CliqueResult& r) {
+                       CliqueResult& r, Deadline deadline) {
   const std::size_t n = g.size();
   std::vector<double> Mu(n), Cu(n), grad(n), cand(n), Mu_c(n), Cu_c(n);
   std::vector<std::size_t> support(n);  // of the candidate
@@ -200,6 +201,10 @@ std::vector<int> relax(const LevelGraph& g, std::vector<double>& u, double d, co
     double F = dot(u, grad);
     alpha = 1.0 / (1.0 + d);  // the gradient grows with d
     for (int inner = 0; inner < p.max_inner_iterations; ++inner) {
+      if (deadline != kNoDeadline && std::chrono::steady_clock::now() > deadline) {
+        r.budget = CliqueBudget::time;
+        break;
+      }
       bool accepted = false;
       double F_new = F, sum_c = 0;
       for (int ls = 0; ls < p.max_line_search; ++ls) {
@@ -281,6 +286,7 @@ std::vector<int> relax(const LevelGraph& g, std::vector<double>& u, double d, co
     }
     ++r.penalty_updates;
     if (offenders == 0) break;  // the support is a clique
+    if (r.budget == CliqueBudget::time) break;  // rounded from where it stands
     d += std::max(increment / offenders, p.eps);
   }
   r.penalty = d;

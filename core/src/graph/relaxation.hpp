@@ -36,7 +36,8 @@ bool project(std::vector<double>& u);
 /// The relaxation from a non-negative unit vector `u` (local ids) and penalty `d`; leaves the final
 /// vector in `u`, counts steps and penalty updates in `r` (and its final penalty), and returns the
 /// rounded clique (local ids).
+/// After `deadline` it stops at the end of a penalty step and rounds what it has (r.budget = time).
 std::vector<int> relax(const LevelGraph& g, std::vector<double>& u, double d, const CliqueParams& p,
-                       CliqueResult& r);
+                       CliqueResult& r, Deadline deadline = kNoDeadline);
 
 }  // namespace pagor::detail

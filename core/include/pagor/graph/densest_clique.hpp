@@ -8,6 +8,7 @@
 /// The rounded clique is grown to a maximal one and improved by swaps (one member out, two
 /// vertices in). Also an exact maximum clique by branch and bound (exact_clique.cpp).
 
+#include <chrono>
 #include <vector>
 
 #include "pagor/graph/pyramid_graph.hpp"
@@ -96,6 +97,10 @@ struct CliqueParams {
   double exact_time_budget_ms = 1000.0;
   int greedy_starts = 4;  ///< greedy cliques grown from the highest cores for the lower bound
   int max_swaps = 64;     ///< improving swaps (one member out, two in) tried on the rounded clique
+  /// Wall time one registration may take up to the end of its clique step, counted from the start
+  /// of the run [ms]; the clique search gets what the stages before it left, and when it runs out
+  /// each unfinished level keeps the best clique found so far (budget "time"); 0: none
+  double pair_time_budget_ms = 10000.0;
   /// cascaded: a warm-started level whose clique its check (a colouring, then the search of
   /// cascade_check_nodes) does not prove maximum is also solved from the cold start (as the
   /// independent solver does); the larger clique is kept
@@ -165,6 +170,12 @@ struct CliqueParams {
     v(&CliqueParams::max_swaps,
       {"max_swaps", "Improving swaps (one member out, two in) tried on the rounded clique.", "",
        Range::closed(0, 100000)});
+    v(&CliqueParams::pair_time_budget_ms,
+      {"pair_time_budget_ms",
+       "Wall time one registration may take up to the end of its clique step, from the start of "
+       "the run; the clique search gets what is left, and when it runs out each unfinished level "
+       "keeps the best clique found so far (its budget reads 'time'); 0: none.",
+       "ms", Range::closed(1, 3.6e6), 0.0, true});
     v(&CliqueParams::cascade_fallback,
       {"cascade_fallback",
        "Cascaded: a warm-started level whose clique its check (a colouring, then the search of "
@@ -207,9 +218,13 @@ struct CliqueResult {
 /// from the highest degrees if they are larger — and the answer is never smaller than that
 /// bound; when that core is itself a clique it is the answer and no gradient step is taken.
 /// `d0` is the initial penalty (a warm start may carry part of the previous level's).
+/// Wall-clock instant after which a search stops with what it has (time_point::max(): never).
+using Deadline = std::chrono::steady_clock::time_point;
+inline constexpr Deadline kNoDeadline = Deadline::max();
+
 CliqueResult solve_clipper(const PyramidGraph& graph, int level, const std::vector<double>& u0,
                            const CliqueParams& params, const std::vector<int>& known_clique = {},
-                           double d0 = 0.0);
+                           double d0 = 0.0, Deadline deadline = kNoDeadline);
 
 /// The seeded random start of the relaxation (uniform in (0, 1], normalised).
 std::vector<double> random_start(int size, std::uint64_t seed);
@@ -223,8 +238,12 @@ std::vector<double> random_start(int size, std::uint64_t seed);
 /// and the budget in `budget`.
 CliqueResult exact_max_clique(const PyramidGraph& graph, int level, const CliqueParams& params);
 
-/// One clique per level, in level order, with the solver `params.solver` selects.
-std::vector<CliqueResult> solve_pyramid(const PyramidGraph& graph, const CliqueParams& params);
+/// One clique per level, in level order, with the solver `params.solver` selects. After
+/// `deadline` every search stops with the best clique it has (a level not yet started keeps its
+/// lower bound: the previous level's clique grown, or greedy cliques), and its `budget` reads
+/// `time`.
+std::vector<CliqueResult> solve_pyramid(const PyramidGraph& graph, const CliqueParams& params,
+                                        Deadline deadline = kNoDeadline);
 
 /// Whether every pair of `vertices` is adjacent at `level`.
 bool is_clique(const PyramidGraph& graph, int level, const std::vector<int>& vertices);
