@@ -29,15 +29,25 @@ LevelCsr level_csr(const PyramidGraph& g, int level, const std::vector<int>& kee
   for (std::size_t i = 0; i < keep.size(); ++i)
     local[static_cast<std::size_t>(keep[i])] = static_cast<int>(i);
   s.offsets.assign(keep.size() + 1, 0);
+  std::size_t rows = 0;  // room enough: the kept rows over all levels
+  for (int v : keep)
+    rows += static_cast<std::size_t>(g.offsets[static_cast<std::size_t>(v) + 1] -
+                                     g.offsets[static_cast<std::size_t>(v)]);
+  s.neighbors.resize(rows);
+  int* out = s.neighbors.data();
+  std::size_t k = 0;
+  const auto lv = static_cast<std::uint8_t>(level);
   for (std::size_t i = 0; i < keep.size(); ++i) {
     const auto v = static_cast<std::size_t>(keep[i]);
     const auto last = static_cast<std::size_t>(g.offsets[v + 1]);
     for (auto e = static_cast<std::size_t>(g.offsets[v]); e < last; ++e) {
       const int w = local[static_cast<std::size_t>(g.neighbors[e])];
-      if (g.level[e] <= level && w >= 0) s.neighbors.push_back(w);  // sorted: keep is
+      out[k] = w;  // sorted: keep is
+      k += (g.level[e] <= lv) & (w >= 0);
     }
-    s.offsets[i + 1] = static_cast<std::int64_t>(s.neighbors.size());
+    s.offsets[i + 1] = static_cast<std::int64_t>(k);
   }
+  s.neighbors.resize(k);
   return s;
 }
 
