@@ -272,8 +272,9 @@ PyramidGraph build_pyramid_graph(const std::vector<Correspondence>& c, const Gra
   }
   bounds.push_back(m);
   const Packed packed(c);
-  // Room for the edges, estimated on a sample of rows (growing the lists copies them).
-  {
+  // Room for the edges, estimated on a sample of rows (growing the lists copies them; small
+  // graphs grow cheaply, and the sample would cost more than it saves).
+  if (m >= 512) {
     std::vector<Edge> sample;
     const int step = std::max(1, m / 32);
     double sampled_pairs = 0;
