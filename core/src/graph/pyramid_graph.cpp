@@ -7,6 +7,14 @@
 
 #include "pagor/graph/trim.hpp"
 
+// The pair loops are compiled for AVX2 too, chosen once at load time where the CPU has it (GCC's
+// function clones; other compilers get the portable build only).
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+#define PAGOR_AVX2_CLONES __attribute__((target_clones("avx2", "default")))
+#else
+#define PAGOR_AVX2_CLONES
+#endif
+
 namespace pagor {
 namespace {
 
@@ -77,7 +85,7 @@ constexpr int kBlock = 256;  // pairs tested at once by the single-precision pas
 // written to `keep`; returns how many. Its margins are far wider than single precision's error on
 // centred coordinates, so that every pair the exact test accepts passes (the exact test decides).
 // Compiled for AVX2 too where the CPU has it.
-__attribute__((target_clones("avx2", "default"))) int prefilter(
+PAGOR_AVX2_CLONES int prefilter(
     const Packed& c, int i, int j0, int n, bool ratio, float min_sq, float ratio_sq, float ratio_slack,
     float diff, int* keep) {
   const auto si = static_cast<std::size_t>(i);
@@ -122,7 +130,7 @@ __attribute__((target_clones("avx2", "default"))) int prefilter(
 // The exact test of pairs (i, keep[t]), t < k, as exact_pair does it to the last bit, in two
 // passes: the lengths, TRIM values and levels side by side (vectorised, with AVX2 where the CPU
 // has it), then the edges appended.
-__attribute__((target_clones("avx2", "default"))) void exact_block(
+PAGOR_AVX2_CLONES void exact_block(
     const Packed& c, const GraphParams& params, int i, const int* keep, int k,
     std::vector<Edge>& out) {
   const auto si = static_cast<std::size_t>(i);
