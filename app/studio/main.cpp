@@ -67,6 +67,8 @@ AppState state_from_args(const cli::Args& args) {
     s.have_data = true;
     s.base_dir.clear();  // paths given on the command line are relative to the working directory
   }
+  // The benchmark view's KITTI pairs run on the KITTI root the user named, not on the default.
+  if (args.has("kitti-root")) s.bench.kitti_root = absolute_path(args.get("kitti-root"));
   if (args.has("correspondences")) {
     if (s.have_data && s.data.kind != PairSource::Kind::files)
       throw cli::UsageError("--correspondences goes alone or with a file pair (--source --target)");
@@ -237,10 +239,19 @@ int run_window(AppState state) {
   ImGui::CreateContext();
   // Shortcut keys are queued from GLFW's callback (installed first, so that ImGui's backend
   // chains to it): a tap shorter than a frame still counts.
+  // Keys pressed and released within one frame (a quick tap while a frame takes long) are also
+  // held down for that frame, so that ImGui, which reads key states once a frame, sees them: a
+  // tapped Enter in a text field is not lost.
   static Studio* g_studio = nullptr;
+  static std::vector<int> g_pressed, g_tapped;
   glfwSetKeyCallback(window, [](GLFWwindow*, int key, int, int action, int mods) {
     if (g_studio && action == GLFW_PRESS)
       g_studio->queue_key(key, (mods & GLFW_MOD_CONTROL) != 0, (mods & GLFW_MOD_SHIFT) != 0);
+    if (key < 0 || key >= static_cast<int>(IM_ARRAYSIZE(ImGuiIO::KeysDown))) return;
+    if (action == GLFW_PRESS) g_pressed.push_back(key);
+    if (action == GLFW_RELEASE &&
+        std::find(g_pressed.begin(), g_pressed.end(), key) != g_pressed.end())
+      g_tapped.push_back(key);
   });
   // Files dropped on the window are opened by their kind.
   glfwSetDropCallback(window, [](GLFWwindow*, int count, const char** paths) {
@@ -260,12 +271,17 @@ int run_window(AppState state) {
     studio.submit_data();
     if (studio.state().bench.open) studio.open_benchmark_now();
     while (!glfwWindowShouldClose(window)) {
+      g_pressed.clear();
+      g_tapped.clear();
       glfwPollEvents();
       int w = 0, h = 0;
       glfwGetFramebufferSize(window, &w, &h);
       if (w <= 0 || h <= 0) continue;
+      ImGuiIO& io = ImGui::GetIO();
+      for (int k : g_tapped) io.KeysDown[k] = true;  // released already: held for this frame
       ImGui_ImplGlfw_NewFrame();
       studio.frame(w, h);
+      for (int k : g_tapped) io.KeysDown[k] = glfwGetKey(window, k) == GLFW_PRESS;
       glfwSwapBuffers(window);
     }
   }

@@ -326,7 +326,8 @@ void Studio::frame(int width, int height) {
   // succeeded.
   const WorkerStatus status = worker_.status();
   snapshot_ = worker_.snapshot();
-  runs_.observe(snapshot_);
+  // A slider held by the mouse (the previous frame's active item) re-runs at every step.
+  runs_.observe(snapshot_, ImGui::IsAnyItemActive() && ImGui::IsMouseDown(ImGuiMouseButton_Left));
   update_staleness(status);
   forget_unreadable(status);
   // The data the camera waits for failed (or was replaced by newer data): fit what is shown.

@@ -400,11 +400,16 @@ std::vector<std::string> Pipeline::warnings() const {
       out.push_back("level " + std::to_string(l) + ": no pose (" + poses_[l].failure + ")");
   if (!poses_.empty() && verification_.selected < 0)
     out.push_back("no valid candidate on any level");
-  if (pair_time_budget_hit())
+  if (pair_time_budget_hit()) {
+    std::string cut;
+    for (const CliqueResult& c : cliques_)
+      if (c.budget == CliqueBudget::time)
+        cut += (cut.empty() ? "" : ", ") + std::to_string(c.level);
     out.push_back("the pair's time budget (clique.pair_time_budget_ms = " +
                   number_text(config_.clique.pair_time_budget_ms) +
-                  " ms) ran out in the clique search: the levels whose budget reads 'time' keep "
-                  "the best clique found so far");
+                  " ms) ran out in the clique search: level(s) " + cut +
+                  " kept the best clique found so far, not proven maximum");
+  }
   return out;
 }
 

@@ -8,6 +8,7 @@
 
 #include "pagor/errors.hpp"
 #include "state/app_state.hpp"
+#include "state/history.hpp"
 #include "studio_test_util.hpp"
 #include "widgets/number_format.hpp"
 #include "widgets/widgets.hpp"
@@ -184,4 +185,31 @@ TEST_CASE("the widget registry reports two widgets of one frame with the same ID
   CHECK(frame(true).empty());  // each panel in its own ID scope: two widgets
   CHECK(studio::ui::registry().items().size() == 2);
   ImGui::DestroyContext(ctx);
+}
+
+TEST_CASE("runs during a drag are compared with the run shown before the drag") {
+  // Dragging a threshold re-runs at every step: the line "last run changed the selection" must
+  // compare the run after the drag with the one before it, not with a run in between.
+  const auto run = [](int selected) {
+    auto s = std::make_shared<studio::Snapshot>();
+    s->data_generation = 1;
+    for (double eps : {0.02, 0.04, 0.08, 0.16}) {
+      studio::LevelView l;
+      l.epsilon = eps;
+      s->levels.push_back(l);
+    }
+    s->selected = selected;
+    return std::shared_ptr<const studio::Snapshot>(s);
+  };
+  studio::RunHistory h;
+  const auto before = run(3), during = run(0), after = run(3);
+  h.observe(before);
+  h.observe(before, true);  // the drag begins
+  CHECK(h.observe(during, true).selected_changed());  // 3 -> 0 while dragging
+  const studio::RunChanges& c = h.observe(after, false);  // the drag's result
+  CHECK(c.selected_before == 3);
+  CHECK(c.selected_after == 3);
+  CHECK_FALSE(c.selected_changed());
+  // Without a drag, each run is compared with the one before it.
+  CHECK(h.observe(run(0)).selected_changed());
 }

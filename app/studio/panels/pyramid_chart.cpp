@@ -51,6 +51,7 @@ int label_stride(int n, float slot) {
 
 std::string level_gap_text(const Snapshot& s) {
   const auto m = score_margin(s);
+  if (!m && !s.source) return "D gap to the runner-up level: n/a (no clouds, so no D)";
   if (!m) return "D gap to the runner-up level: n/a (fewer than two valid levels)";
   return ui::format("D gap to the runner-up level: %.0f m (L%d %.0f m, L%d %.0f m)",
                     m->second - m->best, m->best_level, m->best, m->second_level, m->second);
@@ -122,7 +123,7 @@ void bar_chart(const Snapshot& s, int shown, const RunChanges& changes) {
     dl->AddText(ImVec2(x0, base + 1.0f), IM_COL32(200, 200, 200, 255), text);
   }
   ImGui::Dummy(ImVec2(width, height + label_h));
-  ui::figure_dim(level_gap_text(s));
+  ui::figure(level_gap_text(s), ImGui::GetStyle().Colors[ImGuiCol_TextDisabled], true);
   if (s.selected >= 0) {  // the verdict a loop-closure user acts on; wrapped in a narrow column
     ui::figure(acceptance_text(s),
                !s.acceptance.verified ? kDim : s.acceptance.accepted ? kGood : kBad, true);

@@ -22,13 +22,17 @@ const ImVec4 kGood(0.35f, 0.9f, 0.45f, 1.0f), kBad(1.0f, 0.4f, 0.4f, 1.0f),
 
 // The stale-results warning, or the line saying the last run changed the selected level.
 void change_line(const RunChanges& changes, const std::string& stale_reason) {
+  // Always one line (its full text on hover), so that the table and the buttons below do not move
+  // while a run is pending.
   if (!stale_reason.empty()) {
+    const std::string text = "STALE: results below are from an earlier run (" + stale_reason + ")";
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.75f, 0.25f, 1.0f));
-    ImGui::PushTextWrapPos(0.0f);
-    ImGui::Text("STALE: results below are from an earlier run (%s)", stale_reason.c_str());
-    ImGui::PopTextWrapPos();
+    ImGui::TextUnformatted(text.c_str());
     ImGui::PopStyleColor();
-  } else if (changes.selected_changed()) {
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text.c_str());
+  } else if (!changes.selected_changed()) {
+    ImGui::TextUnformatted("");
+  } else {
     // A level, or "none" where a run selected nothing (no valid candidate).
     const auto level = [&](int l, double eps, TrimKind trim) {
       char text[48] = "none";
@@ -157,7 +161,7 @@ void level_details(const Snapshot& s, int shown) {
     ImGui::Spacing();
     ImGui::Text("level %d (\xce\xb5 %.3f%s): clique of %zu", shown, l.epsilon,
                 trim_unit_suffix(s.config.graph.trim), l.clique.size());
-    ui::figure_dim(clique_search_text(l));
+    ui::figure(clique_search_text(l), ImGui::GetStyle().Colors[ImGuiCol_TextDisabled], true);
     if (l.pose.valid) {
       const Transform& T = l.pose.T_target_source;
       const Eigen::Vector3d a = yaw_pitch_roll_deg(T.block<3, 3>(0, 0));
@@ -177,7 +181,7 @@ void level_details(const Snapshot& s, int shown) {
                             s.selected_error->success ? "SUCCESS" : "FAILURE",
                             s.selected_error->translation, s.selected_error->rotation_deg,
                             s.refinement.applied ? " after refinement" : ""),
-                 s.selected_error->success ? kGood : kBad);
+                 s.selected_error->success ? kGood : kBad, true);
     else
       ui::figure("selected: none", kBad);
     ui::figure_dim(ui::format("upper bound (any pose right): %s", s.upper_bound ? "yes" : "no"));

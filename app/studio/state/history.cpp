@@ -130,12 +130,15 @@ RunRecord summarize(const Snapshot& s, const RunChanges& changes) {
   return r;
 }
 
-const RunChanges& RunHistory::observe(const std::shared_ptr<const Snapshot>& s) {
+const RunChanges& RunHistory::observe(const std::shared_ptr<const Snapshot>& s, bool dragging) {
+  if (dragging && !before_drag_) before_drag_ = last_;
   if (!s || s == last_) return changes_;
-  changes_ = last_ ? compare_runs(*last_, *s) : RunChanges{};
+  const std::shared_ptr<const Snapshot>& before = before_drag_ ? before_drag_ : last_;
+  changes_ = before ? compare_runs(*before, *s) : RunChanges{};
   runs_.push_front(summarize(*s, changes_));
   if (runs_.size() > kMaxRuns) runs_.pop_back();
   last_ = s;
+  if (!dragging) before_drag_.reset();  // the first run after the drag: compared, done
   return changes_;
 }
 

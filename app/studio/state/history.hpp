@@ -90,13 +90,16 @@ RunRecord summarize(const Snapshot& s, const RunChanges& changes);
 class RunHistory {
  public:
   static constexpr std::size_t kMaxRuns = 8;
-  /// Adds `s` when it is a new run; returns the changes from the previous run.
-  const RunChanges& observe(const std::shared_ptr<const Snapshot>& s);
+  /// Adds `s` when it is a new run; returns the changes from the previous run. While `dragging`
+  /// (a value being dragged re-runs at every step), the runs in between are compared with the run
+  /// shown when the drag began, not with one another, and so is the first run after it.
+  const RunChanges& observe(const std::shared_ptr<const Snapshot>& s, bool dragging = false);
   const std::deque<RunRecord>& runs() const { return runs_; }
   const RunChanges& changes() const { return changes_; }
 
  private:
   std::shared_ptr<const Snapshot> last_;
+  std::shared_ptr<const Snapshot> before_drag_;  ///< the run shown when a drag began
   std::deque<RunRecord> runs_;
   RunChanges changes_;
 };

@@ -191,9 +191,35 @@ CliqueResult solve_clipper(const PyramidGraph& g, int level, const std::vector<d
       }
     }
   }
+  if (r.optimal) r.budget = CliqueBudget::none;  // proven maximum: no budget cost it anything
   r.time_ms = ms_since(t0);
   return r;
 }
+
+namespace {
+
+// A level started after the deadline: its lower bound only (the known clique grown, or greedy
+// cliques), not proven, budget `time`.
+CliqueResult lower_bound_only(const PyramidGraph& g, int level, const CliqueParams& p,
+                              const std::vector<int>& known_clique) {
+  const auto t0 = Clock::now();
+  CliqueResult r;
+  r.level = level;
+  r.budget = CliqueBudget::time;
+  r.start = known_clique.empty() ? CliqueStart::cold : CliqueStart::warm;
+  if (g.vertices > 0) {
+    detail::Marks marks(g.vertices);
+    r.vertices = lower_bound(detail::PyramidLevel{g, level}, detail::level_degrees(g, level),
+                             known_clique, p, marks);
+    r.u.assign(static_cast<std::size_t>(g.vertices), 0.0);
+    for (int v : r.vertices)
+      r.u[static_cast<std::size_t>(v)] = 1.0 / std::sqrt(double(r.vertices.size()));
+  }
+  r.time_ms = ms_since(t0);
+  return r;
+}
+
+}  // namespace
 
 std::vector<CliqueResult> solve_pyramid(const PyramidGraph& g, const CliqueParams& p,
                                         Deadline deadline) {
@@ -205,6 +231,12 @@ std::vector<CliqueResult> solve_pyramid(const PyramidGraph& g, const CliqueParam
   detail::SearchBudget budget;
   budget.max_nodes = p.exact_max_nodes;
   for (int l = 0; l < g.levels(); ++l) {
+    if (deadline != kNoDeadline && Clock::now() > deadline) {
+      // Past the pair's budget: each remaining level keeps its lower bound (levels nest, so the
+      // previous level's clique is one here).
+      out.push_back(lower_bound_only(g, l, p, l > 0 ? out.back().vertices : std::vector<int>{}));
+      continue;
+    }
     switch (p.solver) {
       case CliqueSolver::exact:
         budget.deadline = deadline;
