@@ -39,6 +39,13 @@ bool is_clique(const PyramidGraph& g, int level, const std::vector<int>& vertice
 
 namespace {
 
+// The relaxation's optimum on a clique: its indicator vector, normalised (a warm start's u).
+std::vector<double> indicator(int size, const std::vector<int>& clique) {
+  std::vector<double> u(static_cast<std::size_t>(size), 0.0);
+  for (int v : clique) u[static_cast<std::size_t>(v)] = 1.0 / std::sqrt(double(clique.size()));
+  return u;
+}
+
 // A lower bound on the level's clique number: the known clique (if it is one here) grown to a
 // maximal one, then greedy cliques from the highest degrees that are not in it (a cheap search
 // when the known clique is already large).
@@ -77,10 +84,7 @@ bool proven_without_relaxation(const PyramidGraph& g, int level, const CliquePar
   r.upper_bound = bound;
   r.start = known_clique.empty() ? CliqueStart::cold : CliqueStart::warm;
   r.penalty = d0;  // no relaxation ran: the next warm level starts from the same penalty
-  // The relaxation's optimum on a maximum clique is its indicator vector (the next level's start).
-  r.u.assign(static_cast<std::size_t>(g.vertices), 0.0);
-  for (int v : r.vertices)
-    r.u[static_cast<std::size_t>(v)] = 1.0 / std::sqrt(double(r.vertices.size()));
+  r.u = indicator(g.vertices, r.vertices);  // the next level's start
   return true;
 }
 
@@ -115,7 +119,7 @@ CliqueResult relax_level(const PyramidGraph& g, int level, const std::vector<dou
     // The core is itself a clique: it is the answer, and the relaxation's optimum is its
     // indicator vector.
     r.vertices = keep;
-    for (int v : keep) r.u[static_cast<std::size_t>(v)] = 1.0 / std::sqrt(double(keep.size()));
+    r.u = indicator(g.vertices, keep);
     r.optimal = true;
     r.upper_bound = static_cast<int>(keep.size());
     return r;
@@ -211,9 +215,7 @@ CliqueResult lower_bound_only(const PyramidGraph& g, int level, const CliquePara
     detail::Marks marks(g.vertices);
     r.vertices = lower_bound(detail::PyramidLevel{g, level}, detail::level_degrees(g, level),
                              known_clique, p, marks);
-    r.u.assign(static_cast<std::size_t>(g.vertices), 0.0);
-    for (int v : r.vertices)
-      r.u[static_cast<std::size_t>(v)] = 1.0 / std::sqrt(double(r.vertices.size()));
+    r.u = indicator(g.vertices, r.vertices);
   }
   r.time_ms = ms_since(t0);
   return r;

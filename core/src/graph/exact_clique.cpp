@@ -86,30 +86,24 @@ std::vector<int> solve_subproblem(const detail::LevelCsr& g, const detail::CoreD
 // subproblem's candidates (a vertex's later neighbours) are then a row's lower bits, already in
 // the order the colouring wants (highest core first), and its peeling counts neighbours a word at
 // a time.
-struct SuffixBits {
-  int first = 0;
-  detail::BitGraph bits;  // bits.ids: local -> vertex
-};
-
 constexpr int kMaxSuffixBits = 1 << 14;  // bit rows up to this many vertices (32 MB)
 
-SuffixBits suffix_bits(const detail::LevelCsr& g, const detail::CoreDecomposition& cd, int first) {
-  SuffixBits s;
-  s.first = first;
+detail::BitGraph suffix_bits(const detail::LevelCsr& g, const detail::CoreDecomposition& cd,
+                             int first) {
   const int n = g.size() - first;
-  s.bits = detail::BitGraph(n);
-  s.bits.ids.resize(static_cast<std::size_t>(n));
+  detail::BitGraph b(n);
+  b.ids.resize(static_cast<std::size_t>(n));  // local -> vertex
   const int last = g.size() - 1;
   for (int i = 0; i < n; ++i) {
     const int v = cd.order[static_cast<std::size_t>(last - i)];
-    s.bits.ids[static_cast<std::size_t>(i)] = v;
-    detail::Word* row = s.bits.row(i);
+    b.ids[static_cast<std::size_t>(i)] = v;
+    detail::Word* row = b.row(i);
     for (const int* w = g.begin(v); w != g.end(v); ++w) {
       const int j = last - cd.position[static_cast<std::size_t>(*w)];
       if (j < n) detail::set_bit(row, j);
     }
   }
-  return s;
+  return b;
 }
 
 // Packs the bits of x selected by `mask` into the low bits, in order: BMI2's pext where the CPU
@@ -272,8 +266,8 @@ std::vector<int> search_from(const detail::LevelCsr& csr, const detail::CoreDeco
              static_cast<int>(best.size()))
     ++first;
   if (csr.size() - first <= kMaxSuffixBits) {
-    const SuffixBits s = suffix_bits(csr, cd, first);
-    std::vector<detail::Word> C(static_cast<std::size_t>(s.bits.words()));
+    const detail::BitGraph s = suffix_bits(csr, cd, first);
+    std::vector<detail::Word> C(static_cast<std::size_t>(s.words()));
     for (; i >= first && !budget.exhausted() && ((i & 15) != 0 || budget.in_time()); --i) {
       const int size = static_cast<int>(best.size());
       if (cd.core[static_cast<std::size_t>(cd.order[static_cast<std::size_t>(i)])] < size) {
@@ -281,10 +275,10 @@ std::vector<int> search_from(const detail::LevelCsr& csr, const detail::CoreDeco
         break;
       }
       std::vector<int> c =
-          solve_subproblem_bits(s.bits, csr.size() - 1 - i, size, budget, optimal, bound, C);
+          solve_subproblem_bits(s, csr.size() - 1 - i, size, budget, optimal, bound, C);
       if (c.size() > best.size()) {
         best.clear();
-        for (int k : c) best.push_back(s.bits.ids[static_cast<std::size_t>(k)]);
+        for (int k : c) best.push_back(s.ids[static_cast<std::size_t>(k)]);
       }
     }
   } else {
