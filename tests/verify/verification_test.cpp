@@ -156,8 +156,10 @@ TEST_CASE("bounded distances (on the grid) and unbounded ones (kd-tree) equal a 
   const auto& tgt = verifier.target_points();
   const Eigen::Matrix3f R = T.block<3, 3>(0, 0).cast<float>();
   const Eigen::Vector3f t = T.block<3, 1>(0, 3).cast<float>();
-  // Larger bounds after smaller ones: the verifier replaces its grid by a coarser one.
-  for (float bound : {0.3f, 1.0f, 2.5f, std::numeric_limits<float>::infinity(), 0.5f}) {
+  // Larger bounds after smaller ones: the verifier replaces its grid by a coarser one. Bounds of
+  // tens of metres or more would put hundreds of points in a cell: those go to the tree, bounded.
+  for (float bound :
+       {0.3f, 1.0f, 2.5f, 40.0f, 1000.0f, std::numeric_limits<float>::infinity(), 0.5f, 3.0f}) {
     const std::vector<float> d = verifier.distances(T, bound);
     REQUIRE(d.size() == src.size());
     for (std::size_t i = 0; i < src.size(); i += 7) {
@@ -178,7 +180,8 @@ TEST_CASE("one verifier searched from several threads at once, with growing boun
   // that still search an older grid must see it intact (run under ThreadSanitizer too).
   const SyntheticScene scene = make_synthetic_scene();
   const Transform T = perturbed(scene.T_target_source, 0.3, 1.0);
-  const std::vector<float> bounds = {0.3f, 1.0f, 2.5f, 0.5f, 4.0f, std::numeric_limits<float>::infinity()};
+  const std::vector<float> bounds = {0.3f, 1.0f,   2.5f,  0.5f,
+                                     4.0f, 40.0f, 1000.0f, std::numeric_limits<float>::infinity()};
   std::vector<std::vector<float>> expected;
   {
     const Verifier alone(scene.source, scene.target, 0.5);

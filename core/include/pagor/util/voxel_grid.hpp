@@ -54,6 +54,9 @@ class RadiusGrid {
   /// Cell size actually used [m].
   float cell() const { return cell_; }
 
+  /// Cells holding at least one point.
+  std::size_t cell_count() const { return start_.empty() ? 0 : start_.size() - 1; }
+
   /// Calls f(i, j, d2) once for every pair of input points i != j strictly closer than `radius`
   /// [m] (at most the cell), with their squared distance, in no particular order: each cell is
   /// paired with itself and its 13 neighbours that come after it, so no pair is looked at twice.
