@@ -11,6 +11,8 @@ LevelCsr level_csr(const PyramidGraph& g, int level) {
   s.offsets.assign(n + 1, 0);
   std::size_t count = 0;
   for (std::size_t e = 0; e < g.level.size(); ++e) count += g.level[e] <= level;
+  s.neighbors.reserve(count);
+  hint_huge_pages(s.neighbors);
   s.neighbors.resize(count);
   std::size_t k = 0;
   for (std::size_t v = 0; v < n; ++v) {
@@ -33,6 +35,8 @@ LevelCsr level_csr(const PyramidGraph& g, int level, const std::vector<int>& kee
   for (int v : keep)
     rows += static_cast<std::size_t>(g.offsets[static_cast<std::size_t>(v) + 1] -
                                      g.offsets[static_cast<std::size_t>(v)]);
+  s.neighbors.reserve(rows);
+  hint_huge_pages(s.neighbors);
   s.neighbors.resize(rows);
   int* out = s.neighbors.data();
   std::size_t k = 0;
@@ -55,51 +59,54 @@ CoreDecomposition core_decomposition(const LevelCsr& g) {
   const int n = g.size();
   CoreDecomposition d;
   d.core.resize(static_cast<std::size_t>(n));
-  int max_deg = 0;
-  for (int v = 0; v < n; ++v) {
-    d.core[static_cast<std::size_t>(v)] = g.degree(v);
-    max_deg = std::max(max_deg, g.degree(v));
-  }
-  // Vertices sorted by degree in `vert`, with bucket starts in `bin` (counting sort).
-  std::vector<int> bin(static_cast<std::size_t>(max_deg) + 1, 0);
-  for (int v = 0; v < n; ++v) ++bin[static_cast<std::size_t>(d.core[static_cast<std::size_t>(v)])];
-  int start = 0;
-  for (int& b : bin) {
-    const int c = b;
-    b = start;
-    start += c;
-  }
   d.order.resize(static_cast<std::size_t>(n));
   d.position.resize(static_cast<std::size_t>(n));
+  // Raw pointers in the loops: through the vectors, every store reloaded their data pointers.
+  int* const core = d.core.data();
+  int* const order = d.order.data();
+  int* const position = d.position.data();
+  const std::int64_t* const offsets = g.offsets.data();
+  const int* const neighbors = g.neighbors.data();
+  int max_deg = 0;
   for (int v = 0; v < n; ++v) {
-    auto& b = bin[static_cast<std::size_t>(d.core[static_cast<std::size_t>(v)])];
-    d.position[static_cast<std::size_t>(v)] = b;
-    d.order[static_cast<std::size_t>(b)] = v;
-    ++b;
+    core[v] = static_cast<int>(offsets[v + 1] - offsets[v]);
+    max_deg = std::max(max_deg, core[v]);
   }
-  for (int k = max_deg; k > 0; --k)
-    bin[static_cast<std::size_t>(k)] = bin[static_cast<std::size_t>(k) - 1];
-  if (!bin.empty()) bin[0] = 0;
-  // Take vertices in order; each neighbour of higher current degree moves down one bucket.
+  // Vertices sorted by degree in `order`, with bucket starts in `bin` (counting sort).
+  std::vector<int> bins(static_cast<std::size_t>(max_deg) + 1, 0);
+  int* const bin = bins.data();
+  for (int v = 0; v < n; ++v) ++bin[core[v]];
+  int start = 0;
+  for (int k = 0; k <= max_deg; ++k) {
+    const int c = bin[k];
+    bin[k] = start;
+    start += c;
+  }
+  for (int v = 0; v < n; ++v) {
+    const int at = bin[core[v]]++;
+    position[v] = at;
+    order[at] = v;
+  }
+  for (int k = max_deg; k > 0; --k) bin[k] = bin[k - 1];
+  bin[0] = 0;
+  // Take vertices in order; each neighbour of higher current degree moves down one bucket (it
+  // swaps places with the first vertex of its bucket, which may be itself).
   for (int i = 0; i < n; ++i) {
-    const int v = d.order[static_cast<std::size_t>(i)];
-    const int cv = d.core[static_cast<std::size_t>(v)];
-    for (const int* p = g.begin(v); p != g.end(v); ++p) {
+    const int v = order[i];
+    const int cv = core[v];
+    for (const int* p = neighbors + offsets[v], *last = neighbors + offsets[v + 1]; p != last;
+         ++p) {
       const int u = *p;
-      auto& cu = d.core[static_cast<std::size_t>(u)];
-      if (cu > cv) {
-        const int pu = d.position[static_cast<std::size_t>(u)];
-        const int pw = bin[static_cast<std::size_t>(cu)];
-        const int w = d.order[static_cast<std::size_t>(pw)];
-        if (u != w) {
-          d.position[static_cast<std::size_t>(u)] = pw;
-          d.order[static_cast<std::size_t>(pu)] = w;
-          d.position[static_cast<std::size_t>(w)] = pu;
-          d.order[static_cast<std::size_t>(pw)] = u;
-        }
-        ++bin[static_cast<std::size_t>(cu)];
-        --cu;
-      }
+      const int cu = core[u];
+      if (cu <= cv) continue;
+      const int pu = position[u];
+      const int pw = bin[cu]++;
+      const int w = order[pw];
+      position[u] = pw;
+      order[pu] = w;
+      position[w] = pu;
+      order[pw] = u;
+      core[u] = cu - 1;
     }
   }
   for (int c : d.core) d.degeneracy = std::max(d.degeneracy, c);

@@ -8,13 +8,14 @@
 
 #include "pagor/graph/densest_clique.hpp"
 #include "pagor/graph/pyramid_graph.hpp"
+#include "util/big_buffers.hpp"
 
 namespace pagor::detail {
 
 /// Level l of a pyramid graph over all its vertices; neighbour lists sorted.
 struct LevelCsr {
   std::vector<std::int64_t> offsets;  // vertex v's neighbours are [offsets[v], offsets[v+1])
-  std::vector<int> neighbors;
+  UninitVector<int> neighbors;
 
   int size() const { return static_cast<int>(offsets.size()) - 1; }
   int degree(int v) const {
