@@ -8,14 +8,6 @@
 
 namespace pagor::detail {
 
-// The popcount instruction is not in the x86-64 baseline the project builds for; these loops get
-// a clone for CPUs that have it (chosen once at load time) and a portable one.
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
-#define PAGOR_POPCOUNT_CLONES __attribute__((target_clones("popcnt", "default")))
-#else
-#define PAGOR_POPCOUNT_CLONES
-#endif
-
 PAGOR_POPCOUNT_CLONES int count_and(const Word* a, const Word* b, int words) {
   int n = 0;
   for (int i = 0; i < words; ++i) n += __builtin_popcountll(a[i] & b[i]);

@@ -284,6 +284,13 @@ std::vector<int> larger_clique(const PyramidGraph& g, int level, std::vector<int
                                long max_nodes, bool& optimal, int* bound = nullptr,
                                Deadline deadline = kNoDeadline, bool* out_of_time = nullptr);
 
+/// larger_clique on the |best|-core already found: `keep` (sorted pyramid ids, empty when the
+/// core is) and the level's subgraph induced by it, in local ids.
+std::vector<int> larger_clique_in(const LevelCsr& core, const std::vector<int>& keep,
+                                  std::vector<int> best, long max_nodes, bool& optimal,
+                                  int* bound = nullptr, Deadline deadline = kNoDeadline,
+                                  bool* out_of_time = nullptr);
+
 struct SearchBudget;
 /// The exact solver on one level within `budget` (nodes and deadline, shared by the levels of a
 /// pyramid): the best clique found, whether it is proven maximum, the bound reached, and which

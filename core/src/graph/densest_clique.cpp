@@ -2,6 +2,7 @@
 
 #include "graph/bit_graph.hpp"
 #include "graph/clique_graph.hpp"
+#include "graph/dense_level.hpp"
 #include "graph/relaxation.hpp"
 
 #include <algorithm>
@@ -49,7 +50,8 @@ std::vector<double> indicator(int size, const std::vector<int>& clique) {
 // A lower bound on the level's clique number: the known clique (if it is one here) grown to a
 // maximal one, then greedy cliques from the highest degrees that are not in it (a cheap search
 // when the known clique is already large).
-std::vector<int> lower_bound(const detail::PyramidLevel& view, const std::vector<int>& deg,
+template <class Graph>
+std::vector<int> lower_bound(const Graph& view, const std::vector<int>& deg,
                              const std::vector<int>& known_clique, const CliqueParams& p,
                              detail::Marks& marks) {
   std::vector<int> lower;
@@ -69,14 +71,25 @@ bool proven_without_relaxation(const PyramidGraph& g, int level, const CliquePar
        static_cast<long>(g.edges_at_level[static_cast<std::size_t>(level)]) <
            p.prove_first_min_edges))
     return false;
-  const detail::PyramidLevel view{g, level};
   detail::Marks marks(g.vertices);
-  std::vector<int> lower =
-      lower_bound(view, detail::level_degrees(g, level), known_clique, p, marks);
   bool optimal = false;
   int bound = 0;
-  lower = detail::larger_clique(g, level, std::move(lower), p.cascade_check_nodes, optimal, &bound,
-                                deadline);
+  std::vector<int> lower;
+  if (detail::dense_level(g, level)) {
+    // The same steps on the level's bit rows (dense_level.hpp): the same clique, bound and proof.
+    const detail::BitGraph bits = detail::level_bits(g, level);
+    const std::vector<int> deg = detail::degrees(bits);
+    lower = lower_bound(bits, deg, known_clique, p, marks);
+    const std::vector<int> keep = detail::k_core(bits, deg, static_cast<int>(lower.size()));
+    lower = detail::larger_clique_in(
+        keep.empty() ? detail::LevelCsr{} : detail::level_csr(bits, keep, deg), keep,
+        std::move(lower), p.cascade_check_nodes, optimal, &bound, deadline);
+  } else {
+    const detail::PyramidLevel view{g, level};
+    lower = lower_bound(view, detail::level_degrees(g, level), known_clique, p, marks);
+    lower = detail::larger_clique(g, level, std::move(lower), p.cascade_check_nodes, optimal,
+                                  &bound, deadline);
+  }
   if (!optimal) return false;
   r.level = level;
   r.vertices = std::move(lower);

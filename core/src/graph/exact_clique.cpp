@@ -158,7 +158,7 @@ detail::BitGraph induced(const detail::BitGraph& b, const detail::Word* c, int s
 // The subproblem of local vertex i of `b` (as solve_subproblem, on bits): i's later neighbours
 // (the lower local ids), peeled to those with at least best - 1 neighbours among them, searched for
 // a clique of more than best - 1. Returns the clique with i (local ids), or empty.
-std::vector<int> solve_subproblem_bits(const detail::BitGraph& b, int i, int best,
+PAGOR_POPCOUNT_CLONES std::vector<int> solve_subproblem_bits(const detail::BitGraph& b, int i, int best,
                                        detail::SearchBudget& budget, bool& complete, int& bound,
                                        std::vector<detail::Word>& C) {
   using detail::Word;
@@ -175,7 +175,7 @@ std::vector<int> solve_subproblem_bits(const detail::BitGraph& b, int i, int bes
     for (int k = 0; k < span; ++k)
       for (Word x = c[k]; x; x &= x - 1) {
         const int a = k * 64 + __builtin_ctzll(x);
-        if (detail::count_and(b.row(a), c, span) < best - 1) {
+        if (detail::count_and_inline(b.row(a), c, span) < best - 1) {
           detail::clear_bit(c, a);
           --count;
           changed = true;
@@ -308,18 +308,30 @@ std::vector<int> search_from(const detail::LevelCsr& csr, const detail::CoreDeco
 std::vector<int> detail::larger_clique(const PyramidGraph& g, int level, std::vector<int> best,
                                        long max_nodes, bool& optimal, int* bound,
                                        Deadline deadline, bool* out_of_time) {
-  optimal = true;
-  if (bound) *bound = static_cast<int>(best.size());
-  std::sort(best.begin(), best.end());
-  if (g.vertices == 0) return best;
+  if (g.vertices == 0) {
+    optimal = true;
+    if (bound) *bound = static_cast<int>(best.size());
+    std::sort(best.begin(), best.end());
+    return best;
+  }
   // Every member of a larger clique has at least |best| neighbours in the |best|-core: the search
   // runs on that core alone (often empty on the sparse levels, which proves best maximum at once).
   const detail::PyramidLevel view{g, level};
   const std::vector<int> keep =
       detail::k_core(view, detail::level_degrees(g, level), static_cast<int>(best.size()),
                      [&](int v) { return view.row_length(v); });
+  return larger_clique_in(keep.empty() ? detail::LevelCsr{} : detail::level_csr(g, level, keep),
+                          keep, std::move(best), max_nodes, optimal, bound, deadline,
+                          out_of_time);
+}
+
+std::vector<int> detail::larger_clique_in(const LevelCsr& csr, const std::vector<int>& keep,
+                                          std::vector<int> best, long max_nodes, bool& optimal,
+                                          int* bound, Deadline deadline, bool* out_of_time) {
+  optimal = true;
+  if (bound) *bound = static_cast<int>(best.size());
+  std::sort(best.begin(), best.end());
   if (keep.empty()) return best;
-  const detail::LevelCsr csr = detail::level_csr(g, level, keep);
   detail::SearchBudget budget;
   budget.max_nodes = max_nodes > 0 ? max_nodes : -1;
   if (max_nodes <= 0) budget.out_of_nodes = true;  // no search: only the colouring's proof

@@ -1,0 +1,140 @@
+#include "graph/dense_level.hpp"
+
+#include <algorithm>
+
+namespace pagor::detail {
+
+bool dense_level(const PyramidGraph& g, int level) {
+  if (g.vertices <= 0 || g.vertices > kMaxLevelBits || level < 0 ||
+      static_cast<std::size_t>(level) >= g.edges_at_level.size())
+    return false;
+  const std::size_t words =
+      static_cast<std::size_t>(g.vertices) * static_cast<std::size_t>(words_for(g.vertices));
+  return words <= 2 * g.edges_at_level[static_cast<std::size_t>(level)];
+}
+
+BitGraph level_bits(const PyramidGraph& g, int level) {
+  BitGraph b(g.vertices);
+  const auto lv = static_cast<std::uint8_t>(level);
+  const std::uint8_t* lev = g.level.data();
+  const int* nb = g.neighbors.data();
+  for (int v = 0; v < g.vertices; ++v) {
+    Word* row = b.row(v);
+    const auto last = g.offsets[static_cast<std::size_t>(v) + 1];
+    for (auto e = g.offsets[static_cast<std::size_t>(v)]; e < last; ++e)  // branch-free
+      row[nb[e] >> 6] |= Word(lev[e] <= lv) << (nb[e] & 63);
+  }
+  return b;
+}
+
+PAGOR_POPCOUNT_CLONES std::vector<int> degrees(const BitGraph& g) {
+  std::vector<int> deg(static_cast<std::size_t>(g.size()));
+  for (int v = 0; v < g.size(); ++v) {
+    const Word* r = g.row(v);
+    int d = 0;
+    for (int k = 0; k < g.words(); ++k) d += __builtin_popcountll(r[k]);
+    deg[static_cast<std::size_t>(v)] = d;
+  }
+  return deg;
+}
+
+std::vector<int> extend_clique(const BitGraph& g, std::vector<int> clique,
+                               const std::vector<int>& priority, int min_priority, Marks&) {
+  if (clique.empty()) return clique;
+  const int w = g.words();
+  // Candidates: adjacent to every member (no row holds its own vertex, so no member is one).
+  std::vector<Word> cand(g.row(clique[0]), g.row(clique[0]) + w);
+  for (std::size_t i = 1; i < clique.size(); ++i) {
+    const Word* r = g.row(clique[i]);
+    for (int k = 0; k < w; ++k) cand[static_cast<std::size_t>(k)] &= r[k];
+  }
+  std::vector<int> order;
+  for_each_bit(cand.data(), w, [&](int v) {
+    if (priority[static_cast<std::size_t>(v)] >= min_priority) order.push_back(v);
+  });
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+    return priority[static_cast<std::size_t>(a)] > priority[static_cast<std::size_t>(b)];
+  });
+  // The best candidate still adjacent to every member taken so far joins, in that order.
+  for (int v : order) {
+    if (!test_bit(cand.data(), v)) continue;
+    clique.push_back(v);
+    const Word* r = g.row(v);
+    for (int k = 0; k < w; ++k) cand[static_cast<std::size_t>(k)] &= r[k];
+  }
+  std::sort(clique.begin(), clique.end());
+  return clique;
+}
+
+bool is_clique(const BitGraph& g, const std::vector<int>& vertices, Marks&) {
+  const int w = g.words();
+  std::vector<Word> members(static_cast<std::size_t>(w), 0);
+  for (int v : vertices) set_bit(members.data(), v);
+  for (int v : vertices) {
+    const Word* r = g.row(v);
+    for (int k = 0; k < w; ++k) {
+      Word missing = members[static_cast<std::size_t>(k)] & ~r[k];
+      if (k == (v >> 6)) missing &= ~(Word(1) << (v & 63));  // v itself
+      if (missing) return false;
+    }
+  }
+  return true;
+}
+
+std::vector<int> k_core(const BitGraph& g, std::vector<int> deg, int k) {
+  const int n = g.size(), w = g.words();
+  std::vector<Word> alive(static_cast<std::size_t>(w), 0);
+  std::vector<int> stack;
+  for (int v = 0; v < n; ++v) {
+    if (deg[static_cast<std::size_t>(v)] < k)
+      stack.push_back(v);
+    else
+      set_bit(alive.data(), v);
+  }
+  while (!stack.empty()) {
+    const int v = stack.back();
+    stack.pop_back();
+    const Word* r = g.row(v);
+    for (int t = 0; t < w; ++t)
+      for (Word x = r[t] & alive[static_cast<std::size_t>(t)]; x; x &= x - 1) {
+        const int u = t * 64 + __builtin_ctzll(x);
+        if (--deg[static_cast<std::size_t>(u)] < k) {
+          clear_bit(alive.data(), u);
+          stack.push_back(u);
+        }
+      }
+  }
+  std::vector<int> keep;
+  for_each_bit(alive.data(), w, [&](int v) { keep.push_back(v); });
+  return keep;
+}
+
+LevelCsr level_csr(const BitGraph& g, const std::vector<int>& keep,
+                   const std::vector<int>& degree) {
+  const int w = g.words();
+  std::vector<Word> mask(static_cast<std::size_t>(w), 0);
+  std::vector<int> local(static_cast<std::size_t>(g.size()), -1);
+  for (std::size_t i = 0; i < keep.size(); ++i) {
+    set_bit(mask.data(), keep[i]);
+    local[static_cast<std::size_t>(keep[i])] = static_cast<int>(i);
+  }
+  LevelCsr s;
+  s.offsets.assign(keep.size() + 1, 0);
+  std::size_t total = 0;  // room enough: each kept vertex's degree
+  for (int v : keep) total += static_cast<std::size_t>(degree[static_cast<std::size_t>(v)]);
+  s.neighbors.reserve(total);
+  hint_huge_pages(s.neighbors);
+  s.neighbors.resize(total);
+  std::size_t at = 0;
+  for (std::size_t i = 0; i < keep.size(); ++i) {
+    const Word* r = g.row(keep[i]);
+    for (int t = 0; t < w; ++t)
+      for (Word x = r[t] & mask[static_cast<std::size_t>(t)]; x; x &= x - 1)
+        s.neighbors[at++] = local[static_cast<std::size_t>(t * 64 + __builtin_ctzll(x))];
+    s.offsets[i + 1] = static_cast<std::int64_t>(at);
+  }
+  s.neighbors.resize(at);
+  return s;
+}
+
+}  // namespace pagor::detail

@@ -1,0 +1,81 @@
+// A dense level as bit rows (graph/dense_level.hpp) gives what the pyramid's own rows give.
+
+#include <catch2/catch.hpp>
+#include <random>
+
+#include "graph/dense_level.hpp"
+#include "pagor/graph/densest_clique.hpp"
+#include "support/clique_reference.hpp"
+
+using namespace pagor;
+
+TEST_CASE("a level's bit rows give the pyramid rows' degrees, greedy cliques, k-cores and cores") {
+  for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+    const int m = seed % 2 ? 150 : 300;
+    GraphParams params;
+    params.min_length = 0.0;
+    const PyramidGraph g = build_pyramid_graph(test::association(m, m / 10, seed), params);
+    std::mt19937_64 rng(seed);
+    for (int l = 0; l < g.levels(); ++l) {
+      INFO("seed " << seed << " level " << l);
+      const detail::BitGraph bits = detail::level_bits(g, l);
+      const std::vector<int> deg = detail::degrees(bits);
+      REQUIRE(deg == detail::level_degrees(g, l));
+      const detail::PyramidLevel view{g, l};
+      detail::Marks marks(g.vertices);
+      // Greedy cliques, and a clique grown from single vertices with and without a floor.
+      const std::vector<int> greedy = detail::greedy_clique(view, deg, 4, marks);
+      CHECK(detail::greedy_clique(bits, deg, 4, marks) == greedy);
+      CHECK(detail::is_clique(bits, greedy, marks));
+      for (int t = 0; t < 10; ++t) {
+        const int v = static_cast<int>(rng() % static_cast<std::uint64_t>(g.vertices));
+        for (int floor : {0, 3})
+          CHECK(detail::extend_clique(bits, {v}, deg, floor, marks) ==
+                detail::extend_clique(view, {v}, deg, floor, marks));
+      }
+      // A vertex outside the clique that misses one of its members makes it no clique.
+      for (int v = 0; v < g.vertices && greedy.size() >= 2; ++v) {
+        if (std::find(greedy.begin(), greedy.end(), v) != greedy.end()) continue;
+        std::vector<int> more = greedy;
+        more.push_back(v);
+        CHECK(detail::is_clique(bits, more, marks) == detail::is_clique(view, more, marks));
+      }
+      for (int k : {1, 3, static_cast<int>(greedy.size())}) {
+        const std::vector<int> keep =
+            detail::k_core(view, deg, k, [&](int v) { return view.row_length(v); });
+        CHECK(detail::k_core(bits, deg, k) == keep);
+        if (keep.empty()) continue;
+        const detail::LevelCsr a = detail::level_csr(g, l, keep), b = detail::level_csr(bits, keep, deg);
+        CHECK(a.offsets == b.offsets);
+        CHECK(std::vector<int>(a.neighbors.begin(), a.neighbors.end()) ==
+              std::vector<int>(b.neighbors.begin(), b.neighbors.end()));
+      }
+    }
+  }
+}
+
+TEST_CASE("levels proven on bit rows: the exact solver's clique sizes, proven, on dense levels") {
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    GraphParams params;
+    params.min_length = 0.0;
+    const PyramidGraph g = build_pyramid_graph(test::association(500, 50, seed), params);
+    CliqueParams p;
+    p.prove_first = true;
+    p.prove_first_min_edges = 0;  // every level
+    int dense = 0;
+    for (int l = 0; l < g.levels(); ++l) dense += detail::dense_level(g, l);
+    REQUIRE(dense >= 2);  // the test goes through the bit rows
+    for (CliqueSolver solver : {CliqueSolver::cascaded, CliqueSolver::independent}) {
+      p.solver = solver;
+      const std::vector<CliqueResult> got = solve_pyramid(g, p);
+      for (int l = 0; l < g.levels(); ++l) {
+        INFO("seed " << seed << " level " << l);
+        const CliqueResult exact = exact_max_clique(g, l, CliqueParams{});
+        REQUIRE(exact.optimal);
+        CHECK(got[static_cast<std::size_t>(l)].optimal);
+        CHECK(got[static_cast<std::size_t>(l)].vertices.size() == exact.vertices.size());
+        CHECK(is_clique(g, l, got[static_cast<std::size_t>(l)].vertices));
+      }
+    }
+  }
+}
