@@ -1,6 +1,7 @@
 // A dense level as bit rows (graph/dense_level.hpp) gives what the pyramid's own rows give.
 
 #include <catch2/catch.hpp>
+#include <algorithm>
 #include <random>
 
 #include "graph/dense_level.hpp"
@@ -16,9 +17,17 @@ TEST_CASE("a level's bit rows give the pyramid rows' degrees, greedy cliques, k-
     params.min_length = 0.0;
     const PyramidGraph g = build_pyramid_graph(test::association(m, m / 10, seed), params);
     std::mt19937_64 rng(seed);
+    // All levels from `first` on in one pass equal each level on its own.
+    const int first = static_cast<int>(seed % 3);
+    const std::vector<detail::BitGraph> all = detail::levels_bits(g, first);
+    REQUIRE(all.size() == static_cast<std::size_t>(g.levels()));
     for (int l = 0; l < g.levels(); ++l) {
       INFO("seed " << seed << " level " << l);
       const detail::BitGraph bits = detail::level_bits(g, l);
+      const detail::BitGraph& one_pass = all[static_cast<std::size_t>(l)];
+      REQUIRE(one_pass.size() == (l < first ? 0 : g.vertices));
+      for (int v = 0; v < one_pass.size(); ++v)
+        REQUIRE(std::equal(bits.row(v), bits.row(v) + bits.words(), one_pass.row(v)));
       const std::vector<int> deg = detail::degrees(bits);
       REQUIRE(deg == detail::level_degrees(g, l));
       const detail::PyramidLevel view{g, l};

@@ -27,6 +27,30 @@ BitGraph level_bits(const PyramidGraph& g, int level) {
   return b;
 }
 
+std::vector<BitGraph> levels_bits(const PyramidGraph& g, int first) {
+  const int levels = g.levels();
+  std::vector<BitGraph> out(static_cast<std::size_t>(std::max(levels, 0)));
+  if (first < 0 || first >= levels) return {};
+  for (int l = first; l < levels; ++l) out[static_cast<std::size_t>(l)] = BitGraph(g.vertices);
+  const std::uint8_t* lev = g.level.data();
+  const int* nb = g.neighbors.data();
+  for (int v = 0; v < g.vertices; ++v) {
+    Word* rows[GraphParams::kMaxLevels];
+    for (int l = first; l < levels; ++l) rows[l] = out[static_cast<std::size_t>(l)].row(v);
+    const auto last = g.offsets[static_cast<std::size_t>(v) + 1];
+    for (auto e = g.offsets[static_cast<std::size_t>(v)]; e < last; ++e)
+      set_bit(rows[std::max<int>(lev[e], first)], nb[e]);
+  }
+  const std::size_t words =
+      static_cast<std::size_t>(g.vertices) * static_cast<std::size_t>(words_for(g.vertices));
+  for (int l = first + 1; l < levels && words > 0; ++l) {
+    Word* to = out[static_cast<std::size_t>(l)].row(0);
+    const Word* from = out[static_cast<std::size_t>(l) - 1].row(0);
+    for (std::size_t k = 0; k < words; ++k) to[k] |= from[k];
+  }
+  return out;
+}
+
 PAGOR_POPCOUNT_CLONES std::vector<int> degrees(const BitGraph& g) {
   std::vector<int> deg(static_cast<std::size_t>(g.size()));
   for (int v = 0; v < g.size(); ++v) {

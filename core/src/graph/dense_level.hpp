@@ -20,6 +20,11 @@ constexpr int kMaxLevelBits = 8192;  // 8 MiB of bits
 /// Level `level` over all of g's vertices as bit rows (local vertex v is pyramid vertex v).
 BitGraph level_bits(const PyramidGraph& g, int level);
 
+/// Bit rows of the levels from `first` on, built in one pass over g's rows (each entry sets one
+/// bit, in the level it joins at, and each level is then or-ed into the next): entry l is level
+/// l's bit rows, empty for l < first. Empty when first is past the last level.
+std::vector<BitGraph> levels_bits(const PyramidGraph& g, int first);
+
 /// Every vertex's degree.
 std::vector<int> degrees(const BitGraph& g);
 

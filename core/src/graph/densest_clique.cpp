@@ -63,26 +63,35 @@ std::vector<int> lower_bound(const Graph& view, const std::vector<int>& deg,
 
 // prove_first: the lower bound's clique, when a bounded exact search proves it maximum (then the
 // relaxation cannot return a larger one); `r` is left untouched otherwise.
+// Whether prove_first runs on `level` of g.
+bool proves_first(const PyramidGraph& g, int level, const CliqueParams& p) {
+  return p.prove_first && g.affinity == AffinityKind::binary && g.vertices > 0 &&
+         !(static_cast<std::size_t>(level) < g.edges_at_level.size() &&
+           static_cast<long>(g.edges_at_level[static_cast<std::size_t>(level)]) <
+               p.prove_first_min_edges);
+}
+
+// `bits`, if given, holds the level's bit rows (from levels_bits).
 bool proven_without_relaxation(const PyramidGraph& g, int level, const CliqueParams& p,
                                const std::vector<int>& known_clique, double d0, CliqueResult& r,
-                               Deadline deadline) {
-  if (!p.prove_first || g.affinity != AffinityKind::binary || g.vertices == 0 ||
-      (static_cast<std::size_t>(level) < g.edges_at_level.size() &&
-       static_cast<long>(g.edges_at_level[static_cast<std::size_t>(level)]) <
-           p.prove_first_min_edges))
-    return false;
+                               Deadline deadline, const detail::BitGraph* bits) {
+  if (!proves_first(g, level, p)) return false;
   detail::Marks marks(g.vertices);
   bool optimal = false;
   int bound = 0;
   std::vector<int> lower;
-  if (detail::dense_level(g, level)) {
+  if (bits || detail::dense_level(g, level)) {
     // The same steps on the level's bit rows (dense_level.hpp): the same clique, bound and proof.
-    const detail::BitGraph bits = detail::level_bits(g, level);
-    const std::vector<int> deg = detail::degrees(bits);
-    lower = lower_bound(bits, deg, known_clique, p, marks);
-    const std::vector<int> keep = detail::k_core(bits, deg, static_cast<int>(lower.size()));
+    detail::BitGraph own;
+    if (!bits) {
+      own = detail::level_bits(g, level);
+      bits = &own;
+    }
+    const std::vector<int> deg = detail::degrees(*bits);
+    lower = lower_bound(*bits, deg, known_clique, p, marks);
+    const std::vector<int> keep = detail::k_core(*bits, deg, static_cast<int>(lower.size()));
     lower = detail::larger_clique_in(
-        keep.empty() ? detail::LevelCsr{} : detail::level_csr(bits, keep, deg), keep,
+        keep.empty() ? detail::LevelCsr{} : detail::level_csr(*bits, keep, deg), keep,
         std::move(lower), p.cascade_check_nodes, optimal, &bound, deadline);
   } else {
     const detail::PyramidLevel view{g, level};
@@ -168,12 +177,15 @@ CliqueResult relax_level(const PyramidGraph& g, int level, const std::vector<dou
 
 }  // namespace
 
-CliqueResult solve_clipper(const PyramidGraph& g, int level, const std::vector<double>& u0,
-                           const CliqueParams& p, const std::vector<int>& known_clique, double d0,
-                           Deadline deadline) {
+namespace {
+
+// solve_clipper, given the level's bit rows if solve_pyramid built them.
+CliqueResult solve_level(const PyramidGraph& g, int level, const std::vector<double>& u0,
+                         const CliqueParams& p, const std::vector<int>& known_clique, double d0,
+                         Deadline deadline, const detail::BitGraph* bits) {
   const auto t0 = Clock::now();
   CliqueResult r;
-  if (proven_without_relaxation(g, level, p, known_clique, d0, r, deadline)) {
+  if (proven_without_relaxation(g, level, p, known_clique, d0, r, deadline, bits)) {
     r.time_ms = ms_since(t0);
     return r;
   }
@@ -213,6 +225,14 @@ CliqueResult solve_clipper(const PyramidGraph& g, int level, const std::vector<d
   return r;
 }
 
+}  // namespace
+
+CliqueResult solve_clipper(const PyramidGraph& g, int level, const std::vector<double>& u0,
+                           const CliqueParams& p, const std::vector<int>& known_clique, double d0,
+                           Deadline deadline) {
+  return solve_level(g, level, u0, p, known_clique, d0, deadline, nullptr);
+}
+
 namespace {
 
 // A level started after the deadline: its lower bound only (the known clique grown, or greedy
@@ -245,6 +265,20 @@ std::vector<CliqueResult> solve_pyramid(const PyramidGraph& g, const CliqueParam
   // run until (l + 1) / levels of the time budget has passed (what a level leaves, the next gets).
   detail::SearchBudget budget;
   budget.max_nodes = p.exact_max_nodes;
+  // The dense levels that prove first get their bit rows from one pass over the pyramid's rows
+  // (the levels from the first such on: density and edges grow with the level).
+  std::vector<detail::BitGraph> bits;
+  if (p.solver != CliqueSolver::exact) {
+    int first = 0;
+    while (first < g.levels() && !(proves_first(g, first, p) && detail::dense_level(g, first)))
+      ++first;
+    bits = detail::levels_bits(g, first);
+  }
+  const auto bits_of = [&](int l) {
+    return static_cast<std::size_t>(l) < bits.size() && bits[static_cast<std::size_t>(l)].size() > 0
+               ? &bits[static_cast<std::size_t>(l)]
+               : nullptr;
+  };
   for (int l = 0; l < g.levels(); ++l) {
     if (deadline != kNoDeadline && Clock::now() > deadline) {
       // Past the pair's budget: each remaining level keeps its lower bound (levels nest, so the
@@ -265,16 +299,17 @@ std::vector<CliqueResult> solve_pyramid(const PyramidGraph& g, const CliqueParam
                                           l > 0 ? out.back().vertices : std::vector<int>{}));
         break;
       case CliqueSolver::independent:
-        out.push_back(solve_clipper(g, l, start, p, {}, 0.0, deadline));
+        out.push_back(solve_level(g, l, start, p, {}, 0.0, deadline, bits_of(l)));
         break;
       case CliqueSolver::cascaded:
         // Alg. 1: level l starts where level l-1 ended. Its edges are a subset of level l's, so its
         // clique is also a clique here: a lower bound for pruning.
         if (l == 0)
-          out.push_back(solve_clipper(g, l, start, p, {}, 0.0, deadline));
+          out.push_back(solve_level(g, l, start, p, {}, 0.0, deadline, bits_of(l)));
         else
-          out.push_back(solve_clipper(g, l, out.back().u, p, out.back().vertices,
-                                      p.warm_start_penalty * out.back().penalty, deadline));
+          out.push_back(solve_level(g, l, out.back().u, p, out.back().vertices,
+                                    p.warm_start_penalty * out.back().penalty, deadline,
+                                    bits_of(l)));
         break;
     }
   }

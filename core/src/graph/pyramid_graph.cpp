@@ -331,9 +331,9 @@ PyramidGraph build_pyramid_graph(const std::vector<Correspondence>& c, const Gra
   g.level.resize(directed);
   g.trim.resize(directed);
   std::vector<std::int64_t> fill(g.offsets.begin(), g.offsets.end() - 1);
-  // Edges arrive ordered by (i, j). Row v first receives its lower neighbours (as j, from rows
-  // i < v, in increasing i) and then its higher ones (as i, increasing j), so rows come out sorted
-  // when the (j, i) copies are placed in a first pass and the (i, j) copies in a second.
+  // Edges arrive ordered by (i, j): row v receives all its lower neighbours (as j, from rows i < v,
+  // in increasing i) before its higher ones (as i, in increasing j), so one pass placing both
+  // copies of each edge leaves every row sorted.
   auto place = [&](int row, int other, const Edge& e) {
     const auto k = static_cast<std::size_t>(fill[static_cast<std::size_t>(row)]++);
     g.neighbors[k] = other;
@@ -341,9 +341,10 @@ PyramidGraph build_pyramid_graph(const std::vector<Correspondence>& c, const Gra
     g.trim[k] = e.trim;
   };
   for (const auto& part : parts)
-    for (const Edge& e : part) place(e.j, e.i, e);
-  for (const auto& part : parts)
-    for (const Edge& e : part) place(e.i, e.j, e);
+    for (const Edge& e : part) {
+      place(e.j, e.i, e);
+      place(e.i, e.j, e);
+    }
   g.time_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   return g;
