@@ -160,7 +160,9 @@ detail::BitGraph induced(const detail::BitGraph& b, const detail::Word* c, int s
 // a clique of more than best - 1. Returns the clique with i (local ids), or empty.
 PAGOR_POPCOUNT_CLONES std::vector<int> solve_subproblem_bits(const detail::BitGraph& b, int i, int best,
                                        detail::SearchBudget& budget, bool& complete, int& bound,
-                                       std::vector<detail::Word>& C) {
+                                       std::vector<detail::Word>& C,
+                                       std::vector<detail::Word>& scratch_u,
+                                       std::vector<detail::Word>& scratch_q) {
   using detail::Word;
   if (i < best) return {};  // fewer later vertices than a larger clique needs
   const int span = i / 64 + 1;  // no later vertex beyond word i / 64
@@ -186,22 +188,26 @@ PAGOR_POPCOUNT_CLONES std::vector<int> solve_subproblem_bits(const detail::BitGr
   // A greedy colouring of the survivors with best - 1 colours proves that no best of them are
   // pairwise adjacent; most subproblems end here, before their graph is extracted.
   {
-    std::vector<Word> U(c, c + span), Q(static_cast<std::size_t>(span));
-    bool left = true;
-    for (int colours = 0; colours < best - 1 && left; ++colours) {
-      Q = U;
-      for (int k = 0; k < span; ++k)
-        while (Q[static_cast<std::size_t>(k)]) {
-          const int a = k * 64 + __builtin_ctzll(Q[static_cast<std::size_t>(k)]);
-          detail::clear_bit(U.data(), a);
+    // Uncoloured survivors in U (scratch: this runs once per subproblem, and allocating it was a
+    // twentieth of the clique step); the words below `lo` are empty.
+    Word* U = scratch_u.data();
+    Word* Q = scratch_q.data();
+    std::copy(c, c + span, U);
+    int remaining = count, lo = 0;
+    for (int colours = 0; colours < best - 1 && remaining > 0; ++colours) {
+      while (lo < span && !U[lo]) ++lo;
+      std::copy(U + lo, U + span, Q + lo);
+      for (int k = lo; k < span; ++k)
+        while (Q[k]) {
+          const int a = k * 64 + __builtin_ctzll(Q[k]);
+          detail::clear_bit(U, a);
+          --remaining;
           const Word* ra = b.row(a);
-          for (int t = k; t < span; ++t) Q[static_cast<std::size_t>(t)] &= ~ra[t];
-          detail::clear_bit(Q.data(), a);
+          for (int t = k; t < span; ++t) Q[t] &= ~ra[t];
+          detail::clear_bit(Q, a);
         }
-      left = false;
-      for (Word x : U) left = left || x;
     }
-    if (!left) return {};
+    if (remaining == 0) return {};
   }
   // The survivors as a small bit graph, in local order: highest core first, so that the vertices
   // coloured first get the low colours.
@@ -267,7 +273,7 @@ std::vector<int> search_from(const detail::LevelCsr& csr, const detail::CoreDeco
     ++first;
   if (csr.size() - first <= kMaxSuffixBits) {
     const detail::BitGraph s = suffix_bits(csr, cd, first);
-    std::vector<detail::Word> C(static_cast<std::size_t>(s.words()));
+    std::vector<detail::Word> C(static_cast<std::size_t>(s.words())), U(C.size()), Q(C.size());
     for (; i >= first && !budget.exhausted() && ((i & 15) != 0 || budget.in_time()); --i) {
       const int size = static_cast<int>(best.size());
       if (cd.core[static_cast<std::size_t>(cd.order[static_cast<std::size_t>(i)])] < size) {
@@ -275,7 +281,7 @@ std::vector<int> search_from(const detail::LevelCsr& csr, const detail::CoreDeco
         break;
       }
       std::vector<int> c =
-          solve_subproblem_bits(s, csr.size() - 1 - i, size, budget, optimal, bound, C);
+          solve_subproblem_bits(s, csr.size() - 1 - i, size, budget, optimal, bound, C, U, Q);
       if (c.size() > best.size()) {
         best.clear();
         for (int k : c) best.push_back(s.ids[static_cast<std::size_t>(k)]);
