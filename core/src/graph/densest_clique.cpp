@@ -61,8 +61,6 @@ std::vector<int> lower_bound(const Graph& view, const std::vector<int>& deg,
   return detail::greedy_clique(view, deg, p.greedy_starts, marks, std::move(lower));
 }
 
-// prove_first: the lower bound's clique, when a bounded exact search proves it maximum (then the
-// relaxation cannot return a larger one); `r` is left untouched otherwise.
 // Whether prove_first runs on `level` of g.
 bool proves_first(const PyramidGraph& g, int level, const CliqueParams& p) {
   return p.prove_first && g.affinity == AffinityKind::binary && g.vertices > 0 &&
@@ -71,7 +69,9 @@ bool proves_first(const PyramidGraph& g, int level, const CliqueParams& p) {
                p.prove_first_min_edges);
 }
 
-// `bits`, if given, holds the level's bit rows (from levels_bits).
+// prove_first: the lower bound's clique, when a bounded exact search proves it maximum (then the
+// relaxation cannot return a larger one); `r` is left untouched otherwise. `bits`, if given, holds
+// the level's bit rows (from levels_bits).
 bool proven_without_relaxation(const PyramidGraph& g, int level, const CliqueParams& p,
                                const std::vector<int>& known_clique, double d0, CliqueResult& r,
                                Deadline deadline, const detail::BitGraph* bits) {

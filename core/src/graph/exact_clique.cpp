@@ -314,14 +314,9 @@ std::vector<int> search_from(const detail::LevelCsr& csr, const detail::CoreDeco
 std::vector<int> detail::larger_clique(const PyramidGraph& g, int level, std::vector<int> best,
                                        long max_nodes, bool& optimal, int* bound,
                                        Deadline deadline, bool* out_of_time) {
-  if (g.vertices == 0) {
-    optimal = true;
-    if (bound) *bound = static_cast<int>(best.size());
-    std::sort(best.begin(), best.end());
-    return best;
-  }
   // Every member of a larger clique has at least |best| neighbours in the |best|-core: the search
-  // runs on that core alone (often empty on the sparse levels, which proves best maximum at once).
+  // runs on that core alone (often empty on the sparse levels, which proves best maximum at once;
+  // always empty on a graph without vertices).
   const detail::PyramidLevel view{g, level};
   const std::vector<int> keep =
       detail::k_core(view, detail::level_degrees(g, level), static_cast<int>(best.size()),
