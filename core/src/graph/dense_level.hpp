@@ -1,9 +1,9 @@
 #pragma once
 // Internal to the clique solvers: a dense level of the pyramid as bit rows over all its vertices,
 // for the steps before the exact search — degrees, the lower bound's greedy cliques, the k-core
-// peel and the core's CSR. On rows of hundreds of neighbours these intersect a word at a time,
-// where walking the pyramid's rows visits every entry and skips the higher levels' edges.
-// Each gives the same result as its counterpart in clique_graph.hpp.
+// peel — and the core the exact search then runs on. On rows of hundreds of neighbours these
+// intersect a word at a time, where walking the pyramid's rows visits every entry and skips the
+// higher levels' edges. Each gives the same result as its counterpart in clique_graph.hpp.
 
 #include <vector>
 
@@ -38,9 +38,43 @@ bool is_clique(const BitGraph& g, const std::vector<int>& vertices, Marks& marks
 /// The k-core's vertices, sorted, given every vertex's degree.
 std::vector<int> k_core(const BitGraph& g, std::vector<int> deg, int k);
 
-/// The subgraph induced by `keep` (sorted; local vertex i is keep[i]) as a CSR with sorted rows;
-/// `degree`: every vertex's degree in g.
-LevelCsr level_csr(const BitGraph& g, const std::vector<int>& keep,
-                   const std::vector<int>& degree);
+/// The subgraph of g induced by `keep` (sorted; local vertex i is keep[i]) read through g's rows:
+/// what level_csr(g's level, keep) holds, without building it. Neighbours come in increasing
+/// local id, as a CSR row lists them.
+class CoreView {
+ public:
+  CoreView(const BitGraph& g, const std::vector<int>& keep);
+  int size() const { return static_cast<int>(keep_.size()); }
+  int words() const { return g_.words(); }
+  /// v's row over all of g's vertices (pyramid ids), and the kept vertices as bits of such a row.
+  const Word* row(int v) const { return g_.row(id(v)); }
+  const std::vector<Word>& mask() const { return mask_; }
+  int id(int v) const { return keep_[static_cast<std::size_t>(v)]; }
+  int local(int pyramid_id) const { return local_[static_cast<std::size_t>(pyramid_id)]; }
+  int degree(int v) const { return count_and(row(v), mask_.data(), g_.words()); }
+  template <typename F>
+  void for_each_neighbor(int v, F&& f) const {
+    const Word* r = row(v);
+    for (int t = 0; t < g_.words(); ++t)
+      for (Word x = r[t] & mask_[static_cast<std::size_t>(t)]; x; x &= x - 1)
+        f(local_[static_cast<std::size_t>(t * 64 + __builtin_ctzll(x))]);
+  }
+
+ private:
+  const BitGraph& g_;
+  const std::vector<int>& keep_;
+  std::vector<Word> mask_;
+  std::vector<int> local_;  // pyramid id -> local id, -1 outside keep
+};
+
+/// core_decomposition (clique_graph.hpp) of the view: the same cores, order and positions as on
+/// its CSR. Each vertex's neighbours are taken from the rows of those not yet removed, a word at
+/// a time, so that an edge is visited once rather than from both ends.
+CoreDecomposition core_decomposition(const CoreView& g);
+
+/// larger_clique_in (clique_graph.hpp) on the view: the same clique, bound and proof.
+std::vector<int> larger_clique_in(const CoreView& core, std::vector<int> best, long max_nodes,
+                                  bool& optimal, int* bound = nullptr,
+                                  Deadline deadline = kNoDeadline, bool* out_of_time = nullptr);
 
 }  // namespace pagor::detail

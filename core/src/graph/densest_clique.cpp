@@ -90,9 +90,8 @@ bool proven_without_relaxation(const PyramidGraph& g, int level, const CliquePar
     const std::vector<int> deg = detail::degrees(*bits);
     lower = lower_bound(*bits, deg, known_clique, p, marks);
     const std::vector<int> keep = detail::k_core(*bits, deg, static_cast<int>(lower.size()));
-    lower = detail::larger_clique_in(
-        keep.empty() ? detail::LevelCsr{} : detail::level_csr(*bits, keep, deg), keep,
-        std::move(lower), p.cascade_check_nodes, optimal, &bound, deadline);
+    lower = detail::larger_clique_in(detail::CoreView(*bits, keep), std::move(lower),
+                                     p.cascade_check_nodes, optimal, &bound, deadline);
   } else {
     const detail::PyramidLevel view{g, level};
     lower = lower_bound(view, detail::level_degrees(g, level), known_clique, p, marks);
@@ -290,13 +289,13 @@ std::vector<CliqueResult> solve_pyramid(const PyramidGraph& g, const CliqueParam
       case CliqueSolver::exact:
         budget.deadline = deadline;
         if (p.exact_time_budget_ms > 0)
-          budget.deadline = std::min(
-              deadline, t0 + std::chrono::microseconds(static_cast<long>(
-                                 1000.0 * p.exact_time_budget_ms * (l + 1) / g.levels())));
+          budget.deadline =
+              std::min(deadline, t0 + std::chrono::microseconds(static_cast<long>(
+                                          1000.0 * p.exact_time_budget_ms * (l + 1) / g.levels())));
         budget.out_of_time = false;  // a level's share is its own
         // Level l-1's clique is a clique here too (levels nest): the search starts from it.
-        out.push_back(detail::exact_level(g, l, p, budget,
-                                          l > 0 ? out.back().vertices : std::vector<int>{}));
+        out.push_back(
+            detail::exact_level(g, l, p, budget, l > 0 ? out.back().vertices : std::vector<int>{}));
         break;
       case CliqueSolver::independent:
         out.push_back(solve_level(g, l, start, p, {}, 0.0, deadline, bits_of(l)));

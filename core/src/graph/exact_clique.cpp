@@ -11,12 +11,14 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
+#include <type_traits>
 #if defined(__x86_64__)
 #include <immintrin.h>
 #endif
 
 #include "graph/bit_graph.hpp"
 #include "graph/clique_graph.hpp"
+#include "graph/dense_level.hpp"
 #include "pagor/graph/densest_clique.hpp"
 
 namespace pagor {
@@ -88,8 +90,8 @@ std::vector<int> solve_subproblem(const detail::LevelCsr& g, const detail::CoreD
 // a time.
 constexpr int kMaxSuffixBits = 1 << 14;  // bit rows up to this many vertices (32 MB)
 
-detail::BitGraph suffix_bits(const detail::LevelCsr& g, const detail::CoreDecomposition& cd,
-                             int first) {
+template <typename Graph>  // detail::LevelCsr or detail::CoreView
+detail::BitGraph suffix_bits(const Graph& g, const detail::CoreDecomposition& cd, int first) {
   const int n = g.size() - first;
   detail::BitGraph b(n);
   b.ids.resize(static_cast<std::size_t>(n));  // local -> vertex
@@ -98,10 +100,10 @@ detail::BitGraph suffix_bits(const detail::LevelCsr& g, const detail::CoreDecomp
     const int v = cd.order[static_cast<std::size_t>(last - i)];
     b.ids[static_cast<std::size_t>(i)] = v;
     detail::Word* row = b.row(i);
-    for (const int* w = g.begin(v); w != g.end(v); ++w) {
-      const int j = last - cd.position[static_cast<std::size_t>(*w)];
+    g.for_each_neighbor(v, [&](int w) {
+      const int j = last - cd.position[static_cast<std::size_t>(w)];
       if (j < n) detail::set_bit(row, j);
-    }
+    });
   }
   return b;
 }
@@ -158,13 +160,14 @@ detail::BitGraph induced(const detail::BitGraph& b, const detail::Word* c, int s
 // The subproblem of local vertex i of `b` (as solve_subproblem, on bits): i's later neighbours
 // (the lower local ids), peeled to those with at least best - 1 neighbours among them, searched for
 // a clique of more than best - 1. Returns the clique with i (local ids), or empty.
-PAGOR_POPCOUNT_CLONES std::vector<int> solve_subproblem_bits(const detail::BitGraph& b, int i, int best,
-                                       detail::SearchBudget& budget, bool& complete, int& bound,
-                                       std::vector<detail::Word>& C,
-                                       std::vector<detail::Word>& scratch_u,
-                                       std::vector<detail::Word>& scratch_q) {
+PAGOR_POPCOUNT_CLONES std::vector<int> solve_subproblem_bits(const detail::BitGraph& b, int i,
+                                                             int best, detail::SearchBudget& budget,
+                                                             bool& complete, int& bound,
+                                                             std::vector<detail::Word>& C,
+                                                             std::vector<detail::Word>& scratch_u,
+                                                             std::vector<detail::Word>& scratch_q) {
   using detail::Word;
-  if (i < best) return {};  // fewer later vertices than a larger clique needs
+  if (i < best) return {};      // fewer later vertices than a larger clique needs
   const int span = i / 64 + 1;  // no later vertex beyond word i / 64
   const Word* r = b.row(i);
   Word* c = C.data();
@@ -217,7 +220,8 @@ PAGOR_POPCOUNT_CLONES std::vector<int> solve_subproblem_bits(const detail::BitGr
   const detail::BitGraph sub = induced(b, c, span, count);
   bool finished = true;
   int sub_bound = 0;
-  const std::vector<int> found = detail::max_clique_bits(sub, best - 1, budget, finished, sub_bound);
+  const std::vector<int> found =
+      detail::max_clique_bits(sub, best - 1, budget, finished, sub_bound);
   if (!finished) {
     complete = false;
     bound = std::max(bound, sub_bound + 1);
@@ -231,16 +235,18 @@ PAGOR_POPCOUNT_CLONES std::vector<int> solve_subproblem_bits(const detail::BitGr
 // Whether a greedy colouring of the vertices that could be in a clique larger than `size` (core
 // number at least `size`), taken from the end of the degeneracy order, needs no more than `size`
 // colours: then every clique among them has at most `size` vertices, and none is larger.
-bool colouring_proves(const detail::LevelCsr& g, const detail::CoreDecomposition& cd, int size) {
+template <typename Graph>
+bool colouring_proves(const Graph& g, const detail::CoreDecomposition& cd, int size) {
   const int n = g.size();
   std::vector<int> colour(static_cast<std::size_t>(n), -1),
       taken_by(static_cast<std::size_t>(n) + 1, -1);
   for (int i = n - 1; i >= 0; --i) {
     const int v = cd.order[static_cast<std::size_t>(i)];
     if (cd.core[static_cast<std::size_t>(v)] < size) continue;
-    for (const int* w = g.begin(v); w != g.end(v); ++w)
-      if (colour[static_cast<std::size_t>(*w)] >= 0)
-        taken_by[static_cast<std::size_t>(colour[static_cast<std::size_t>(*w)])] = v;
+    g.for_each_neighbor(v, [&](int w) {
+      if (colour[static_cast<std::size_t>(w)] >= 0)
+        taken_by[static_cast<std::size_t>(colour[static_cast<std::size_t>(w)])] = v;
+    });
     int c = 0;
     while (taken_by[static_cast<std::size_t>(c)] == v) ++c;
     if (c >= size) return false;  // a colour beyond `size`
@@ -253,7 +259,10 @@ bool colouring_proves(const detail::LevelCsr& g, const detail::CoreDecomposition
 // one, from the end of the degeneracy order (the densest part first, where large cliques are).
 // When the budget runs out, `optimal` is false and `bound` an upper bound on the clique number:
 // the largest bound of an interrupted subproblem or core number + 1 of a vertex not searched.
-std::vector<int> search_from(const detail::LevelCsr& csr, const detail::CoreDecomposition& cd,
+// Graph: a detail::LevelCsr, or a detail::CoreView (at most kMaxLevelBits vertices: always on
+// bits).
+template <typename Graph>
+std::vector<int> search_from(const Graph& csr, const detail::CoreDecomposition& cd,
                              std::vector<int> best, detail::SearchBudget& budget, bool& optimal,
                              int& bound) {
   optimal = true;
@@ -271,7 +280,8 @@ std::vector<int> search_from(const detail::LevelCsr& csr, const detail::CoreDeco
          cd.core[static_cast<std::size_t>(cd.order[static_cast<std::size_t>(first)])] <
              static_cast<int>(best.size()))
     ++first;
-  if (csr.size() - first <= kMaxSuffixBits) {
+  static_assert(detail::kMaxLevelBits <= kMaxSuffixBits, "a CoreView's suffix fits in bits");
+  if (!std::is_same_v<Graph, detail::LevelCsr> || csr.size() - first <= kMaxSuffixBits) {
     const detail::BitGraph s = suffix_bits(csr, cd, first);
     std::vector<detail::Word> C(static_cast<std::size_t>(s.words())), U(C.size()), Q(C.size());
     for (; i >= first && !budget.exhausted() && ((i & 15) != 0 || budget.in_time()); --i) {
@@ -287,7 +297,7 @@ std::vector<int> search_from(const detail::LevelCsr& csr, const detail::CoreDeco
         for (int k : c) best.push_back(s.ids[static_cast<std::size_t>(k)]);
       }
     }
-  } else {
+  } else if constexpr (std::is_same_v<Graph, detail::LevelCsr>) {
     std::vector<int> local(static_cast<std::size_t>(csr.size()), -1);
     for (; i >= 0 && !budget.exhausted(); --i) {
       const int v = cd.order[static_cast<std::size_t>(i)];
@@ -312,8 +322,8 @@ std::vector<int> search_from(const detail::LevelCsr& csr, const detail::CoreDeco
 }  // namespace
 
 std::vector<int> detail::larger_clique(const PyramidGraph& g, int level, std::vector<int> best,
-                                       long max_nodes, bool& optimal, int* bound,
-                                       Deadline deadline, bool* out_of_time) {
+                                       long max_nodes, bool& optimal, int* bound, Deadline deadline,
+                                       bool* out_of_time) {
   // Every member of a larger clique has at least |best| neighbours in the |best|-core: the search
   // runs on that core alone (often empty on the sparse levels, which proves best maximum at once;
   // always empty on a graph without vertices).
@@ -322,17 +332,19 @@ std::vector<int> detail::larger_clique(const PyramidGraph& g, int level, std::ve
       detail::k_core(view, detail::level_degrees(g, level), static_cast<int>(best.size()),
                      [&](int v) { return view.row_length(v); });
   return larger_clique_in(keep.empty() ? detail::LevelCsr{} : detail::level_csr(g, level, keep),
-                          keep, std::move(best), max_nodes, optimal, bound, deadline,
-                          out_of_time);
+                          keep, std::move(best), max_nodes, optimal, bound, deadline, out_of_time);
 }
 
-std::vector<int> detail::larger_clique_in(const LevelCsr& csr, const std::vector<int>& keep,
-                                          std::vector<int> best, long max_nodes, bool& optimal,
-                                          int* bound, Deadline deadline, bool* out_of_time) {
+namespace {
+
+// larger_clique_in's search, on either form of the core (`ids`: local -> pyramid id).
+template <typename Graph, typename Ids>
+std::vector<int> search_core(const Graph& core, Ids ids, std::vector<int> best, long max_nodes,
+                             bool& optimal, int* bound, Deadline deadline, bool* out_of_time) {
   optimal = true;
   if (bound) *bound = static_cast<int>(best.size());
   std::sort(best.begin(), best.end());
-  if (keep.empty()) return best;
+  if (core.size() <= 0) return best;  // an empty core (a default LevelCsr has size -1)
   detail::SearchBudget budget;
   budget.max_nodes = max_nodes > 0 ? max_nodes : -1;
   if (max_nodes <= 0) budget.out_of_nodes = true;  // no search: only the colouring's proof
@@ -341,13 +353,31 @@ std::vector<int> detail::larger_clique_in(const LevelCsr& csr, const std::vector
   // search_from only reads best's size; what it returns is best itself or a larger clique in the
   // core's local ids.
   std::vector<int> found =
-      search_from(csr, detail::core_decomposition(csr), best, budget, optimal, reached);
+      search_from(core, detail::core_decomposition(core), best, budget, optimal, reached);
   if (bound) *bound = reached;
   if (out_of_time) *out_of_time = budget.out_of_time;
   if (found.size() <= best.size()) return best;
-  for (int& v : found) v = keep[static_cast<std::size_t>(v)];
+  for (int& v : found) v = ids(v);
   std::sort(found.begin(), found.end());
   return found;
+}
+
+}  // namespace
+
+std::vector<int> detail::larger_clique_in(const LevelCsr& csr, const std::vector<int>& keep,
+                                          std::vector<int> best, long max_nodes, bool& optimal,
+                                          int* bound, Deadline deadline, bool* out_of_time) {
+  return search_core(
+      csr, [&](int v) { return keep[static_cast<std::size_t>(v)]; }, std::move(best), max_nodes,
+      optimal, bound, deadline, out_of_time);
+}
+
+std::vector<int> detail::larger_clique_in(const CoreView& core, std::vector<int> best,
+                                          long max_nodes, bool& optimal, int* bound,
+                                          Deadline deadline, bool* out_of_time) {
+  return search_core(
+      core, [&](int v) { return core.id(v); }, std::move(best), max_nodes, optimal, bound, deadline,
+      out_of_time);
 }
 
 CliqueResult detail::exact_level(const PyramidGraph& g, int level, const CliqueParams& p,
