@@ -340,11 +340,17 @@ PyramidGraph build_pyramid_graph(const std::vector<Correspondence>& c, const Gra
   // Edges arrive ordered by (i, j): row v receives all its lower neighbours (as j, from rows i < v,
   // in increasing i) before its higher ones (as i, in increasing j), so one pass placing both
   // copies of each edge leaves every row sorted.
+  // Raw pointers: through the vectors, each one-byte level store (which may alias anything) made
+  // the loop reload every vector's data pointer.
+  std::int64_t* const next = fill.data();
+  int* const neighbors = g.neighbors.data();
+  auto* const levels = g.level.data();
+  auto* const trims = g.trim.data();
   auto place = [&](int row, int other, const Edge& e) {
-    const auto k = static_cast<std::size_t>(fill[static_cast<std::size_t>(row)]++);
-    g.neighbors[k] = other;
-    g.level[k] = e.level;
-    g.trim[k] = e.trim;
+    const auto k = static_cast<std::size_t>(next[row]++);
+    neighbors[k] = other;
+    levels[k] = e.level;
+    trims[k] = e.trim;
   };
   for (const auto& part : parts)
     for (const Edge& e : part) {
