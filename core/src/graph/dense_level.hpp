@@ -40,7 +40,7 @@ std::vector<int> k_core(const BitGraph& g, std::vector<int> deg, int k);
 
 /// The subgraph of g induced by `keep` (sorted; local vertex i is keep[i]) read through g's rows:
 /// what level_csr(g's level, keep) holds, without building it. Neighbours come in increasing
-/// local id, as a CSR row lists them.
+/// local id, as a CSR row lists them. It refers to g and keep, which must outlive it.
 class CoreView {
  public:
   CoreView(const BitGraph& g, const std::vector<int>& keep);
