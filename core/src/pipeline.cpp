@@ -215,11 +215,11 @@ void Pipeline::run_stage(Stage stage) {
       run_correspondences();
       break;
     case Stage::graph:
-      graph_ = build_pyramid_graph(correspondences_.items, config_.graph, threads_);
+      graph_.build(correspondences_.items, config_.graph, threads_);
       break;
     case Stage::clique: {
       const Deadline deadline = clique_deadline();
-      cliques_ = solve_pyramid(graph_, config_.clique, deadline);
+      cliques_ = solve_pyramid(graph_.graph(), config_.clique, deadline);
       // A level cut short by time after the pair's deadline (not by the exact solver's own share).
       pair_budget_hit_ = false;
       if (deadline != kNoDeadline && std::chrono::steady_clock::now() > deadline)

@@ -90,6 +90,49 @@ TEST_CASE("threads give the same graph") {
   CHECK(one.neighbors == three.neighbors);
 }
 
+TEST_CASE("a builder reusing its storage gives the graphs of fresh builds, whatever came before") {
+  // Larger, smaller, empty, then larger again; threads and TRIM kinds change between builds, so
+  // the kept arrays and scratch are both longer and shorter than the next graph needs.
+  struct Step {
+    int m;
+    std::uint64_t seed;
+    int threads;
+    TrimKind trim;
+  };
+  const Step steps[] = {{700, 1, 1, TrimKind::ratio},      {300, 2, 2, TrimKind::difference},
+                        {0, 3, 1, TrimKind::ratio},        {900, 4, 3, TrimKind::ratio},
+                        {600, 5, 1, TrimKind::difference}, {900, 4, 1, TrimKind::ratio}};
+  PyramidGraphBuilder builder;
+  CHECK(builder.graph().vertices == 0);
+  const PyramidGraph& kept = builder.graph();
+  for (const Step& s : steps) {
+    const auto c = random_correspondences(s.m, s.seed);
+    GraphParams p;
+    p.trim = s.trim;
+    if (s.trim == TrimKind::difference) p.thresholds = {0.1, 0.3, 1.0};
+    const PyramidGraph fresh = build_pyramid_graph(c, p, 1);
+    const PyramidGraph& built = builder.build(c, p, s.threads);
+    CAPTURE(s.m, s.threads);
+    CHECK(&built == &kept);  // the same object, rebuilt
+    CHECK(built.vertices == s.m);
+    CHECK(built.thresholds == p.thresholds);
+    CHECK(built.offsets == fresh.offsets);
+    CHECK(built.neighbors == fresh.neighbors);
+    CHECK(built.level == fresh.level);
+    CHECK(built.trim == fresh.trim);
+    CHECK(built.edges_at_level == fresh.edges_at_level);
+    if (s.m > 0) CHECK(built.edges_at_level.back() > 0);
+  }
+  // A copy has the graph; a moved-from builder builds again.
+  PyramidGraphBuilder copy = builder;
+  CHECK(copy.graph().neighbors == builder.graph().neighbors);
+  PyramidGraphBuilder moved = std::move(builder);
+  const auto c = random_correspondences(200, 9);
+  builder.build(c, GraphParams{});  // NOLINT(bugprone-use-after-move): rebuilt on purpose
+  CHECK(builder.graph().neighbors == build_pyramid_graph(c, GraphParams{}).neighbors);
+  CHECK(moved.graph().vertices == 900);
+}
+
 TEST_CASE("gaussian affinities fall with the TRIM and vanish above the level") {
   std::vector<Correspondence> c(3);
   c[0] = {0, 0, 0, {0, 0, 0}, {0, 0, 0}, 1};

@@ -108,7 +108,7 @@ class Pipeline {
   const LandmarkSet& source_landmarks() const { return source_landmarks_; }
   const LandmarkSet& target_landmarks() const { return target_landmarks_; }
   const CorrespondenceSet& correspondences() const { return correspondences_; }
-  const PyramidGraph& graph() const { return graph_; }
+  const PyramidGraph& graph() const { return graph_.graph(); }
   const std::vector<CliqueResult>& cliques() const { return cliques_; }
   const std::vector<PoseEstimate>& poses() const { return poses_; }
   const Verifier* verifier() const { return verifier_ ? &*verifier_ : nullptr; }
@@ -176,7 +176,7 @@ class Pipeline {
 
   LandmarkSet source_landmarks_, target_landmarks_;
   CorrespondenceSet correspondences_;
-  PyramidGraph graph_;
+  PyramidGraphBuilder graph_;  // keeps its storage from pair to pair
   std::vector<CliqueResult> cliques_;
   std::vector<PoseEstimate> poses_;
   std::optional<std::pair<GroundPlane, GroundPlane>> ground_;  // of the clouds, when needed

@@ -264,10 +264,20 @@ std::size_t PyramidGraph::active_vertices(int l) const {
   return n;
 }
 
-PyramidGraph build_pyramid_graph(const std::vector<Correspondence>& c, const GraphParams& params,
-                                 int threads) {
+namespace {
+
+// What a build needs besides the graph, kept by PyramidGraphBuilder between builds.
+struct GraphScratch {
+  std::vector<detail::UninitVector<Edge>> parts;  // edges (i, j), i < j, of each thread's rows
+  detail::UninitVector<Edge> sample;              // edges of the rows that estimate the room
+  std::vector<std::int64_t> fill;                 // next free place in each row
+};
+
+// Builds `g` in place: its arrays (and the scratch) keep their storage, so a build no larger than
+// the last allocates nothing, and resizing them zeroes only what grows.
+void build_into(const std::vector<Correspondence>& c, const GraphParams& params, int threads,
+                PyramidGraph& g, GraphScratch& scratch) {
   const auto t0 = std::chrono::steady_clock::now();
-  PyramidGraph g;
   g.vertices = static_cast<int>(c.size());
   g.thresholds = params.thresholds;
   g.affinity = params.affinity;
@@ -278,7 +288,9 @@ PyramidGraph build_pyramid_graph(const std::vector<Correspondence>& c, const Gra
   // Rows are split so that each thread gets about the same number of pairs.
   const int m = g.vertices;
   threads = std::max(1, std::min(threads, m / 256 + 1));  // a thread pays off from ~30k pairs on
-  std::vector<detail::UninitVector<Edge>> parts(static_cast<std::size_t>(threads));
+  std::vector<detail::UninitVector<Edge>>& parts = scratch.parts;
+  parts.resize(static_cast<std::size_t>(threads));
+  for (auto& part : parts) part.clear();
   std::vector<int> bounds{0};
   const double pairs = 0.5 * m * (m - 1.0);
   for (int t = 1; t < threads; ++t) {
@@ -292,7 +304,8 @@ PyramidGraph build_pyramid_graph(const std::vector<Correspondence>& c, const Gra
   // Room for the edges, estimated on a sample of rows (growing the lists copies them; small
   // graphs grow cheaply, and the sample would cost more than it saves).
   if (m >= 512) {
-    detail::UninitVector<Edge> sample;
+    detail::UninitVector<Edge>& sample = scratch.sample;
+    sample.clear();
     const int step = std::max(1, m / 32);
     double sampled_pairs = 0;
     for (int i = 0; i < m; i += step) {
@@ -302,8 +315,13 @@ PyramidGraph build_pyramid_graph(const std::vector<Correspondence>& c, const Gra
     const double fraction = sampled_pairs > 0 ? double(sample.size()) / sampled_pairs : 0.0;
     for (int t = 0; t < threads; ++t) {
       const double rows_pairs = (bounds[t + 1] - bounds[t]) * (m - 0.5 * (bounds[t] + bounds[t + 1]));
-      parts[static_cast<std::size_t>(t)].reserve(static_cast<std::size_t>(1.2 * fraction * rows_pairs) + 16);
-      detail::hint_huge_pages(parts[static_cast<std::size_t>(t)]);
+      auto& part = parts[static_cast<std::size_t>(t)];
+      const auto room = static_cast<std::size_t>(1.2 * fraction * rows_pairs) + 16;
+      if (part.capacity() < room) {
+        part = {};  // a fresh block, not a copy of the old one
+        part.reserve(room);
+        detail::hint_huge_pages(part);
+      }
     }
   }
   if (threads == 1) {
@@ -327,16 +345,20 @@ PyramidGraph build_pyramid_graph(const std::vector<Correspondence>& c, const Gra
     g.edges_at_level[l] += g.edges_at_level[l - 1];
   for (std::size_t v = 0; v < c.size(); ++v) g.offsets[v + 1] += g.offsets[v];
   const std::size_t directed = static_cast<std::size_t>(g.offsets.back());
-  g.neighbors.reserve(directed);
-  g.level.reserve(directed);
-  g.trim.reserve(directed);
-  detail::hint_huge_pages(g.neighbors);
-  detail::hint_huge_pages(g.level);
-  detail::hint_huge_pages(g.trim);
-  g.neighbors.resize(directed);
-  g.level.resize(directed);
-  g.trim.resize(directed);
-  std::vector<std::int64_t> fill(g.offsets.begin(), g.offsets.end() - 1);
+  // Every place is written below; storage kept from an earlier build is not zeroed again.
+  const auto room = [directed](auto& v) {
+    if (v.capacity() < directed) {
+      v = {};
+      v.reserve(directed);
+      detail::hint_huge_pages(v);
+    }
+    v.resize(directed);
+  };
+  room(g.neighbors);
+  room(g.level);
+  room(g.trim);
+  std::vector<std::int64_t>& fill = scratch.fill;
+  fill.assign(g.offsets.begin(), g.offsets.end() - 1);
   // Edges arrive ordered by (i, j): row v receives all its lower neighbours (as j, from rows i < v,
   // in increasing i) before its higher ones (as i, in increasing j), so one pass placing both
   // copies of each edge leaves every row sorted.
@@ -359,7 +381,36 @@ PyramidGraph build_pyramid_graph(const std::vector<Correspondence>& c, const Gra
     }
   g.time_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+}  // namespace
+
+struct PyramidGraphBuilder::Scratch : GraphScratch {};
+
+PyramidGraph build_pyramid_graph(const std::vector<Correspondence>& c, const GraphParams& params,
+                                 int threads) {
+  PyramidGraph g;
+  GraphScratch scratch;
+  build_into(c, params, threads, g, scratch);
   return g;
+}
+
+PyramidGraphBuilder::PyramidGraphBuilder() : scratch_(std::make_unique<Scratch>()) {}
+PyramidGraphBuilder::~PyramidGraphBuilder() = default;
+PyramidGraphBuilder::PyramidGraphBuilder(const PyramidGraphBuilder& other)
+    : scratch_(std::make_unique<Scratch>()), graph_(other.graph_) {}
+PyramidGraphBuilder& PyramidGraphBuilder::operator=(const PyramidGraphBuilder& other) {
+  graph_ = other.graph_;
+  return *this;
+}
+PyramidGraphBuilder::PyramidGraphBuilder(PyramidGraphBuilder&&) noexcept = default;
+PyramidGraphBuilder& PyramidGraphBuilder::operator=(PyramidGraphBuilder&&) noexcept = default;
+
+const PyramidGraph& PyramidGraphBuilder::build(const std::vector<Correspondence>& c,
+                                               const GraphParams& params, int threads) {
+  if (!scratch_) scratch_ = std::make_unique<Scratch>();  // moved from
+  build_into(c, params, threads, graph_, *scratch_);
+  return graph_;
 }
 
 }  // namespace pagor
