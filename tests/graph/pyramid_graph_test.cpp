@@ -21,8 +21,7 @@ std::vector<Correspondence> random_correspondences(int m, std::uint64_t seed) {
     x.p = draw3(coord, rng);
     x.p.z() *= 0.1;
     // Half of them consistent with a pure translation, so every level has edges.
-    x.q = (x.source % 2 == 0) ? x.p + Eigen::Vector3d(5, 1, 0)
-                              : draw_on_plane(coord, rng, 0.0);
+    x.q = (x.source % 2 == 0) ? x.p + Eigen::Vector3d(5, 1, 0) : draw_on_plane(coord, rng, 0.0);
   }
   return c;
 }

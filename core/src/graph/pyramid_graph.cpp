@@ -19,10 +19,20 @@
 namespace pagor {
 namespace {
 
+// Edge (i, j), i < j, kept in row i's run of its pass: row i is known from where the run starts.
 struct Edge {
-  int i, j;
+  int j;
   float trim;
   std::uint8_t level;
+};
+
+// One thread's share of the edge pass: the edges (i, j), i < j, of rows [first, first + rows), in
+// (i, j) order, where each row's run starts, and how many edges each vertex gets as the higher end.
+struct EdgeRows {
+  detail::UninitVector<Edge> edges;
+  std::vector<std::size_t> starts;  // row first + r's edges are [starts[r], starts[r + 1])
+  std::vector<int> lower;           // per vertex v: edges (i, v), i < v, in these rows
+  int first = 0;
 };
 
 // Coordinates and ids in flat arrays, read in the hot loop: exact (double) and, for a first
@@ -63,8 +73,7 @@ struct Packed {
 };
 
 // The exact test of pair (i, j), i < j: appends the edge when it is consistent at some level.
-inline void exact_pair(const Packed& c, const GraphParams& params, int i, int j,
-                       detail::UninitVector<Edge>& out) {
+inline void exact_pair(const Packed& c, const GraphParams& params, int i, int j, EdgeRows& out) {
   const auto si = static_cast<std::size_t>(i), sj = static_cast<std::size_t>(j);
   const double dpx = c.px[si] - c.px[sj], dpy = c.py[si] - c.py[sj], dpz = c.pz[si] - c.pz[sj];
   const double dqx = c.qx[si] - c.qx[sj], dqy = c.qy[si] - c.qy[sj], dqz = c.qz[si] - c.qz[sj];
@@ -72,12 +81,14 @@ inline void exact_pair(const Packed& c, const GraphParams& params, int i, int j,
   const double b2 = dqx * dqx + dqy * dqy + dqz * dqz;
   const double min_sq = params.min_length * params.min_length;
   if (a2 < min_sq || b2 < min_sq) return;
-  if (c.source[si] == c.source[sj] || c.target[si] == c.target[sj]) return;  // one landmark, two roles
+  if (c.source[si] == c.source[sj] || c.target[si] == c.target[sj])
+    return;  // one landmark, two roles
   const auto& eps = params.thresholds;
   const double tv = trim_value(params.trim, std::sqrt(a2), std::sqrt(b2));
   if (!(tv <= eps.back())) return;
   const auto level = std::lower_bound(eps.begin(), eps.end(), tv) - eps.begin();
-  out.push_back({i, j, static_cast<float>(tv), static_cast<std::uint8_t>(level)});
+  out.edges.push_back({j, static_cast<float>(tv), static_cast<std::uint8_t>(level)});
+  ++out.lower[sj];
 }
 
 constexpr int kBlock = 256;  // pairs tested at once by the single-precision pass
@@ -86,9 +97,8 @@ constexpr int kBlock = 256;  // pairs tested at once by the single-precision pas
 // written to `keep`; returns how many. Its margins are far wider than single precision's error on
 // centred coordinates, so that every pair the exact test accepts passes (the exact test decides).
 // Compiled for AVX2 too where the CPU has it.
-PAGOR_AVX2_CLONES int prefilter(
-    const Packed& c, int i, int j0, int n, bool ratio, float min_sq, float ratio_sq, float ratio_slack,
-    float diff, int* keep) {
+PAGOR_AVX2_CLONES int prefilter(const Packed& c, int i, int j0, int n, bool ratio, float min_sq,
+                                float ratio_sq, float ratio_slack, float diff, int* keep) {
   const auto si = static_cast<std::size_t>(i);
   const float pxi = c.fx[0][si], pyi = c.fx[1][si], pzi = c.fx[2][si];
   const float qxi = c.fx[3][si], qyi = c.fx[4][si], qzi = c.fx[5][si];
@@ -116,8 +126,8 @@ PAGOR_AVX2_CLONES int prefilter(
       const float a2 = dpx * dpx + dpy * dpy + dpz * dpz;
       const float b2 = dqx * dqx + dqy * dqy + dqz * dqz;
       const float lo = a2 < b2 ? a2 : b2, hi = a2 < b2 ? b2 : a2;
-      pass[t] = static_cast<unsigned char>((lo >= min_sq) &
-                                           (std::sqrt(hi) - std::sqrt(lo) <= diff));
+      pass[t] =
+          static_cast<unsigned char>((lo >= min_sq) & (std::sqrt(hi) - std::sqrt(lo) <= diff));
     }
   }
   int k = 0;
@@ -131,9 +141,8 @@ PAGOR_AVX2_CLONES int prefilter(
 // The exact test of pairs (i, keep[t]), t < k, as exact_pair does it to the last bit, in two
 // passes: the lengths, TRIM values and levels side by side (vectorised, with AVX2 where the CPU
 // has it), then the edges appended.
-PAGOR_AVX2_CLONES void exact_block(
-    const Packed& c, const GraphParams& params, int i, const int* keep, int k,
-    detail::UninitVector<Edge>& out) {
+PAGOR_AVX2_CLONES void exact_block(const Packed& c, const GraphParams& params, int i,
+                                   const int* keep, int k, EdgeRows& rows) {
   const auto si = static_cast<std::size_t>(i);
   const double pxi = c.px[si], pyi = c.py[si], pzi = c.pz[si];
   const double qxi = c.qx[si], qyi = c.qy[si], qzi = c.qz[si];
@@ -186,6 +195,8 @@ PAGOR_AVX2_CLONES void exact_block(
   const int s = c.source[si], tg = c.target[si];
   // Room for the whole block (left uninitialised: zeroing it was a fifth of the graph's time on
   // m = 5000), written in place, then cut to the edges kept.
+  auto& out = rows.edges;
+  int* const lower = rows.lower.data();
   const std::size_t base = out.size();
   out.resize(base + static_cast<std::size_t>(k));
   Edge* e = out.data() + base;
@@ -195,16 +206,17 @@ PAGOR_AVX2_CLONES void exact_block(
     const int j = keep[t];
     const auto sj = static_cast<std::size_t>(j);
     if (s == c.source[sj] || tg == c.target[sj]) continue;  // one landmark, two roles
-    e[kept++] = {i, j, static_cast<float>(tv[t]), lvl[t]};
+    e[kept++] = {j, static_cast<float>(tv[t]), lvl[t]};
+    ++lower[sj];
   }
   out.resize(base + static_cast<std::size_t>(kept));
 }
 
-// Edges (i, j), i < j, for i in [begin, end), in increasing (i, j) order. A single-precision pass
-// over blocks of pairs rejects most of them; the exact test runs on the rest (all pairs when the
+// Appends the edges (i, j), i < j, for i in [begin, end), in increasing (i, j) order, to `out`
+// (whose `lower` has room for every vertex), with each row's start. A single-precision pass over
+// blocks of pairs rejects most pairs; the exact test runs on the rest (all pairs when the
 // coordinates are too far from their centre for single precision to be safe).
-void collect_edges(const Packed& c, const GraphParams& params, int begin, int end,
-                   detail::UninitVector<Edge>& out) {
+void collect_edges(const Packed& c, const GraphParams& params, int begin, int end, EdgeRows& out) {
   const double largest = params.thresholds.back();
   const bool ratio = params.trim == TrimKind::ratio;
   const int m = static_cast<int>(c.px.size());
@@ -224,6 +236,7 @@ void collect_edges(const Packed& c, const GraphParams& params, int begin, int en
   const float diff = static_cast<float>(largest + 2 * delta + 1e-6 * longest);
   int keep[kBlock];
   for (int i = begin; i < end; ++i) {
+    out.starts.push_back(out.edges.size());
     if (!fast) {
       for (int j = i + 1; j < m; ++j) exact_pair(c, params, i, j, out);
       continue;
@@ -234,6 +247,18 @@ void collect_edges(const Packed& c, const GraphParams& params, int begin, int en
       exact_block(c, params, i, keep, k, out);
     }
   }
+  out.starts.push_back(out.edges.size());
+}
+
+// Adds to at_most[l] the edges among levels[0, n) at level l or below (a byte compare per level,
+// on vector lanes; counting them one by one chained each count on the last).
+void count_levels(const std::uint8_t* levels, std::size_t n, std::vector<std::size_t>& at_most) {
+  for (std::size_t l = 0; l + 1 < at_most.size(); ++l) {
+    std::size_t count = 0;
+    for (std::size_t t = 0; t < n; ++t) count += levels[t] <= l;
+    at_most[l] += count;
+  }
+  at_most.back() += n;
 }
 
 }  // namespace
@@ -268,9 +293,9 @@ namespace {
 
 // What a build needs besides the graph, kept by PyramidGraphBuilder between builds.
 struct GraphScratch {
-  std::vector<detail::UninitVector<Edge>> parts;  // edges (i, j), i < j, of each thread's rows
-  detail::UninitVector<Edge> sample;              // edges of the rows that estimate the room
-  std::vector<std::int64_t> fill;                 // next free place in each row
+  std::vector<EdgeRows> parts;     // each thread's rows
+  EdgeRows sample;                 // edges of the rows that estimate the room
+  std::vector<std::int64_t> fill;  // next free place in each row
 };
 
 // Builds `g` in place: its arrays (and the scratch) keep their storage, so a build no larger than
@@ -288,9 +313,6 @@ void build_into(const std::vector<Correspondence>& c, const GraphParams& params,
   // Rows are split so that each thread gets about the same number of pairs.
   const int m = g.vertices;
   threads = std::max(1, std::min(threads, m / 256 + 1));  // a thread pays off from ~30k pairs on
-  std::vector<detail::UninitVector<Edge>>& parts = scratch.parts;
-  parts.resize(static_cast<std::size_t>(threads));
-  for (auto& part : parts) part.clear();
   std::vector<int> bounds{0};
   const double pairs = 0.5 * m * (m - 1.0);
   for (int t = 1; t < threads; ++t) {
@@ -300,22 +322,34 @@ void build_into(const std::vector<Correspondence>& c, const GraphParams& params,
     bounds.push_back(std::clamp(static_cast<int>(r), bounds.back(), m));
   }
   bounds.push_back(m);
+  std::vector<EdgeRows>& parts = scratch.parts;
+  parts.resize(static_cast<std::size_t>(threads));
+  for (int t = 0; t < threads; ++t) {
+    EdgeRows& part = parts[static_cast<std::size_t>(t)];
+    part.edges.clear();
+    part.starts.clear();
+    part.lower.assign(static_cast<std::size_t>(m), 0);
+    part.first = bounds[static_cast<std::size_t>(t)];
+  }
   const Packed packed(c);
   // Room for the edges, estimated on a sample of rows (growing the lists copies them; small
   // graphs grow cheaply, and the sample would cost more than it saves).
   if (m >= 512) {
-    detail::UninitVector<Edge>& sample = scratch.sample;
-    sample.clear();
+    EdgeRows& sample = scratch.sample;
+    sample.edges.clear();
+    sample.starts.clear();
+    sample.lower.assign(static_cast<std::size_t>(m), 0);
     const int step = std::max(1, m / 32);
     double sampled_pairs = 0;
     for (int i = 0; i < m; i += step) {
       collect_edges(packed, params, i, i + 1, sample);
       sampled_pairs += m - 1 - i;
     }
-    const double fraction = sampled_pairs > 0 ? double(sample.size()) / sampled_pairs : 0.0;
+    const double fraction = sampled_pairs > 0 ? double(sample.edges.size()) / sampled_pairs : 0.0;
     for (int t = 0; t < threads; ++t) {
-      const double rows_pairs = (bounds[t + 1] - bounds[t]) * (m - 0.5 * (bounds[t] + bounds[t + 1]));
-      auto& part = parts[static_cast<std::size_t>(t)];
+      const double rows_pairs =
+          (bounds[t + 1] - bounds[t]) * (m - 0.5 * (bounds[t] + bounds[t + 1]));
+      auto& part = parts[static_cast<std::size_t>(t)].edges;
       const auto room = static_cast<std::size_t>(1.2 * fraction * rows_pairs) + 16;
       if (part.capacity() < room) {
         part = {};  // a fresh block, not a copy of the old one
@@ -334,15 +368,14 @@ void build_into(const std::vector<Correspondence>& c, const GraphParams& params,
     for (auto& th : pool) th.join();
   }
 
-  // Symmetric CSR with sorted neighbour lists: count, prefix-sum, fill.
-  for (const auto& part : parts)
-    for (const Edge& e : part) {
-      ++g.offsets[static_cast<std::size_t>(e.i) + 1];
-      ++g.offsets[static_cast<std::size_t>(e.j) + 1];
-      ++g.edges_at_level[e.level];
-    }
-  for (std::size_t l = 1; l < g.edges_at_level.size(); ++l)
-    g.edges_at_level[l] += g.edges_at_level[l - 1];
+  // Symmetric CSR with sorted neighbour lists. Row v holds its lower neighbours (from rows i < v,
+  // in increasing i), then its higher ones (its own run, in increasing j).
+  for (const EdgeRows& part : parts) {
+    for (std::size_t r = 0; r + 1 < part.starts.size(); ++r)
+      g.offsets[static_cast<std::size_t>(part.first) + r + 1] +=
+          static_cast<std::int64_t>(part.starts[r + 1] - part.starts[r]);
+    for (std::size_t v = 0; v < part.lower.size(); ++v) g.offsets[v + 1] += part.lower[v];
+  }
   for (std::size_t v = 0; v < c.size(); ++v) g.offsets[v + 1] += g.offsets[v];
   const std::size_t directed = static_cast<std::size_t>(g.offsets.back());
   // Every place is written below; storage kept from an earlier build is not zeroed again.
@@ -359,26 +392,55 @@ void build_into(const std::vector<Correspondence>& c, const GraphParams& params,
   room(g.trim);
   std::vector<std::int64_t>& fill = scratch.fill;
   fill.assign(g.offsets.begin(), g.offsets.end() - 1);
-  // Edges arrive ordered by (i, j): row v receives all its lower neighbours (as j, from rows i < v,
-  // in increasing i) before its higher ones (as i, in increasing j), so one pass placing both
-  // copies of each edge leaves every row sorted.
-  // Raw pointers: through the vectors, each one-byte level store (which may alias anything) made
-  // the loop reload every vector's data pointer.
+  // Row i's run is copied after its lower neighbours, and each of its edges (i, j) is placed in row
+  // j as a lower neighbour, in increasing i. Placing them row by row scattered the writes over
+  // every row's end (3 cache lines a row: ~1 MiB at m = 5000, more than a core's L2); so the rows
+  // are taken in blocks, and a block's edges are placed a tile of target rows at a time, each
+  // target row receiving a block's edges in a burst. Raw pointers: through the vectors, each
+  // one-byte level store (which may alias anything) made the loops reload every data pointer.
+  constexpr std::size_t kRows = 128;  // source rows per block
+  constexpr int kTile = 1024;         // target rows per tile
   std::int64_t* const next = fill.data();
   int* const neighbors = g.neighbors.data();
-  auto* const levels = g.level.data();
-  auto* const trims = g.trim.data();
-  auto place = [&](int row, int other, const Edge& e) {
-    const auto k = static_cast<std::size_t>(next[row]++);
-    neighbors[k] = other;
-    levels[k] = e.level;
-    trims[k] = e.trim;
-  };
-  for (const auto& part : parts)
-    for (const Edge& e : part) {
-      place(e.j, e.i, e);
-      place(e.i, e.j, e);
+  std::uint8_t* const levels = g.level.data();
+  float* const trims = g.trim.data();
+  const std::int64_t* const offsets = g.offsets.data();
+  std::size_t cursor[kRows];
+  for (const EdgeRows& part : parts) {
+    const std::size_t rows = part.starts.size() - 1;
+    const Edge* const edges = part.edges.data();
+    for (std::size_t r0 = 0; r0 < rows; r0 += kRows) {
+      const std::size_t r1 = std::min(rows, r0 + kRows);
+      for (std::size_t r = r0; r < r1; ++r) {
+        const int i = part.first + static_cast<int>(r);
+        const Edge* const run = edges + part.starts[r];
+        const std::size_t n = part.starts[r + 1] - part.starts[r];
+        const auto higher = static_cast<std::size_t>(offsets[i + 1]) - n;
+        for (std::size_t t = 0; t < n; ++t) {
+          neighbors[higher + t] = run[t].j;
+          levels[higher + t] = run[t].level;
+          trims[higher + t] = run[t].trim;
+        }
+        count_levels(levels + higher, n, g.edges_at_level);
+        cursor[r - r0] = part.starts[r];
+      }
+      for (int tile = part.first + static_cast<int>(r0) + 1; tile < m; tile += kTile) {
+        const int tile_end = tile + kTile;  // beyond m when it is the last tile
+        for (std::size_t r = r0; r < r1; ++r) {
+          const int i = part.first + static_cast<int>(r);
+          std::size_t e = cursor[r - r0];
+          const std::size_t end = part.starts[r + 1];
+          for (; e < end && edges[e].j < tile_end; ++e) {
+            const auto k = static_cast<std::size_t>(next[edges[e].j]++);
+            neighbors[k] = i;
+            levels[k] = edges[e].level;
+            trims[k] = edges[e].trim;
+          }
+          cursor[r - r0] = e;
+        }
+      }
     }
+  }
   g.time_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
