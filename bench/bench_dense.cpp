@@ -53,10 +53,13 @@ std::vector<PoseEstimate> poses_of(const Problem& pr, const std::vector<CliqueRe
 }
 
 // The back end as the pipeline runs it without clouds: graph, clique, GNC per level, selection.
-SolverRun run_solver(const Problem& pr, const Config& config, int reps) {
+// The graph is built as a pipeline registering pair after pair builds it, in the storage of the
+// earlier builds (`builder`, one for the whole set).
+SolverRun run_solver(const Problem& pr, const Config& config, int reps,
+                     PyramidGraphBuilder& builder) {
   SolverRun r;
-  PyramidGraph g;
-  r.graph = measure([&] { g = build_pyramid_graph(pr.items, config.graph, 1); }, reps).median();
+  r.graph = measure([&] { builder.build(pr.items, config.graph, 1); }, reps).median();
+  const PyramidGraph& g = builder.graph();
   // A solver that takes long (the exact one before issue 22) runs once.
   const Timing first = measure([&] { r.cliques = solve_pyramid(g, config.clique); }, 1, 0);
   r.clique = first.median() > 1000
@@ -131,12 +134,13 @@ void run_set(const std::vector<Problem>& problems, const Options& o) {
       {"exact", CliqueSolver::exact}};
   std::vector<std::vector<double>> totals(3), cliques(3), ratios(1);
   std::vector<int> successes(3, 0);
+  PyramidGraphBuilder builder;
   for (const Problem& pr : problems) {
     std::vector<SolverRun> runs;
     for (std::size_t s = 0; s < 3; ++s) {
       Config config = default_config();
       config.clique.solver = solvers[s].second;
-      const SolverRun r = run_solver(pr, config, o.reps);
+      const SolverRun r = run_solver(pr, config, o.reps, builder);
       const bool ok = r.error && r.error->success;
       successes[s] += ok;
       totals[s].push_back(r.total());
