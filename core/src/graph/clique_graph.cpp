@@ -61,53 +61,17 @@ CoreDecomposition core_decomposition(const LevelCsr& g) {
   d.core.resize(static_cast<std::size_t>(n));
   d.order.resize(static_cast<std::size_t>(n));
   d.position.resize(static_cast<std::size_t>(n));
-  // Raw pointers in the loops: through the vectors, every store reloaded their data pointers.
-  int* const core = d.core.data();
-  int* const order = d.order.data();
-  int* const position = d.position.data();
   const std::int64_t* const offsets = g.offsets.data();
   const int* const neighbors = g.neighbors.data();
-  int max_deg = 0;
-  for (int v = 0; v < n; ++v) {
-    core[v] = static_cast<int>(offsets[v + 1] - offsets[v]);
-    max_deg = std::max(max_deg, core[v]);
-  }
-  // Vertices sorted by degree in `order`, with bucket starts in `bin` (counting sort).
-  std::vector<int> bins(static_cast<std::size_t>(max_deg) + 1, 0);
-  int* const bin = bins.data();
-  for (int v = 0; v < n; ++v) ++bin[core[v]];
-  int start = 0;
-  for (int k = 0; k <= max_deg; ++k) {
-    const int c = bin[k];
-    bin[k] = start;
-    start += c;
-  }
-  for (int v = 0; v < n; ++v) {
-    const int at = bin[core[v]]++;
-    position[v] = at;
-    order[at] = v;
-  }
-  for (int k = max_deg; k > 0; --k) bin[k] = bin[k - 1];
-  bin[0] = 0;
-  // Take vertices in order; each neighbour of higher current degree moves down one bucket (it
-  // swaps places with the first vertex of its bucket, which may be itself).
+  for (int v = 0; v < n; ++v)
+    d.core[static_cast<std::size_t>(v)] = static_cast<int>(offsets[v + 1] - offsets[v]);
+  DegreeBuckets buckets(d);
+  const int* const core = d.core.data();
   for (int i = 0; i < n; ++i) {
-    const int v = order[i];
+    const int v = buckets.at(i);
     const int cv = core[v];
-    for (const int* p = neighbors + offsets[v], *last = neighbors + offsets[v + 1]; p != last;
-         ++p) {
-      const int u = *p;
-      const int cu = core[u];
-      if (cu <= cv) continue;
-      const int pu = position[u];
-      const int pw = bin[cu]++;
-      const int w = order[pw];
-      position[u] = pw;
-      order[pu] = w;
-      position[w] = pu;
-      order[pw] = u;
-      core[u] = cu - 1;
-    }
+    for (const int *p = neighbors + offsets[v], *last = neighbors + offsets[v + 1]; p != last; ++p)
+      buckets.lower_above(*p, cv);
   }
   for (int c : d.core) d.degeneracy = std::max(d.degeneracy, c);
   return d;

@@ -17,7 +17,7 @@ struct LevelCsr {
   std::vector<std::int64_t> offsets;  // vertex v's neighbours are [offsets[v], offsets[v+1])
   UninitVector<int> neighbors;
 
-  int size() const { return static_cast<int>(offsets.size()) - 1; }
+  int size() const { return offsets.empty() ? 0 : static_cast<int>(offsets.size()) - 1; }
   int degree(int v) const {
     return static_cast<int>(offsets[static_cast<std::size_t>(v) + 1] -
                             offsets[static_cast<std::size_t>(v)]);
@@ -67,6 +67,61 @@ struct CoreDecomposition {
   int degeneracy = 0;  // largest core number
 };
 CoreDecomposition core_decomposition(const LevelCsr& g);
+
+/// The buckets of that algorithm, shared by its two forms (on a CSR and on a dense level's bit
+/// rows, which differ only in how they find a vertex's neighbours): `order` holds the vertices
+/// sorted by current degree (their core numbers so far, in `core`), `bin[k]` where degree k starts.
+class DegreeBuckets {
+ public:
+  /// Sorts the vertices by the degrees in d.core (counting sort).
+  explicit DegreeBuckets(CoreDecomposition& d)
+      : core_(d.core.data()), order_(d.order.data()), position_(d.position.data()) {
+    const int n = static_cast<int>(d.core.size());
+    int max_deg = 0;
+    for (int v = 0; v < n; ++v) max_deg = std::max(max_deg, core_[v]);
+    bins_.assign(static_cast<std::size_t>(max_deg) + 1, 0);
+    bin_ = bins_.data();
+    for (int v = 0; v < n; ++v) ++bin_[core_[v]];
+    int start = 0;
+    for (int k = 0; k <= max_deg; ++k) {
+      const int c = bin_[k];
+      bin_[k] = start;
+      start += c;
+    }
+    for (int v = 0; v < n; ++v) {
+      const int at = bin_[core_[v]]++;
+      position_[v] = at;
+      order_[at] = v;
+    }
+    for (int k = max_deg; k > 0; --k) bin_[k] = bin_[k - 1];
+    bin_[0] = 0;
+  }
+  /// The i-th vertex to remove (read when the i-th removal starts: lowering moves vertices).
+  int at(int i) const { return order_[i]; }
+  /// Vertex u, a neighbour of removed vertex v, loses an edge when its degree is above v's core
+  /// number (a removed neighbour's never is): it moves down one bucket, swapping places with the
+  /// first vertex of its bucket (which may be itself).
+  void lower_above(int u, int cv) {
+    const int cu = core_[u];
+    if (cu <= cv) return;
+    const int pu = position_[u];
+    const int pw = bin_[cu]++;
+    const int w = order_[pw];
+    position_[u] = pw;
+    order_[pu] = w;
+    position_[w] = pu;
+    order_[pw] = u;
+    core_[u] = cu - 1;
+  }
+
+ private:
+  // Raw pointers: through the vectors, every store reloaded their data pointers.
+  int* core_;
+  int* order_;
+  int* position_;
+  std::vector<int> bins_;
+  int* bin_ = nullptr;
+};
 
 /// Scratch marks for neighbourhood intersections: mark a set, then test membership in O(1).
 class Marks {

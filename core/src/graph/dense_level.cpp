@@ -150,55 +150,21 @@ PAGOR_POPCOUNT_CLONES CoreDecomposition core_decomposition(const CoreView& g) {
   d.core.resize(static_cast<std::size_t>(n));
   d.order.resize(static_cast<std::size_t>(n));
   d.position.resize(static_cast<std::size_t>(n));
-  int* const core = d.core.data();
-  int* const order = d.order.data();
-  int* const position = d.position.data();
   std::vector<Word> alive = g.mask();  // kept vertices not yet removed, as pyramid ids
-  int max_deg = 0;
-  for (int v = 0; v < n; ++v) {
-    core[v] = count_and_inline(g.row(v), alive.data(), w);
-    max_deg = std::max(max_deg, core[v]);
-  }
-  // As on a CSR (clique_graph.cpp): vertices sorted by degree, bucket starts in `bin`.
-  std::vector<int> bins(static_cast<std::size_t>(max_deg) + 1, 0);
-  int* const bin = bins.data();
-  for (int v = 0; v < n; ++v) ++bin[core[v]];
-  int start = 0;
-  for (int k = 0; k <= max_deg; ++k) {
-    const int c = bin[k];
-    bin[k] = start;
-    start += c;
-  }
-  for (int v = 0; v < n; ++v) {
-    const int at = bin[core[v]]++;
-    position[v] = at;
-    order[at] = v;
-  }
-  for (int k = max_deg; k > 0; --k) bin[k] = bin[k - 1];
-  bin[0] = 0;
-  // A removed neighbour has a core number no higher than v's, so the CSR's loop skips it: here it
-  // is not visited at all. The others come in the same (increasing) order.
+  for (int v = 0; v < n; ++v)
+    d.core[static_cast<std::size_t>(v)] = count_and_inline(g.row(v), alive.data(), w);
+  DegreeBuckets buckets(d);
+  const int* const core = d.core.data();
+  // As on a CSR, but a removed neighbour (whose core number is no higher than v's, so the CSR's
+  // loop passes it by) is not visited at all; the others come in the same (increasing) order.
   for (int i = 0; i < n; ++i) {
-    const int v = order[i];
+    const int v = buckets.at(i);
     const int cv = core[v];
     clear_bit(alive.data(), g.id(v));
     const Word* r = g.row(v);
-    for (int t = 0; t < w; ++t) {
-      Word x = r[t] & alive[static_cast<std::size_t>(t)];
-      for (; x; x &= x - 1) {
-        const int u = g.local(t * 64 + __builtin_ctzll(x));
-        const int cu = core[u];
-        if (cu <= cv) continue;
-        const int pu = position[u];
-        const int pw = bin[cu]++;
-        const int o = order[pw];
-        position[u] = pw;
-        order[pu] = o;
-        position[o] = pu;
-        order[pw] = u;
-        core[u] = cu - 1;
-      }
-    }
+    for (int t = 0; t < w; ++t)
+      for (Word x = r[t] & alive[static_cast<std::size_t>(t)]; x; x &= x - 1)
+        buckets.lower_above(g.local(t * 64 + __builtin_ctzll(x)), cv);
   }
   for (int c : d.core) d.degeneracy = std::max(d.degeneracy, c);
   return d;

@@ -344,7 +344,7 @@ std::vector<int> search_core(const Graph& core, Ids ids, std::vector<int> best, 
   optimal = true;
   if (bound) *bound = static_cast<int>(best.size());
   std::sort(best.begin(), best.end());
-  if (core.size() <= 0) return best;  // an empty core (a default LevelCsr has size -1)
+  if (core.size() == 0) return best;
   detail::SearchBudget budget;
   budget.max_nodes = max_nodes > 0 ? max_nodes : -1;
   if (max_nodes <= 0) budget.out_of_nodes = true;  // no search: only the colouring's proof
