@@ -175,6 +175,7 @@ PAGOR_POPCOUNT_CLONES std::vector<int> solve_subproblem_bits(const detail::BitGr
   c[span - 1] &= (Word(1) << (i % 64)) - 1;  // i and earlier vertices out
   int count = detail::count_bits(c, span);
   // A clique with i larger than `best` needs `best` of these, each adjacent to best - 1 others.
+  // Done as soon as too few are left.
   for (bool changed = true; changed && count >= best;) {
     changed = false;
     for (int k = 0; k < span; ++k)
@@ -182,7 +183,7 @@ PAGOR_POPCOUNT_CLONES std::vector<int> solve_subproblem_bits(const detail::BitGr
         const int a = k * 64 + __builtin_ctzll(x);
         if (detail::count_and_inline(b.row(a), c, span) < best - 1) {
           detail::clear_bit(c, a);
-          --count;
+          if (--count < best) return {};
           changed = true;
         }
       }
