@@ -157,6 +157,31 @@ detail::BitGraph induced(const detail::BitGraph& b, const detail::Word* c, int s
   return sub;
 }
 
+// Greedy colouring on bit rows with at most `colours` colours, of the vertices in U (words
+// [0, span), `count` of them; vertices beyond the span are never neighbours of those in it), taken
+// in increasing local id: each vertex gets the lowest colour none of its earlier neighbours has.
+// Built a colour class at a time (the same colouring): a class takes, in order, every vertex left
+// that is adjacent to none it has taken. Returns how many stay uncoloured; U keeps them. Q:
+// scratch.
+inline int colour_greedily(const detail::BitGraph& b, detail::Word* U, detail::Word* Q, int span,
+                           int count, int colours) {
+  int remaining = count, lo = 0;  // the words below `lo` are empty
+  for (int colour = 0; colour < colours && remaining > 0; ++colour) {
+    while (lo < span && !U[lo]) ++lo;
+    std::copy(U + lo, U + span, Q + lo);
+    for (int k = lo; k < span; ++k)
+      while (Q[k]) {
+        const int a = k * 64 + __builtin_ctzll(Q[k]);
+        detail::clear_bit(U, a);
+        --remaining;
+        const detail::Word* ra = b.row(a);
+        for (int t = k; t < span; ++t) Q[t] &= ~ra[t];
+        detail::clear_bit(Q, a);
+      }
+  }
+  return remaining;
+}
+
 // The subproblem of local vertex i of `b` (as solve_subproblem, on bits): i's later neighbours
 // (the lower local ids), peeled to those with at least best - 1 neighbours among them, searched for
 // a clique of more than best - 1. Returns the clique with i (local ids), or empty.
@@ -191,28 +216,10 @@ PAGOR_POPCOUNT_CLONES std::vector<int> solve_subproblem_bits(const detail::BitGr
   if (count < best) return {};
   // A greedy colouring of the survivors with best - 1 colours proves that no best of them are
   // pairwise adjacent; most subproblems end here, before their graph is extracted.
-  {
-    // Uncoloured survivors in U (scratch: this runs once per subproblem, and allocating it was a
-    // twentieth of the clique step); the words below `lo` are empty.
-    Word* U = scratch_u.data();
-    Word* Q = scratch_q.data();
-    std::copy(c, c + span, U);
-    int remaining = count, lo = 0;
-    for (int colours = 0; colours < best - 1 && remaining > 0; ++colours) {
-      while (lo < span && !U[lo]) ++lo;
-      std::copy(U + lo, U + span, Q + lo);
-      for (int k = lo; k < span; ++k)
-        while (Q[k]) {
-          const int a = k * 64 + __builtin_ctzll(Q[k]);
-          detail::clear_bit(U, a);
-          --remaining;
-          const Word* ra = b.row(a);
-          for (int t = k; t < span; ++t) Q[t] &= ~ra[t];
-          detail::clear_bit(Q, a);
-        }
-    }
-    if (remaining == 0) return {};
-  }
+  // (U and Q are scratch: this runs once per subproblem, and allocating them was a twentieth of
+  // the clique step.)
+  std::copy(c, c + span, scratch_u.data());
+  if (colour_greedily(b, scratch_u.data(), scratch_q.data(), span, count, best - 1) == 0) return {};
   // The survivors as a small bit graph, in local order: highest core first, so that the vertices
   // coloured first get the low colours.
   std::vector<int> cand;
@@ -268,11 +275,16 @@ std::vector<int> search_from(const Graph& csr, const detail::CoreDecomposition& 
                              int& bound) {
   optimal = true;
   bound = 0;
-  if (!best.empty() && colouring_proves(csr, cd, static_cast<int>(best.size()))) {
+  constexpr bool view = !std::is_same_v<Graph, detail::LevelCsr>;
+  const auto proven = [&] {
     std::sort(best.begin(), best.end());
     bound = static_cast<int>(best.size());
     return best;
-  }
+  };
+  // On a CSR, the colouring's proof comes first: a sparse level's suffix may be large, and is
+  // built only when the proof fails.
+  if (!view && !best.empty() && colouring_proves(csr, cd, static_cast<int>(best.size())))
+    return proven();
   int i = csr.size() - 1;
   // Cores grow along the degeneracy order: the vertices that could be in a larger clique are a
   // suffix of it, searched on bit rows when it is not too large.
@@ -282,9 +294,18 @@ std::vector<int> search_from(const Graph& csr, const detail::CoreDecomposition& 
              static_cast<int>(best.size()))
     ++first;
   static_assert(detail::kMaxLevelBits <= kMaxSuffixBits, "a CoreView's suffix fits in bits");
-  if (!std::is_same_v<Graph, detail::LevelCsr> || csr.size() - first <= kMaxSuffixBits) {
+  if (view || csr.size() - first <= kMaxSuffixBits) {
     const detail::BitGraph s = suffix_bits(csr, cd, first);
     std::vector<detail::Word> C(static_cast<std::size_t>(s.words())), U(C.size()), Q(C.size());
+    if (view && !best.empty()) {
+      // On a view, the same colouring on the suffix's rows (a colour class at a time, a word per
+      // neighbour set, where colouring_proves visits every neighbour through its view).
+      std::fill(U.begin(), U.end(), detail::Word(0));
+      for (int k = 0; k < s.size(); ++k) detail::set_bit(U.data(), k);
+      if (colour_greedily(s, U.data(), Q.data(), s.words(), s.size(),
+                          static_cast<int>(best.size())) == 0)
+        return proven();
+    }
     for (; i >= first && !budget.exhausted() && ((i & 15) != 0 || budget.in_time()); --i) {
       const int size = static_cast<int>(best.size());
       if (cd.core[static_cast<std::size_t>(cd.order[static_cast<std::size_t>(i)])] < size) {
