@@ -90,7 +90,7 @@ std::vector<int> solve_subproblem(const detail::LevelCsr& g, const detail::CoreD
 // a time.
 constexpr int kMaxSuffixBits = 1 << 14;  // bit rows up to this many vertices (32 MB)
 
-template <typename Graph>  // detail::LevelCsr or detail::CoreView
+template <typename Graph>  // detail::LevelCsr
 detail::BitGraph suffix_bits(const Graph& g, const detail::CoreDecomposition& cd, int first) {
   const int n = g.size() - first;
   detail::BitGraph b(n);
@@ -104,6 +104,32 @@ detail::BitGraph suffix_bits(const Graph& g, const detail::CoreDecomposition& cd
       const int j = last - cd.position[static_cast<std::size_t>(w)];
       if (j < n) detail::set_bit(row, j);
     });
+  }
+  return b;
+}
+
+// The same from a view: each row is the level's row masked to the suffix's vertices, whose bits
+// are moved to their places (one lookup per neighbour, where the CSR's form takes two and a test).
+detail::BitGraph suffix_bits(const detail::CoreView& g, const detail::CoreDecomposition& cd,
+                             int first) {
+  const int n = g.size() - first, w = g.words();
+  detail::BitGraph b(n);
+  b.ids.resize(static_cast<std::size_t>(n));                            // local -> vertex
+  std::vector<detail::Word> in_suffix(static_cast<std::size_t>(w), 0);  // as pyramid ids
+  detail::UninitVector<int> place(static_cast<std::size_t>(w) * 64);    // pyramid id -> local
+  const int last = g.size() - 1;
+  for (int i = 0; i < n; ++i) {
+    const int v = cd.order[static_cast<std::size_t>(last - i)];
+    b.ids[static_cast<std::size_t>(i)] = v;
+    detail::set_bit(in_suffix.data(), g.id(v));
+    place[static_cast<std::size_t>(g.id(v))] = i;
+  }
+  for (int i = 0; i < n; ++i) {
+    const detail::Word* r = g.row(b.ids[static_cast<std::size_t>(i)]);
+    detail::Word* row = b.row(i);
+    for (int t = 0; t < w; ++t)
+      for (detail::Word x = r[t] & in_suffix[static_cast<std::size_t>(t)]; x; x &= x - 1)
+        detail::set_bit(row, place[static_cast<std::size_t>(t * 64 + __builtin_ctzll(x))]);
   }
   return b;
 }
