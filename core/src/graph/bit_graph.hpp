@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "pagor/graph/pyramid_graph.hpp"
+#include "util/big_buffers.hpp"
 
 namespace pagor::detail {
 
@@ -83,7 +84,7 @@ class BitGraph {
 
  private:
   int n_ = 0, w_ = 0;
-  std::vector<Word> bits_;
+  std::vector<Word, HugePageAllocator<Word>> bits_;  // megabytes on dense levels
 };
 
 /// Level `level` of `g` induced by `vertices` (pyramid ids, any order; local vertex i is
