@@ -5,6 +5,7 @@
 #include <random>
 #include <thread>
 
+#include "pagor/errors.hpp"
 #include "pagor/sets/synthetic.hpp"
 #include "pagor/verify/verification.hpp"
 #include "util/random_draw.hpp"
@@ -173,6 +174,32 @@ TEST_CASE("bounded distances (on the grid) and unbounded ones (kd-tree) equal a 
         REQUIRE(std::isinf(d[i]));
     }
   }
+}
+
+TEST_CASE("distances of flagged points only: theirs as for all points, the others unsearched") {
+  const SyntheticScene scene = make_synthetic_scene();
+  const Verifier verifier(scene.source, scene.target, 0.5);
+  const Transform T = perturbed(scene.T_target_source, 0.4, 3.0);
+  const std::size_t n = verifier.source_points().size();
+  std::vector<char> only(n, 0);
+  for (std::size_t i = 0; i < n; i += 3) only[i] = 1;
+  for (float bound : {0.5f, 2.0f, std::numeric_limits<float>::infinity()}) {
+    const std::vector<float> all = verifier.distances(T, bound);
+    const std::vector<float> some = verifier.distances(T, bound, only);
+    REQUIRE(some.size() == n);
+    std::size_t found = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      INFO("bound " << bound << " point " << i);
+      if (only[i]) {
+        REQUIRE(some[i] == all[i]);
+        found += std::isfinite(some[i]);
+      } else {
+        REQUIRE(std::isinf(some[i]));
+      }
+    }
+    CHECK(found > 0);
+  }
+  CHECK_THROWS_AS(verifier.distances(T, 1.0f, std::vector<char>(n + 1, 1)), InputError);
 }
 
 TEST_CASE("one verifier searched from several threads at once, with growing bounds, agrees") {

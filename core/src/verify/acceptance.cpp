@@ -58,16 +58,24 @@ Acceptance judge_selection(const Verifier& verifier, const std::vector<PoseEstim
     return counted ? static_cast<double>(close) / static_cast<double>(counted) : 0.0;
   };
   a.overlap = overlap_of(d);
+  const auto bound = static_cast<float>(params.inlier_distance);
+  std::vector<char> structure_only;
+  if (!use_all) {
+    structure_only.resize(ground.size());
+    for (std::size_t i = 0; i < ground.size(); ++i) structure_only[i] = !ground[i];
+  }
   // The same pose moved by the success criterion's translation along each horizontal axis: a true
   // alignment loses most of its overlap, one that aligns only what slides along itself (a facade,
   // a hedge, the road) or what matches anything (vegetation) keeps it.
   double shifted = 0.0;
   for (const Eigen::Vector2d& step : {Eigen::Vector2d(1, 0), Eigen::Vector2d(-1, 0),
-                                     Eigen::Vector2d(0, 1), Eigen::Vector2d(0, -1)}) {
+                                      Eigen::Vector2d(0, 1), Eigen::Vector2d(0, -1)}) {
     Transform moved = T;
     moved.block<2, 1>(0, 3) += distinct.max_translation_error * step;
-    shifted = std::max(
-        shifted, overlap_of(verifier.distances(moved, static_cast<float>(params.inlier_distance))));
+    // Only the points overlap_of counts are searched (on KITTI, skipping the ground halved this).
+    shifted =
+        std::max(shifted, overlap_of(use_all ? verifier.distances(moved, bound)
+                                             : verifier.distances(moved, bound, structure_only)));
   }
   a.sharpness = a.overlap > 0 ? 1.0 - shifted / a.overlap : 0.0;
   a.inliers = static_cast<int>(candidates[sel].inliers.size());

@@ -4,8 +4,10 @@
 #include <chrono>
 #include <cmath>
 #include <mutex>
+#include <string>
 #include <thread>
 
+#include "pagor/errors.hpp"
 #include "pagor/util/kdtree.hpp"
 #include "pagor/util/voxel_grid.hpp"
 
@@ -63,11 +65,13 @@ struct Verifier::Impl {
 
   // Distance from every source point with index in [begin, end), moved by T, to its nearest
   // target point; +inf when none is closer than `bound` [m] (the search is pruned by it).
+  // (Points with only[i] == 0 are skipped, when `only` is given.)
   void nearest(const Transform& T, std::size_t begin, std::size_t end, float bound,
-               const RadiusGrid* g, float* out) {
+               const RadiusGrid* g, float* out, const char* only = nullptr) {
     const Eigen::Matrix3f R = T.block<3, 3>(0, 0).cast<float>();
     const Eigen::Vector3f t = T.block<3, 1>(0, 3).cast<float>();
     for (std::size_t i = begin; i < end; ++i) {
+      if (only && !only[i]) continue;
       const auto [index, d2] = nearest_one(g, R * source[i] + t, bound);
       out[i] = index >= 0 ? std::sqrt(d2) : HUGE_VALF;
     }
@@ -109,6 +113,17 @@ std::vector<float> Verifier::distances(const Transform& T, float bound) const {
   std::vector<float> d(impl_->source.size(), HUGE_VALF);
   if (!impl_->target.empty())
     impl_->nearest(T, 0, d.size(), bound, impl_->grid_for(bound), d.data());
+  return d;
+}
+
+std::vector<float> Verifier::distances(const Transform& T, float bound,
+                                       const std::vector<char>& only) const {
+  if (only.size() != impl_->source.size())
+    throw InputError("Verifier::distances: " + std::to_string(only.size()) + " flags for " +
+                     std::to_string(impl_->source.size()) + " source points");
+  std::vector<float> d(impl_->source.size(), HUGE_VALF);
+  if (!impl_->target.empty())
+    impl_->nearest(T, 0, d.size(), bound, impl_->grid_for(bound), d.data(), only.data());
   return d;
 }
 
@@ -192,7 +207,8 @@ VerificationResult verify_candidates(const Verifier& verifier,
   }
   if (r.selected >= 0) {
     const Transform& T = candidates[static_cast<std::size_t>(r.selected)].T_target_source;
-    if (!kept || !(*kept == T)) verifier.score(T, params.mu, params.score, threads, &r.selected_distances);
+    if (!kept || !(*kept == T))
+      verifier.score(T, params.mu, params.score, threads, &r.selected_distances);
   }
   r.time_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();

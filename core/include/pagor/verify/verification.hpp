@@ -71,6 +71,11 @@ class Verifier {
   /// +infinity where none is closer than `bound` [m] (a smaller bound searches faster).
   std::vector<float> distances(const Transform& T_target_source,
                                float bound = std::numeric_limits<float>::infinity()) const;
+  /// The same for the points i with only[i] != 0 (one flag per downsampled source point); the
+  /// others are not searched and stay +infinity. What a caller that ignores some points (the
+  /// ground, in acceptance) asks for.
+  std::vector<float> distances(const Transform& T_target_source, float bound,
+                               const std::vector<char>& only) const;
 
   /// Nearest downsampled target point to `q` strictly closer than sqrt(`max_distance_sq`) [m^2]:
   /// its index in target_points() and squared distance; index -1 when there is none.
