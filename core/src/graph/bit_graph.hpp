@@ -84,7 +84,7 @@ class BitGraph {
 
  private:
   int n_ = 0, w_ = 0;
-  std::vector<Word, HugePageAllocator<Word>> bits_;  // megabytes on dense levels
+  std::vector<Word, BlockAllocator<Word>> bits_;  // megabytes on dense levels
 };
 
 /// Level `level` of `g` induced by `vertices` (pyramid ids, any order; local vertex i is

@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <memory>
 #include <new>
+#include <utility>
 #include <vector>
 
 #if defined(__linux__)
@@ -31,48 +32,97 @@ void hint_huge_pages(const std::vector<T, A>& v) {
 #endif
 }
 
-/// An allocator for arrays of megabytes built afresh on every call (a dense level's bit rows):
-/// storage from 1 MiB on is aligned to 2 MiB and hinted for huge pages (Linux), so first touching
-/// it faults 2 MiB at a time. Each call's first touch of 4 KiB pages was a third of the first
-/// clique step on m = 5000 (hint_huge_pages above covers only a buffer's aligned middle).
-template <class T>
-struct HugePageAllocator {
-  using value_type = T;
-  HugePageAllocator() = default;
-  template <class U>
-  HugePageAllocator(const HugePageAllocator<U>&) noexcept {}
-  T* allocate(std::size_t n) {
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-    if (n >= kLarge / sizeof(T)) {
-      if (n > (std::size_t(-1) - kHuge) / sizeof(T)) throw std::bad_alloc();
-      const std::size_t bytes = (n * sizeof(T) + kHuge - 1) & ~(kHuge - 1);
-      void* p = nullptr;
-      if (posix_memalign(&p, kHuge, bytes) != 0) throw std::bad_alloc();
-      madvise(p, bytes, MADV_HUGEPAGE);
-      return static_cast<T*>(p);
+/// Blocks of 64 KiB and more that a thread freed, kept for its next call: the clique step builds
+/// the same large arrays (a dense level's bit rows) on every call, and the system allocator could
+/// hand them back in between, so that each call faulted them in again, 4 KiB at a time (on
+/// gedi-dev 03 a tenth of the clique step; on the first m = 5000 call of a process, a third). At
+/// most 64 MiB and 32 blocks a thread; freed when the thread ends.
+class BlockCache {
+ public:
+  static constexpr std::size_t kMin = std::size_t(1) << 16;
+  static constexpr std::size_t kHuge = std::size_t(1) << 21;
+
+  /// The size class of a block of `bytes` (at least kMin): at most an eighth more below 1 MiB,
+  /// whole 2 MiB pages from there on.
+  static std::size_t size_class(std::size_t bytes) {
+    if (bytes < kHuge / 2) {
+      const std::size_t step = (std::size_t(1) << (63 - __builtin_clzll(bytes))) / 8;
+      const std::size_t rounded = (bytes + step - 1) / step * step;
+      if (rounded < kHuge / 2) return rounded;
     }
-#endif
-    return std::allocator<T>().allocate(n);
+    return (bytes + kHuge - 1) & ~(kHuge - 1);
   }
-  void deallocate(T* p, std::size_t n) noexcept {
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-    if (n >= kLarge / sizeof(T)) {
-      std::free(p);
-      return;
-    }
-#endif
-    std::allocator<T>().deallocate(p, n);
+  /// A kept block of exactly `size` bytes (a size class), or nullptr.
+  void* take(std::size_t size) {
+    for (std::size_t i = 0; i < blocks_.size(); ++i)
+      if (blocks_[i].first == size) {
+        void* p = blocks_[i].second;
+        blocks_[i] = blocks_.back();
+        blocks_.pop_back();
+        total_ -= size;
+        return p;
+      }
+    return nullptr;
   }
-  friend bool operator==(const HugePageAllocator&, const HugePageAllocator&) {
+  /// Keeps a block for later; false (the caller frees it) when the cache is full.
+  bool keep(void* p, std::size_t size) {
+    if (total_ + size > kMaxBytes || blocks_.size() >= kMaxBlocks) return false;
+    blocks_.emplace_back(size, p);
+    total_ += size;
     return true;
   }
-  friend bool operator!=(const HugePageAllocator&, const HugePageAllocator&) {
-    return false;
+  /// A new block of `size` bytes (a size class): 2 MiB-aligned and hinted for huge pages (Linux)
+  /// from 2 MiB on, so that first touching it faults 2 MiB at a time.
+  static void* fresh(std::size_t size) {
+    void* p = nullptr;
+    if (posix_memalign(&p, size >= kHuge ? kHuge : 64, size) != 0) throw std::bad_alloc();
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+    if (size >= kHuge) madvise(p, size, MADV_HUGEPAGE);
+#endif
+    return p;
+  }
+  ~BlockCache() {
+    for (const auto& b : blocks_) std::free(b.second);
+  }
+  /// The calling thread's cache.
+  static BlockCache& of_this_thread() {
+    thread_local BlockCache cache;
+    return cache;
   }
 
  private:
-  static constexpr std::size_t kLarge = std::size_t(1) << 20;
-  static constexpr std::size_t kHuge = std::size_t(1) << 21;
+  static constexpr std::size_t kMaxBytes = std::size_t(64) << 20;
+  static constexpr std::size_t kMaxBlocks = 32;
+  std::vector<std::pair<std::size_t, void*>> blocks_;  // (size class, block)
+  std::size_t total_ = 0;
+};
+
+/// An allocator for large arrays built afresh on every call: blocks of 64 KiB and more come from
+/// the thread's BlockCache (or are made in its size classes) and go back to it.
+template <class T>
+struct BlockAllocator {
+  using value_type = T;
+  BlockAllocator() = default;
+  template <class U>
+  BlockAllocator(const BlockAllocator<U>&) noexcept {}
+  T* allocate(std::size_t n) {
+    if (n > (std::size_t(-1) - BlockCache::kHuge) / sizeof(T)) throw std::bad_alloc();
+    const std::size_t bytes = n * sizeof(T);
+    if (bytes < BlockCache::kMin) return std::allocator<T>().allocate(n);
+    const std::size_t size = BlockCache::size_class(bytes);
+    void* p = BlockCache::of_this_thread().take(size);
+    return static_cast<T*>(p ? p : BlockCache::fresh(size));
+  }
+  void deallocate(T* p, std::size_t n) noexcept {
+    const std::size_t bytes = n * sizeof(T);
+    if (bytes < BlockCache::kMin) {
+      std::allocator<T>().deallocate(p, n);
+      return;
+    }
+    if (!BlockCache::of_this_thread().keep(p, BlockCache::size_class(bytes))) std::free(p);
+  }
+  friend bool operator==(const BlockAllocator&, const BlockAllocator&) { return true; }
+  friend bool operator!=(const BlockAllocator&, const BlockAllocator&) { return false; }
 };
 
 /// An allocator whose resize() leaves new elements of a trivial type uninitialised, for arrays
