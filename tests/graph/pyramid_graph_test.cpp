@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <random>
 
@@ -126,10 +127,51 @@ TEST_CASE("a builder reusing its storage gives the graphs of fresh builds, whate
   PyramidGraphBuilder copy = builder;
   CHECK(copy.graph().neighbors == builder.graph().neighbors);
   PyramidGraphBuilder moved = std::move(builder);
+  CHECK(builder.graph().vertices == 0);  // NOLINT(bugprone-use-after-move): left empty
+  CHECK(builder.graph().offsets.empty());
   const auto c = random_correspondences(200, 9);
   builder.build(c, GraphParams{});  // NOLINT(bugprone-use-after-move): rebuilt on purpose
   CHECK(builder.graph().neighbors == build_pyramid_graph(c, GraphParams{}).neighbors);
   CHECK(moved.graph().vertices == 900);
+}
+
+TEST_CASE("large and far-flung graphs (tiled placement, the exact path) equal the definition") {
+  // m = 2500 spans three tiles of target rows and many blocks; coordinates of +-3e5 m take the
+  // exact test on every pair (no single-precision pass). Built in one builder with 3 threads,
+  // compared with a fresh 1-thread build and, on a sample of rows, with the definition.
+  PyramidGraphBuilder builder;
+  for (const double scale : {1.0, 1e4}) {
+    auto c = random_correspondences(scale == 1.0 ? 2500 : 600, 21);
+    for (auto& x : c) {
+      x.p *= scale;
+      x.q *= scale;
+    }
+    GraphParams p;  // ratio TRIM: the same consistency at any scale
+    p.trim = TrimKind::ratio;
+    p.thresholds = {0.01, 0.03, 0.1};
+    const PyramidGraph& g = builder.build(c, p, 3);
+    const PyramidGraph one = build_pyramid_graph(c, p, 1);
+    CAPTURE(scale, c.size());
+    CHECK(g.offsets == one.offsets);
+    CHECK(g.neighbors == one.neighbors);
+    CHECK(g.level == one.level);
+    CHECK(g.edges_at_level == one.edges_at_level);
+    REQUIRE(g.edges_at_level.back() > 0);
+    for (int v = 0; v < g.vertices; ++v) {  // rows sorted, every edge in both rows, same level
+      const auto b = static_cast<std::size_t>(g.offsets[static_cast<std::size_t>(v)]);
+      const auto e = static_cast<std::size_t>(g.offsets[static_cast<std::size_t>(v) + 1]);
+      REQUIRE(std::is_sorted(g.neighbors.begin() + b, g.neighbors.begin() + e));
+      for (std::size_t k = b; k < e; ++k) REQUIRE(g.adjacent(g.neighbors[k], v, g.level[k]));
+    }
+    for (std::size_t i = 0; i < c.size(); i += 37)
+      for (std::size_t j = 0; j < c.size(); ++j) {
+        if (i == j) continue;
+        const int ref = reference_level(c, std::min(i, j), std::max(i, j), p);
+        for (int l = 0; l < 3; ++l)
+          if (g.adjacent(static_cast<int>(i), static_cast<int>(j), l) != (ref >= 0 && ref <= l))
+            FAIL("pair " << i << ", " << j << " at level " << l << ": expected level " << ref);
+      }
+  }
 }
 
 TEST_CASE("gaussian affinities fall with the TRIM and vanish above the level") {

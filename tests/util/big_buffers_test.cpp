@@ -39,9 +39,17 @@ TEST_CASE("a thread's freed large arrays come back to its next allocation of the
     CHECK(c.data() != first);
     Vec big(1 << 20, 3);  // 8 MiB: 2 MiB-aligned
     CHECK(reinterpret_cast<std::uintptr_t>(big.data()) % BlockCache::kHuge == 0);
-    std::vector<Vec> many;  // more than the cache keeps: the rest are freed, not kept
-    for (int k = 0; k < 40; ++k) many.emplace_back(1 << 20, 0);
-    many.clear();
+    {
+      // More than the cache keeps (64 MiB): the oldest are freed, the newest 8 of 8 MiB kept.
+      std::vector<Vec> many;
+      for (int k = 0; k < 10; ++k) many.emplace_back(1 << 20, 0);
+      const std::uint64_t* newest = many.back().data();
+      many.clear();  // destroyed first to last
+      CHECK(BlockCache::of_this_thread().kept_bytes() == std::size_t(64) << 20);
+      Vec again(1 << 20, 5);  // the most recently kept block of its class
+      CHECK(again.data() == newest);
+      CHECK(BlockCache::of_this_thread().kept_bytes() == std::size_t(56) << 20);
+    }
     Vec small(10, 4);  // below 64 KiB: the plain allocator
     CHECK(small[9] == 4);
   })

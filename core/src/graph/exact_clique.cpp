@@ -90,8 +90,8 @@ std::vector<int> solve_subproblem(const detail::LevelCsr& g, const detail::CoreD
 // a time.
 constexpr int kMaxSuffixBits = 1 << 14;  // bit rows up to this many vertices (32 MB)
 
-template <typename Graph>  // detail::LevelCsr
-detail::BitGraph suffix_bits(const Graph& g, const detail::CoreDecomposition& cd, int first) {
+detail::BitGraph suffix_bits(const detail::LevelCsr& g, const detail::CoreDecomposition& cd,
+                             int first) {
   const int n = g.size() - first;
   detail::BitGraph b(n);
   b.ids.resize(static_cast<std::size_t>(n));  // local -> vertex
@@ -305,7 +305,7 @@ std::vector<int> search_from(const Graph& csr, const detail::CoreDecomposition& 
   const auto proven = [&] {
     std::sort(best.begin(), best.end());
     bound = static_cast<int>(best.size());
-    return best;
+    return std::move(best);
   };
   // On a CSR, the colouring's proof comes first: a sparse level's suffix may be large, and is
   // built only when the proof fails.

@@ -4,6 +4,8 @@
 #include <chrono>
 #include <cmath>
 #include <thread>
+#include <type_traits>
+#include <utility>
 
 #include "pagor/graph/trim.hpp"
 #include "util/big_buffers.hpp"
@@ -352,7 +354,7 @@ void build_into(const std::vector<Correspondence>& c, const GraphParams& params,
       auto& part = parts[static_cast<std::size_t>(t)].edges;
       const auto room = static_cast<std::size_t>(1.2 * fraction * rows_pairs) + 16;
       if (part.capacity() < room) {
-        part = {};  // a fresh block, not a copy of the old one
+        detail::UninitVector<Edge>().swap(part);  // the old block freed first, not copied
         part.reserve(room);
         detail::hint_huge_pages(part);
       }
@@ -381,7 +383,7 @@ void build_into(const std::vector<Correspondence>& c, const GraphParams& params,
   // Every place is written below; storage kept from an earlier build is not zeroed again.
   const auto room = [directed](auto& v) {
     if (v.capacity() < directed) {
-      v = {};
+      std::remove_reference_t<decltype(v)>().swap(v);  // the old block freed first
       v.reserve(directed);
       detail::hint_huge_pages(v);
     }
@@ -465,13 +467,23 @@ PyramidGraphBuilder& PyramidGraphBuilder::operator=(const PyramidGraphBuilder& o
   graph_ = other.graph_;
   return *this;
 }
-PyramidGraphBuilder::PyramidGraphBuilder(PyramidGraphBuilder&&) noexcept = default;
-PyramidGraphBuilder& PyramidGraphBuilder::operator=(PyramidGraphBuilder&&) noexcept = default;
+PyramidGraphBuilder::PyramidGraphBuilder(PyramidGraphBuilder&& other) noexcept
+    : scratch_(std::move(other.scratch_)), graph_(std::exchange(other.graph_, PyramidGraph{})) {}
+PyramidGraphBuilder& PyramidGraphBuilder::operator=(PyramidGraphBuilder&& other) noexcept {
+  scratch_ = std::move(other.scratch_);
+  graph_ = std::exchange(other.graph_, PyramidGraph{});
+  return *this;
+}
 
 const PyramidGraph& PyramidGraphBuilder::build(const std::vector<Correspondence>& c,
                                                const GraphParams& params, int threads) {
   if (!scratch_) scratch_ = std::make_unique<Scratch>();  // moved from
-  build_into(c, params, threads, graph_, *scratch_);
+  try {
+    build_into(c, params, threads, graph_, *scratch_);
+  } catch (...) {
+    graph_ = PyramidGraph{};  // not half of a new graph over the old one's arrays
+    throw;
+  }
   return graph_;
 }
 

@@ -52,22 +52,30 @@ class BlockCache {
     }
     return (bytes + kHuge - 1) & ~(kHuge - 1);
   }
-  /// A kept block of exactly `size` bytes (a size class), or nullptr.
+  /// The most recently kept block of exactly `size` bytes (a size class), or nullptr. The blocks
+  /// stay in the order they were kept, oldest first.
   void* take(std::size_t size) {
-    for (std::size_t i = 0; i < blocks_.size(); ++i)
+    for (std::size_t i = blocks_.size(); i-- > 0;)
       if (blocks_[i].first == size) {
         void* p = blocks_[i].second;
-        blocks_[i] = blocks_.back();
-        blocks_.pop_back();
+        blocks_.erase(blocks_.begin() + static_cast<std::ptrdiff_t>(i));
         total_ -= size;
         return p;
       }
     return nullptr;
   }
-  /// Keeps a block for later; false (the caller frees it) when the cache is full.
+  /// Keeps a block for later, freeing the oldest kept ones to make room (a thread whose sizes
+  /// change keeps its recent ones); false (the caller frees it) for a block larger than the cache.
   bool keep(void* p, std::size_t size) {
-    if (total_ + size > kMaxBytes || blocks_.size() >= kMaxBlocks) return false;
-    blocks_.emplace_back(size, p);
+    if (size > kMaxBytes) return false;
+    std::size_t drop = 0;  // the oldest blocks, freed
+    while (total_ + size > kMaxBytes || blocks_.size() - drop >= kMaxBlocks) {
+      std::free(blocks_[drop].second);
+      total_ -= blocks_[drop].first;
+      ++drop;
+    }
+    blocks_.erase(blocks_.begin(), blocks_.begin() + static_cast<std::ptrdiff_t>(drop));
+    blocks_.emplace_back(size, p);  // no allocation: room for kMaxBlocks is reserved
     total_ += size;
     return true;
   }
@@ -81,10 +89,21 @@ class BlockCache {
 #endif
     return p;
   }
+  BlockCache() {
+    blocks_.reserve(kMaxBlocks);
+  }
   ~BlockCache() {
     for (const auto& b : blocks_) std::free(b.second);
   }
-  /// The calling thread's cache.
+  BlockCache(const BlockCache&) = delete;
+  BlockCache& operator=(const BlockCache&) = delete;
+  /// Bytes kept.
+  std::size_t kept_bytes() const {
+    return total_;
+  }
+  /// The calling thread's cache. (An object holding such blocks must not outlive its thread's
+  /// cache: a thread_local or static one destroyed after it would return blocks to a dead cache.
+  /// The bit rows live within one call.)
   static BlockCache& of_this_thread() {
     thread_local BlockCache cache;
     return cache;

@@ -98,10 +98,11 @@ PyramidGraph build_pyramid_graph(const std::vector<Correspondence>& corresponden
 
 /// Builds pyramid graphs one after another in the same storage, for a caller that registers pair
 /// after pair (a loop-closing node; `Pipeline` keeps one). The graph's arrays and the edge pass's
-/// scratch are kept between builds, so a build no larger than an earlier one allocates nothing and
-/// touches no fresh memory: on m = 5000 correspondences, faulting in and zeroing the ~90 MiB a
-/// build needs was a third of its time. The graphs are those build_pyramid_graph() gives.
-/// A copy copies the graph, not the scratch.
+/// scratch (the megabytes of a build) are kept between builds, so a build no larger than an
+/// earlier one reuses them instead of faulting fresh memory in: on m = 5000 correspondences,
+/// faulting in and zeroing the ~90 MiB a build needs was a third of its time. The storage of the
+/// largest build is kept until the builder dies. The graphs are those build_pyramid_graph()
+/// gives. A copy copies the graph, not the scratch; a moved-from builder holds an empty graph.
 class PyramidGraphBuilder {
  public:
   PyramidGraphBuilder();
@@ -112,7 +113,7 @@ class PyramidGraphBuilder {
   PyramidGraphBuilder& operator=(PyramidGraphBuilder&&) noexcept;
 
   /// Rebuilds graph() from these correspondences; references to graph() stay valid and see the
-  /// new graph.
+  /// new graph. If it throws (out of memory, no thread), graph() is left empty.
   const PyramidGraph& build(const std::vector<Correspondence>& correspondences,
                             const GraphParams& params, int threads = 1);
   /// The last graph built (empty before the first build).
