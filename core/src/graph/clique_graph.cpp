@@ -11,8 +11,7 @@ LevelCsr level_csr(const PyramidGraph& g, int level) {
   s.offsets.assign(n + 1, 0);
   std::size_t count = 0;
   for (std::size_t e = 0; e < g.level.size(); ++e) count += g.level[e] <= level;
-  s.neighbors.reserve(count);
-  hint_huge_pages(s.neighbors);
+  reserve_fresh(s.neighbors, count);
   s.neighbors.resize(count);
   std::size_t k = 0;
   for (std::size_t v = 0; v < n; ++v) {
@@ -35,8 +34,7 @@ LevelCsr level_csr(const PyramidGraph& g, int level, const std::vector<int>& kee
   for (int v : keep)
     rows += static_cast<std::size_t>(g.offsets[static_cast<std::size_t>(v) + 1] -
                                      g.offsets[static_cast<std::size_t>(v)]);
-  s.neighbors.reserve(rows);
-  hint_huge_pages(s.neighbors);
+  reserve_fresh(s.neighbors, rows);
   s.neighbors.resize(rows);
   int* out = s.neighbors.data();
   std::size_t k = 0;

@@ -309,8 +309,8 @@ std::vector<int> search_from(const Graph& csr, const detail::CoreDecomposition& 
   };
   // On a CSR, the colouring's proof comes first: a sparse level's suffix may be large, and is
   // built only when the proof fails.
-  if (!view && !best.empty() && colouring_proves(csr, cd, static_cast<int>(best.size())))
-    return proven();
+  if constexpr (!view)
+    if (!best.empty() && colouring_proves(csr, cd, static_cast<int>(best.size()))) return proven();
   int i = csr.size() - 1;
   // Cores grow along the degeneracy order: the vertices that could be in a larger clique are a
   // suffix of it, searched on bit rows when it is not too large.
@@ -326,8 +326,7 @@ std::vector<int> search_from(const Graph& csr, const detail::CoreDecomposition& 
     if (view && !best.empty()) {
       // On a view, the same colouring on the suffix's rows (a colour class at a time, a word per
       // neighbour set, where colouring_proves visits every neighbour through its view).
-      std::fill(U.begin(), U.end(), detail::Word(0));
-      for (int k = 0; k < s.size(); ++k) detail::set_bit(U.data(), k);
+      for (int k = 0; k < s.size(); ++k) detail::set_bit(U.data(), k);  // U starts empty
       if (colour_greedily(s, U.data(), Q.data(), s.words(), s.size(),
                           static_cast<int>(best.size())) == 0)
         return proven();

@@ -4,7 +4,6 @@
 #include <chrono>
 #include <cmath>
 #include <thread>
-#include <type_traits>
 #include <utility>
 
 #include "pagor/graph/trim.hpp"
@@ -35,6 +34,14 @@ struct EdgeRows {
   std::vector<std::size_t> starts;  // row first + r's edges are [starts[r], starts[r + 1])
   std::vector<int> lower;           // per vertex v: edges (i, v), i < v, in these rows
   int first = 0;
+
+  /// Empty, for rows from `first_row` on of a graph of m vertices (storage kept).
+  void reset(int m, int first_row) {
+    edges.clear();
+    starts.clear();
+    lower.assign(static_cast<std::size_t>(m), 0);
+    first = first_row;
+  }
 };
 
 // Coordinates and ids in flat arrays, read in the hot loop: exact (double) and, for a first
@@ -326,21 +333,14 @@ void build_into(const std::vector<Correspondence>& c, const GraphParams& params,
   bounds.push_back(m);
   std::vector<EdgeRows>& parts = scratch.parts;
   parts.resize(static_cast<std::size_t>(threads));
-  for (int t = 0; t < threads; ++t) {
-    EdgeRows& part = parts[static_cast<std::size_t>(t)];
-    part.edges.clear();
-    part.starts.clear();
-    part.lower.assign(static_cast<std::size_t>(m), 0);
-    part.first = bounds[static_cast<std::size_t>(t)];
-  }
+  for (int t = 0; t < threads; ++t)
+    parts[static_cast<std::size_t>(t)].reset(m, bounds[static_cast<std::size_t>(t)]);
   const Packed packed(c);
   // Room for the edges, estimated on a sample of rows (growing the lists copies them; small
   // graphs grow cheaply, and the sample would cost more than it saves).
   if (m >= 512) {
     EdgeRows& sample = scratch.sample;
-    sample.edges.clear();
-    sample.starts.clear();
-    sample.lower.assign(static_cast<std::size_t>(m), 0);
+    sample.reset(m, 0);
     const int step = std::max(1, m / 32);
     double sampled_pairs = 0;
     for (int i = 0; i < m; i += step) {
@@ -351,13 +351,8 @@ void build_into(const std::vector<Correspondence>& c, const GraphParams& params,
     for (int t = 0; t < threads; ++t) {
       const double rows_pairs =
           (bounds[t + 1] - bounds[t]) * (m - 0.5 * (bounds[t] + bounds[t + 1]));
-      auto& part = parts[static_cast<std::size_t>(t)].edges;
-      const auto room = static_cast<std::size_t>(1.2 * fraction * rows_pairs) + 16;
-      if (part.capacity() < room) {
-        detail::UninitVector<Edge>().swap(part);  // the old block freed first, not copied
-        part.reserve(room);
-        detail::hint_huge_pages(part);
-      }
+      detail::reserve_fresh(parts[static_cast<std::size_t>(t)].edges,
+                            static_cast<std::size_t>(1.2 * fraction * rows_pairs) + 16);
     }
   }
   if (threads == 1) {
@@ -382,11 +377,7 @@ void build_into(const std::vector<Correspondence>& c, const GraphParams& params,
   const std::size_t directed = static_cast<std::size_t>(g.offsets.back());
   // Every place is written below; storage kept from an earlier build is not zeroed again.
   const auto room = [directed](auto& v) {
-    if (v.capacity() < directed) {
-      std::remove_reference_t<decltype(v)>().swap(v);  // the old block freed first
-      v.reserve(directed);
-      detail::hint_huge_pages(v);
-    }
+    detail::reserve_fresh(v, directed);
     v.resize(directed);
   };
   room(g.neighbors);

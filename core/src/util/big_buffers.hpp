@@ -32,6 +32,16 @@ void hint_huge_pages(const std::vector<T, A>& v) {
 #endif
 }
 
+/// Gives `v` room for n elements: when it must grow, in fresh storage (the old block freed first,
+/// its contents not copied) hinted for huge pages. Storage already large enough is kept.
+template <class V>
+void reserve_fresh(V& v, std::size_t n) {
+  if (v.capacity() >= n) return;
+  V().swap(v);
+  v.reserve(n);
+  hint_huge_pages(v);
+}
+
 /// Blocks of 64 KiB and more that a thread freed, kept for its next call: the clique step builds
 /// the same large arrays (a dense level's bit rows) on every call, and the system allocator could
 /// hand them back in between, so that each call faulted them in again, 4 KiB at a time (on

@@ -34,8 +34,9 @@ Acceptance judge_selection(const Verifier& verifier, const std::vector<PoseEstim
   // (points beyond it are not aligned either way).
   const bool reuse = verification.selected_distances.size() == points.size() &&
                      verification.distance_bound >= params.inlier_distance;
+  const auto bound = static_cast<float>(params.inlier_distance);
   std::vector<float> searched;
-  if (!reuse) searched = verifier.distances(T, static_cast<float>(params.inlier_distance));
+  if (!reuse) searched = verifier.distances(T, bound);
   const std::vector<float>& d = reuse ? verification.selected_distances : searched;
   // The ground follows the terrain (ground.hpp): on a sloped street a height layer would leave the
   // uphill road as structure, which a pose sliding along the street aligns.
@@ -48,22 +49,19 @@ Acceptance judge_selection(const Verifier& verifier, const std::vector<PoseEstim
   // points. A scan with little structure is still judged on it: judged on all its points, a street
   // that is mostly road was "aligned" by any pose that lays road on road.
   const bool use_all = structure < std::max<std::size_t>(10, d.size() / 100);
+  std::vector<char> counts(ground.size(), 1);  // the points the overlap counts
+  if (!use_all)
+    for (std::size_t i = 0; i < ground.size(); ++i) counts[i] = !ground[i];
   const auto overlap_of = [&](const std::vector<float>& dist) {
     std::size_t close = 0, counted = 0;
     for (std::size_t i = 0; i < dist.size(); ++i) {
-      if (!use_all && ground[i]) continue;
+      if (!counts[i]) continue;
       ++counted;
       close += dist[i] <= params.inlier_distance;
     }
     return counted ? static_cast<double>(close) / static_cast<double>(counted) : 0.0;
   };
   a.overlap = overlap_of(d);
-  const auto bound = static_cast<float>(params.inlier_distance);
-  std::vector<char> structure_only;
-  if (!use_all) {
-    structure_only.resize(ground.size());
-    for (std::size_t i = 0; i < ground.size(); ++i) structure_only[i] = !ground[i];
-  }
   // The same pose moved by the success criterion's translation along each horizontal axis: a true
   // alignment loses most of its overlap, one that aligns only what slides along itself (a facade,
   // a hedge, the road) or what matches anything (vegetation) keeps it.
@@ -73,9 +71,7 @@ Acceptance judge_selection(const Verifier& verifier, const std::vector<PoseEstim
     Transform moved = T;
     moved.block<2, 1>(0, 3) += distinct.max_translation_error * step;
     // Only the points overlap_of counts are searched (on KITTI, skipping the ground halved this).
-    shifted =
-        std::max(shifted, overlap_of(use_all ? verifier.distances(moved, bound)
-                                             : verifier.distances(moved, bound, structure_only)));
+    shifted = std::max(shifted, overlap_of(verifier.distances(moved, bound, counts)));
   }
   a.sharpness = a.overlap > 0 ? 1.0 - shifted / a.overlap : 0.0;
   a.inliers = static_cast<int>(candidates[sel].inliers.size());
