@@ -110,3 +110,38 @@ TEST_CASE("levels proven on bit rows: the exact solver's clique sizes, proven, o
     }
   }
 }
+
+TEST_CASE("a colouring grown from a clique proves it maximum only when it is") {
+  int proven = 0, beyond_plain = 0;
+  for (std::uint64_t seed = 0; seed < 240; ++seed) {
+    const int n = 12 + static_cast<int>(seed % 60);
+    const double p = 0.1 + 0.1 * static_cast<double>(seed % 8);
+    const PyramidGraph g = test::random_graph(n, p, static_cast<int>(seed % 14), seed);
+    const CliqueResult exact = exact_max_clique(g, 0, CliqueParams{});
+    REQUIRE(exact.optimal);
+    const detail::BitGraph bits = detail::level_bits(g, 0);
+    const std::vector<int> deg = detail::degrees(bits);
+    detail::Marks marks(g.vertices);
+    std::vector<std::vector<int>> cliques = {exact.vertices,
+                                             detail::greedy_clique(bits, deg, 4, marks)};
+    if (exact.vertices.size() >= 2)  // a clique one short of the maximum
+      cliques.emplace_back(exact.vertices.begin() + 1, exact.vertices.end());
+    for (const std::vector<int>& clique : cliques) {
+      INFO("seed " << seed << ", n " << n << ", p " << p << ", clique of " << clique.size()
+                   << ", maximum " << exact.vertices.size());
+      REQUIRE(detail::is_clique(bits, clique, marks));
+      const std::vector<int> keep = detail::k_core(bits, deg, static_cast<int>(clique.size()));
+      if (!detail::colouring_from_clique_proves(bits, keep, clique)) continue;
+      CHECK(clique.size() == exact.vertices.size());  // never a clique that is not maximum
+      ++proven;
+      // Proofs that a plain greedy colouring of the core (increasing id) does not give.
+      std::vector<detail::Word> u(static_cast<std::size_t>(bits.words()), 0), q(u.size());
+      for (int v : keep) detail::set_bit(u.data(), v);
+      beyond_plain += detail::colour_greedily(bits, u.data(), q.data(), bits.words(),
+                                              static_cast<int>(keep.size()),
+                                              static_cast<int>(clique.size())) > 0;
+    }
+  }
+  CHECK(proven >= 100);
+  CHECK(beyond_plain >= 10);
+}

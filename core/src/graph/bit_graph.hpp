@@ -3,6 +3,7 @@
 // bits (row v: the neighbours of v), for the operations a clique search repeats — intersecting a
 // candidate set with a neighbourhood, counting a vertex's neighbours in a set — one word at a time.
 
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <vector>
@@ -91,6 +92,41 @@ class BitGraph {
 /// vertices[i]). `local` is scratch of g.vertices entries, all -1 on entry and on return.
 BitGraph induce_bits(const PyramidGraph& g, int level, const std::vector<int>& vertices,
                      std::vector<int>& local);
+
+/// A colour class grown greedily on b's rows: takes, in increasing id, every vertex of Q (words
+/// [lo, span); vertices beyond the span are never neighbours of those in it) that is adjacent to
+/// none taken before, clearing each from U and setting it in `taken` (if given). Returns how many
+/// it took; Q is used up.
+inline int take_class(const BitGraph& b, Word* U, Word* Q, int lo, int span,
+                      Word* taken = nullptr) {
+  int n = 0;
+  for (int k = lo; k < span; ++k)
+    while (Q[k]) {
+      const int a = k * 64 + __builtin_ctzll(Q[k]);
+      clear_bit(U, a);
+      if (taken) set_bit(taken, a);
+      ++n;
+      const Word* ra = b.row(a);
+      for (int t = k; t < span; ++t) Q[t] &= ~ra[t];
+      clear_bit(Q, a);
+    }
+  return n;
+}
+
+/// Greedy colouring on bit rows with at most `colours` colours, of the vertices in U (words
+/// [0, span), `count` of them), taken in increasing id: each vertex gets the lowest colour none of
+/// its earlier neighbours has. Built a colour class at a time (the same colouring): a class takes,
+/// in order, every vertex left that is adjacent to none it has taken. Returns how many stay
+/// uncoloured; U keeps them. Q: scratch.
+inline int colour_greedily(const BitGraph& b, Word* U, Word* Q, int span, int count, int colours) {
+  int remaining = count, lo = 0;  // the words below `lo` are empty
+  for (int colour = 0; colour < colours && remaining > 0; ++colour) {
+    while (lo < span && !U[lo]) ++lo;
+    std::copy(U + lo, U + span, Q + lo);
+    remaining -= take_class(b, U, Q, lo, span);
+  }
+  return remaining;
+}
 
 /// What a search may spend: branch-and-bound nodes and wall time. Shared by the searches of one
 /// level so that the budget is the level's.

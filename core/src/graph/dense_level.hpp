@@ -38,6 +38,18 @@ bool is_clique(const BitGraph& g, const std::vector<int>& vertices, Marks& marks
 /// The k-core's vertices, sorted, given every vertex's degree.
 std::vector<int> k_core(const BitGraph& g, std::vector<int> deg, int k);
 
+/// Whether no clique among `keep` (the |clique|-core, sorted) is larger than `clique`, proven by a
+/// colouring with |clique| colours: colour class c starts from clique[c] and takes, in increasing
+/// id, every vertex of keep left that is adjacent to none it holds. A clique larger than `clique`
+/// then has a vertex v left uncoloured, and at most 1 + (classes meeting v's row) + (uncoloured
+/// neighbours of v) members, or else no more than a greedy colouring of v's neighbours in keep
+/// allows; each of at most kMaxLeftOver such v is checked. False when that does not prove it (the
+/// exact search decides). Costs a pass over keep's rows, where the search's proof
+/// first decomposes the core.
+bool colouring_from_clique_proves(const BitGraph& g, const std::vector<int>& keep,
+                                  const std::vector<int>& clique);
+constexpr int kMaxLeftOver = 64;
+
 /// The subgraph of g induced by `keep` (sorted; local vertex i is keep[i]) read through g's rows:
 /// what level_csr(g's level, keep) holds, without building it. Neighbours come in increasing
 /// local id, as a CSR row lists them. It refers to g and keep, which must outlive it.

@@ -183,31 +183,6 @@ detail::BitGraph induced(const detail::BitGraph& b, const detail::Word* c, int s
   return sub;
 }
 
-// Greedy colouring on bit rows with at most `colours` colours, of the vertices in U (words
-// [0, span), `count` of them; vertices beyond the span are never neighbours of those in it), taken
-// in increasing local id: each vertex gets the lowest colour none of its earlier neighbours has.
-// Built a colour class at a time (the same colouring): a class takes, in order, every vertex left
-// that is adjacent to none it has taken. Returns how many stay uncoloured; U keeps them. Q:
-// scratch.
-inline int colour_greedily(const detail::BitGraph& b, detail::Word* U, detail::Word* Q, int span,
-                           int count, int colours) {
-  int remaining = count, lo = 0;  // the words below `lo` are empty
-  for (int colour = 0; colour < colours && remaining > 0; ++colour) {
-    while (lo < span && !U[lo]) ++lo;
-    std::copy(U + lo, U + span, Q + lo);
-    for (int k = lo; k < span; ++k)
-      while (Q[k]) {
-        const int a = k * 64 + __builtin_ctzll(Q[k]);
-        detail::clear_bit(U, a);
-        --remaining;
-        const detail::Word* ra = b.row(a);
-        for (int t = k; t < span; ++t) Q[t] &= ~ra[t];
-        detail::clear_bit(Q, a);
-      }
-  }
-  return remaining;
-}
-
 // The subproblem of local vertex i of `b` (as solve_subproblem, on bits): i's later neighbours
 // (the lower local ids), peeled to those with at least best - 1 neighbours among them, searched for
 // a clique of more than best - 1. Returns the clique with i (local ids), or empty.
@@ -245,7 +220,8 @@ PAGOR_POPCOUNT_CLONES std::vector<int> solve_subproblem_bits(const detail::BitGr
   // (U and Q are scratch: this runs once per subproblem, and allocating them was a twentieth of
   // the clique step.)
   std::copy(c, c + span, scratch_u.data());
-  if (colour_greedily(b, scratch_u.data(), scratch_q.data(), span, count, best - 1) == 0) return {};
+  if (detail::colour_greedily(b, scratch_u.data(), scratch_q.data(), span, count, best - 1) == 0)
+    return {};
   // The survivors as a small bit graph, in local order: highest core first, so that the vertices
   // coloured first get the low colours.
   std::vector<int> cand;
@@ -327,8 +303,8 @@ std::vector<int> search_from(const Graph& csr, const detail::CoreDecomposition& 
       // On a view, the same colouring on the suffix's rows (a colour class at a time, a word per
       // neighbour set, where colouring_proves visits every neighbour through its view).
       for (int k = 0; k < s.size(); ++k) detail::set_bit(U.data(), k);  // U starts empty
-      if (colour_greedily(s, U.data(), Q.data(), s.words(), s.size(),
-                          static_cast<int>(best.size())) == 0)
+      if (detail::colour_greedily(s, U.data(), Q.data(), s.words(), s.size(),
+                                  static_cast<int>(best.size())) == 0)
         return proven();
     }
     for (; i >= first && !budget.exhausted() && ((i & 15) != 0 || budget.in_time()); --i) {

@@ -95,8 +95,10 @@ struct CliqueParams {
   /// exact: wall-time budget of the whole pyramid [ms]; a level may use what the levels before it
   /// left of their share; 0: none
   double exact_time_budget_ms = 1000.0;
-  int greedy_starts = 4;  ///< greedy cliques grown from the highest cores for the lower bound
-  int max_swaps = 64;     ///< improving swaps (one member out, two in) tried on the rounded clique
+  /// greedy cliques grown from the highest cores for the lower bound (on a warm level that a
+  /// search proves, the previous level's clique grown stands in for them)
+  int greedy_starts = 4;
+  int max_swaps = 64;  ///< improving swaps (one member out, two in) tried on the rounded clique
   /// Wall time one registration may take up to the end of its clique step, counted from the start
   /// of the run [ms]; the clique search gets what the stages before it left, and when it runs out
   /// each unfinished level keeps the best clique found so far (budget "time"); 0: none
@@ -165,8 +167,10 @@ struct CliqueParams {
        "the best clique found is returned, marked not proven, with the bound reached; 0: none.",
        "ms", Range::closed(1, 3.6e6), 0.0, true});
     v(&CliqueParams::greedy_starts,
-      {"greedy_starts", "Greedy cliques grown from the highest cores for the pruning's bound.", "",
-       Range::closed(1, 1000)});
+      {"greedy_starts",
+       "Greedy cliques grown from the highest cores for the pruning's bound (a warm level that "
+       "prove_first proves starts from the previous level's clique instead).",
+       "", Range::closed(1, 1000)});
     v(&CliqueParams::max_swaps,
       {"max_swaps", "Improving swaps (one member out, two in) tried on the rounded clique.", "",
        Range::closed(0, 100000)});
