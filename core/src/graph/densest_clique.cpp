@@ -79,10 +79,9 @@ bool proves_first(const PyramidGraph& g, int level, const CliqueParams& p) {
 // the level's bit rows (from levels_bits).
 //
 // A warm level's search starts from the previous level's clique grown, without the cold start's
-// greedy cliques: the search returns a maximum clique from either start, the greedy cliques rarely
-// shorten it (they cost more than they save: gedi-dev's clique step 1.1x, the generated problems'
-// 1.2x faster without them), and a level that is not proven goes on to the relaxation, which
-// computes its lower bound with them.
+// greedy cliques: the search returns a maximum clique from either start, and the greedy cliques
+// cost more than they shorten it (bench/README.md, issue 22's sixth part). A level that is not
+// proven goes on to the relaxation, which computes its lower bound with them.
 bool proven_without_relaxation(const PyramidGraph& g, int level, const CliqueParams& p,
                                const std::vector<int>& known_clique, double d0, CliqueResult& r,
                                Deadline deadline, const detail::BitGraph* bits) {
