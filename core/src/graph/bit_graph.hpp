@@ -95,16 +95,13 @@ BitGraph induce_bits(const PyramidGraph& g, int level, const std::vector<int>& v
 
 /// A colour class grown greedily on b's rows: takes, in increasing id, every vertex of Q (words
 /// [lo, span); vertices beyond the span are never neighbours of those in it) that is adjacent to
-/// none taken before, clearing each from U and setting it in `taken` (if given). Returns how many
-/// it took; Q is used up.
-inline int take_class(const BitGraph& b, Word* U, Word* Q, int lo, int span,
-                      Word* taken = nullptr) {
+/// none taken before, clearing each from U. Returns how many it took; Q is used up.
+inline int take_class(const BitGraph& b, Word* U, Word* Q, int lo, int span) {
   int n = 0;
   for (int k = lo; k < span; ++k)
     while (Q[k]) {
       const int a = k * 64 + __builtin_ctzll(Q[k]);
       clear_bit(U, a);
-      if (taken) set_bit(taken, a);
       ++n;
       const Word* ra = b.row(a);
       for (int t = k; t < span; ++t) Q[t] &= ~ra[t];

@@ -136,42 +136,33 @@ std::vector<int> k_core(const BitGraph& g, std::vector<int> deg, int k) {
 PAGOR_POPCOUNT_CLONES bool colouring_from_clique_proves(const BitGraph& g,
                                                         const std::vector<int>& keep,
                                                         const std::vector<int>& clique) {
-  const int w = g.words();
   const int size = static_cast<int>(clique.size());
+  if (size == 0) return keep.empty();
+  const int w = g.words();
   const auto words = static_cast<std::size_t>(w);
-  std::vector<Word> core(words, 0), classes(static_cast<std::size_t>(size) * words, 0);
+  std::vector<Word> core(words, 0);
   for (int v : keep) set_bit(core.data(), v);
   std::vector<Word> left = core, q(words), u(words);
   for (int v : clique) clear_bit(left.data(), v);
   int remaining = count_bits(left.data(), w);
   for (int c = 0; c < size && remaining > 0; ++c) {
-    Word* members = &classes[static_cast<std::size_t>(c) * words];
-    set_bit(members, clique[static_cast<std::size_t>(c)]);
     const Word* seed = g.row(clique[static_cast<std::size_t>(c)]);
     for (std::size_t t = 0; t < words; ++t) q[t] = left[t] & ~seed[t];
-    remaining -= take_class(g, left.data(), q.data(), 0, w, members);
+    remaining -= take_class(g, left.data(), q.data(), 0, w);
   }
   if (remaining == 0) return true;
   if (remaining > kMaxLeftOver) return false;
-  // A clique through an uncoloured v lies in v's row: it has at most one member per class that
-  // row meets, and v's uncoloured neighbours. Failing that count, v's neighbours in the core
-  // coloured greedily with size - 1 colours show that none of them holds `size` pairwise adjacent.
+  // Every clique larger than `clique` holds a vertex left uncoloured (the classes hold one member
+  // of it each at most), and lies in that vertex's row. A left vertex v whose neighbours in the
+  // core take no more than size - 1 greedy colours is in no such clique, and leaves the core for
+  // the next one's check.
   bool proven = true;
   for_each_bit(left.data(), w, [&](int v) {
     if (!proven) return;
     const Word* rv = g.row(v);
-    int most = 1 + count_and_inline(rv, left.data(), w);
-    for (int c = 0; c < size && most <= size; ++c) {
-      const Word* members = &classes[static_cast<std::size_t>(c) * words];
-      for (int t = 0; t < w; ++t)
-        if (rv[t] & members[t]) {
-          ++most;
-          break;
-        }
-    }
-    if (most <= size) return;
     for (std::size_t t = 0; t < words; ++t) u[t] = rv[t] & core[t];
     proven = colour_greedily(g, u.data(), q.data(), w, count_bits(u.data(), w), size - 1) == 0;
+    clear_bit(core.data(), v);
   });
   return proven;
 }

@@ -41,11 +41,11 @@ std::vector<int> k_core(const BitGraph& g, std::vector<int> deg, int k);
 /// Whether no clique among `keep` (the |clique|-core, sorted) is larger than `clique`, proven by a
 /// colouring with |clique| colours: colour class c starts from clique[c] and takes, in increasing
 /// id, every vertex of keep left that is adjacent to none it holds. A clique larger than `clique`
-/// then has a vertex v left uncoloured, and at most 1 + (classes meeting v's row) + (uncoloured
-/// neighbours of v) members, or else no more than a greedy colouring of v's neighbours in keep
-/// allows; each of at most kMaxLeftOver such v is checked. False when that does not prove it (the
-/// exact search decides). Costs a pass over keep's rows, where the search's proof
-/// first decomposes the core.
+/// then holds a vertex left uncoloured; each of at most kMaxLeftOver such vertices is shown to be
+/// in none by a greedy colouring of its neighbours in keep with |clique| - 1 colours (a vertex so
+/// shown leaves keep for the next one's check). False when that does not prove it (the exact
+/// search decides). Costs a pass over keep's rows, where the search's proof first decomposes the
+/// core.
 bool colouring_from_clique_proves(const BitGraph& g, const std::vector<int>& keep,
                                   const std::vector<int>& clique);
 constexpr int kMaxLeftOver = 64;

@@ -91,7 +91,9 @@ bool proven_without_relaxation(const PyramidGraph& g, int level, const CliquePar
   int bound = 0;
   std::vector<int> lower;
   if (bits || detail::dense_level(g, level)) {
-    // The same steps on the level's bit rows (dense_level.hpp): the same clique, bound and proof.
+    // The same steps on the level's bit rows (dense_level.hpp), with the same clique, bound and
+    // search; before the search, a colouring seeded by the bound's clique may prove it (then a
+    // level is proven that the search might not prove within cascade_check_nodes).
     detail::BitGraph own;
     if (!bits) {
       own = detail::level_bits(g, level);

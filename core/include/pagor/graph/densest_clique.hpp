@@ -71,9 +71,10 @@ struct CliqueParams {
   /// on every vertex.
   bool prune = true;
   /// Binary affinity: before the relaxation, a bounded exact search (cascade_check_nodes) from the
-  /// lower bound (the previous level's clique or greedy cliques); when it proves that clique
-  /// maximum, the relaxation is skipped: it could not return a larger one. Off: the relaxation
-  /// always runs (the paper's Alg. 1).
+  /// lower bound (the previous level's clique grown, or greedy cliques on a cold level; on a dense
+  /// level first a colouring seeded by that clique); when it proves that clique maximum, the
+  /// relaxation is skipped: it could not return a larger one. Off: the relaxation always runs (the
+  /// paper's Alg. 1).
   bool prove_first = true;
   /// prove_first applies to levels with at least this many edges: on smaller graphs the
   /// relaxation costs well under a millisecond, and its choice among equal-size cliques is kept
@@ -95,8 +96,9 @@ struct CliqueParams {
   /// exact: wall-time budget of the whole pyramid [ms]; a level may use what the levels before it
   /// left of their share; 0: none
   double exact_time_budget_ms = 1000.0;
-  /// greedy cliques grown from the highest cores for the lower bound (on a warm level that a
-  /// search proves, the previous level's clique grown stands in for them)
+  /// greedy cliques grown from the highest cores for the lower bound (prove_first's search on a
+  /// warm level starts from the previous level's clique grown instead; the relaxation still grows
+  /// them)
   int greedy_starts = 4;
   int max_swaps = 64;  ///< improving swaps (one member out, two in) tried on the rounded clique
   /// Wall time one registration may take up to the end of its clique step, counted from the start
@@ -121,9 +123,10 @@ struct CliqueParams {
        "less than the greedy clique."});
     v(&CliqueParams::prove_first,
       {"prove_first",
-       "Binary affinity: first try to prove the lower bound's clique maximum by a bounded exact "
-       "search (cascade_check_nodes); when that succeeds the relaxation is skipped. Off: the "
-       "relaxation always runs (the paper's Alg. 1)."});
+       "Binary affinity: first try to prove the lower bound's clique maximum (on a dense level by "
+       "a colouring seeded by that clique, then) by a bounded exact search (cascade_check_nodes); "
+       "when that succeeds the relaxation is skipped. Off: the relaxation always runs (the "
+       "paper's Alg. 1)."});
     v(&CliqueParams::prove_first_min_edges,
       {"prove_first_min_edges",
        "prove_first applies to levels with at least this many edges; on smaller graphs the "
@@ -168,8 +171,9 @@ struct CliqueParams {
        "ms", Range::closed(1, 3.6e6), 0.0, true});
     v(&CliqueParams::greedy_starts,
       {"greedy_starts",
-       "Greedy cliques grown from the highest cores for the pruning's bound (a warm level that "
-       "prove_first proves starts from the previous level's clique instead).",
+       "Greedy cliques grown from the highest cores for the pruning's bound (prove_first's search "
+       "on a warm level starts from the previous level's clique grown instead; the relaxation "
+       "still grows them).",
        "", Range::closed(1, 1000)});
     v(&CliqueParams::max_swaps,
       {"max_swaps", "Improving swaps (one member out, two in) tried on the rounded clique.", "",
