@@ -8,8 +8,8 @@
 #include "json_objects.hpp"
 #include "pagor/errors.hpp"
 #include "pagor/pipeline.hpp"
+#include "pagor/registration.hpp"
 #include "pagor/report.hpp"
-#include "pagor/verify/diagnosis.hpp"
 
 namespace pagor::python {
 namespace {
@@ -48,9 +48,10 @@ nlohmann::json run_pipeline(Pipeline& pipeline, const std::string& source_name,
   try {
     const py::gil_scoped_release release;
     pipeline.run(check_signals, &cancel);
-    const std::optional<Diagnosis> diagnosis = diagnose(pipeline);
-    report = nlohmann::json::parse(
-        registration_report_json(pipeline, source_name, target_name, diagnosis));
+    RegistrationContext context;
+    context.source_name = source_name;
+    context.target_name = target_name;
+    report = report_object(make_registration(pipeline, context));
   } catch (const Cancelled&) {
     if (!interrupted) throw;
   }

@@ -14,7 +14,7 @@
 #include "pagor/io/clouds.hpp"
 #include "pagor/io/correspondence_file.hpp"
 #include "pagor/pipeline.hpp"
-#include "pagor/report.hpp"
+#include "pagor/registration.hpp"
 #include "pagor/sets/association_problem.hpp"
 #include "pagor/sets/pair_set.hpp"
 #include "pagor/sets/synthetic.hpp"
@@ -78,7 +78,7 @@ TEST_CASE("a matcher's correspondences register without clouds, with the default
     const InlierQuality q = inlier_quality(c.vertices, problem.inlier);
     CHECK(q.precision > 0.9);
   }
-  const std::string report = registration_report_json(p, "matches", "matches");
+  const std::string report = to_json(make_registration(p, {"matches", "matches"}));
   CHECK(report.find("\"selected_by\": \"without_clouds\"") != std::string::npos);
   const auto origin = nlohmann::json::parse(report)["correspondences"]["origin"];
   CHECK(origin["matcher"]["count"] == 1000);
@@ -109,7 +109,7 @@ TEST_CASE("the exact solver's proof, bound and budget reach the report") {
     CHECK(c.upper_bound == static_cast<int>(c.vertices.size()));
     CHECK(c.budget == CliqueBudget::none);
   }
-  std::string report = registration_report_json(p, "matches", "matches");
+  std::string report = to_json(make_registration(p, {"matches", "matches"}));
   CHECK(report.find("\"clique_proven\": true") != std::string::npos);
   CHECK(report.find("\"clique_budget_hit\": \"none\"") != std::string::npos);
   // A budget of one node: a level that the colouring bound does not prove at once stops, and says
@@ -126,7 +126,7 @@ TEST_CASE("the exact solver's proof, bound and budget reach the report") {
       ++stopped;
     }
   }
-  report = registration_report_json(p, "matches", "matches");
+  report = to_json(make_registration(p, {"matches", "matches"}));
   CHECK((stopped == 0) == (report.find("\"clique_budget_hit\": \"nodes\"") == std::string::npos));
 }
 
@@ -320,7 +320,7 @@ TEST_CASE("gedi-dev fused with the landmarks of the semreg-dev clouds") {
   CHECK(l.clique_true_origin.matcher > 0);
   CHECK(l.clique_true_origin.landmark + l.clique_true_origin.matcher == l.clique_true);
   CHECK(d->explanation.find("landmark") != std::string::npos);
-  const auto report = nlohmann::json::parse(registration_report_json(p, "s", "t", d));
+  const auto report = nlohmann::json::parse(to_json(make_registration(p, {"s", "t"})));
   const auto& origin = report["correspondences"]["origin"];
   CHECK(origin["landmark"]["count"] == all.landmark);
   CHECK(origin["matcher"]["count"] == all.matcher);
@@ -362,7 +362,7 @@ TEST_CASE("a pair's time budget stops the clique search with the best cliques so
       return s.find("pair_time_budget_ms") != std::string::npos;
     }));
     const nlohmann::json j =
-        nlohmann::json::parse(registration_report_json(p, "matches", "matches"));
+        nlohmann::json::parse(to_json(make_registration(p, {"matches", "matches"})));
     CHECK(j["pair_time_budget_hit"] == true);
   }
   // With the default budget the same problem finishes: nothing is cut short.

@@ -3,7 +3,7 @@
 
 #include "pagor/errors.hpp"
 #include "pagor/pipeline.hpp"
-#include "pagor/report.hpp"
+#include "pagor/registration.hpp"
 #include "pagor/sets/synthetic.hpp"
 
 using namespace pagor;
@@ -162,7 +162,7 @@ TEST_CASE("running without input is an error") {
 TEST_CASE("the JSON report carries the documented top-level keys") {
   Pipeline p = synthetic_pipeline();
   p.run();
-  const std::string json = registration_report_json(p, "s", "t");
+  const std::string json = to_json(make_registration(p, {"s", "t"}));
   for (const char* key :
        {"\"T_target_source\"", "\"timings_ms\"", "\"levels\"", "\"selected_level\"",
         "\"ground_truth\"", "\"schema\": \"pagor.register/1\"", "\"clique\""})

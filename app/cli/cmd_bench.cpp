@@ -80,20 +80,20 @@ void print_summary(const BenchmarkSummary& s, const Config& config) {
 }  // namespace
 
 std::vector<Option> bench_options() {
-  return {{"manifest", 1, "FILE",
+  std::vector<Option> o = {{"manifest", 1, "FILE",
            "pairs manifest: 'SOURCE TARGET [gt=FILE] [source_labels=FILE] [target_labels=FILE] "
            "[name=TEXT] [overlap=no]' per line, paths relative to it"},
           {"kitti-root", 1, "DIR", "KITTI root holding sequences/ (with --pairs)"},
           {"sequence", 1, "SEQ", "KITTI sequence (default 00)"},
           {"pairs", 1, "FILE", "KITTI pairs file: 'source target' frame numbers per line"},
-          {"config", 1, "FILE", "configuration JSON (absent keys: the preset's values)"},
-          {"preset", 1, "NAME", "base configuration: default, paper (the published one) or indoor"},
           {"out", 1, "FILE", "write one JSON line per pair (pagor.register/1 without config)"},
           {"resume", 0, "", "with --out: continue a killed run, skipping pairs already written"},
-          {"threads", 1, "N", "threads for landmarks, graph and verification (default 1)"},
+          threads_option(),
           {"compare-thresholds", 0, "",
            "instead: the pyramid vs each threshold alone vs each alone with the exact maximum "
            "clique (TEASER++-like), success rates"}};
+  for (Option& c : config_options_for()) o.push_back(std::move(c));
+  return o;
 }
 
 namespace {

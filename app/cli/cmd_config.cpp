@@ -10,7 +10,7 @@ namespace pagor::cli {
 std::vector<Option> config_options() {
   return {
       {"print-default", 0, "", "print the full default configuration as JSON"},
-      {"preset", 1, "NAME", "print a preset (default, paper, indoor) as JSON"},
+      {"preset", 1, "NAME", "print a preset (" + preset_list() + ") as JSON"},
       {"check", 1, "FILE", "validate a configuration file and print it with defaults filled in"},
       {"describe", 0, "",
        "print the reference of every parameter (key, default, allowed values, unit, meaning) "

@@ -11,11 +11,11 @@
 namespace pagor::cli {
 
 std::vector<Option> indoor_options() {
-  return {{"out", 1, "DIR", "directory to write the sequence into (created if needed)"},
+  std::vector<Option> o = {{"out", 1, "DIR", "directory to write the sequence into (created if needed)"},
           {"scans", 1, "N", "number of scans along the trajectory (default 120)"},
-          {"seed", 1, "S", "seed of the building, trajectory and noise (default 1)"},
-          {"config", 1, "FILE", "configuration JSON for the detector (section indoor)"},
-          {"preset", 1, "NAME", "base configuration (default: indoor)"}};
+          {"seed", 1, "S", "seed of the building, trajectory and noise (default 1)"}};
+  for (Option& c : config_options_for("indoor")) o.push_back(std::move(c));
+  return o;
 }
 
 int run_indoor(const Args& args) {

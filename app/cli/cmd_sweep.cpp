@@ -70,12 +70,10 @@ void print_table(const SweepResult& r, const Config& base) {
 }  // namespace
 
 std::vector<Option> sweep_options() {
-  return {{"manifest", 1, "FILE", "pairs manifest (as for bench)"},
+  std::vector<Option> o = {{"manifest", 1, "FILE", "pairs manifest (as for bench)"},
           {"kitti-root", 1, "DIR", "KITTI root holding sequences/ (with --pairs)"},
           {"sequence", 1, "SEQ", "KITTI sequence (default 00)"},
           {"pairs", 1, "FILE", "KITTI pairs file: 'source target' frame numbers per line"},
-          {"config", 1, "FILE", "base configuration JSON"},
-          {"preset", 1, "NAME", "base preset: default or paper"},
           {"thresholds", 1, "SETS", "threshold sets, e.g. '0.02,0.04,0.08;0.03,0.06'"},
           {"mu", 1, "LIST", "verification truncations [m], e.g. '0.5,1,2'"},
           {"trim", 1, "LIST", "TRIM kinds: ratio,difference"},
@@ -88,7 +86,9 @@ std::vector<Option> sweep_options() {
           {"csv", 1, "FILE", "write the table as CSV"},
           {"plot", 1, "PNG", "draw success and upper bound per setting as a PNG"},
           {"plot-csv", 1, "FILE", "write the plotted numbers as CSV"},
-          {"threads", 1, "N", "threads for landmarks, graph and verification (default 1)"}};
+          threads_option()};
+  for (Option& c : config_options_for()) o.push_back(std::move(c));
+  return o;
 }
 
 int run_sweep_command(const Args& args) {

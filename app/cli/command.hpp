@@ -10,6 +10,7 @@
 #include "common/pair_args.hpp"
 #include "pagor/config.hpp"
 #include "pagor/pipeline.hpp"
+#include "pagor/registration.hpp"
 #include "pagor/sets/dataset.hpp"
 #include "pagor/sets/pair_set.hpp"
 
@@ -51,6 +52,14 @@ int run_demo(const Args& args);
 /// `--config FILE` on top of `--preset NAME` (default: the defaults).
 Config config_from_args(const Args& args);
 
+/// The options `config_from_args` reads: `--config FILE` and `--preset NAME` (the names from
+/// preset_names(); `default_preset` when absent).
+std::vector<Option> config_options_for(const std::string& default_preset = "default");
+/// `--threads N`: threads for the stages that parallelise inside a pair.
+Option threads_option();
+/// The presets' names, "default, paper, indoor".
+std::string preset_list();
+
 /// Options selecting one cloud: `--source/--source-labels`, `--kitti-root/--sequence/--frame`,
 /// or `--synthetic`.
 std::vector<Option> single_cloud_options();
@@ -63,9 +72,14 @@ LoadedCloud load_single_cloud(const Args& args, std::string& name);
 /// the file and the key.
 void with_config_origin(const Args& args, const std::function<void()>& stage);
 
-/// Prints one line per level whose clique search says more than its size: a proof of maximality
-/// (exact solver), or a budget that cut the search short, with the bound it reached.
-void print_clique_search(const Pipeline& p);
+/// Prints a registration as `pagor register` shows it (print_registration.cpp).
+void print_registration(const Registration& registration);
+/// The registration of a pipeline that has run: printed, and written to `--json` when given.
+void report_registration(const Args& args, const Pipeline& pipeline,
+                         const RegistrationContext& context);
+
+/// Each acceptance test with its value and threshold, in one line: "overlap 0.45 >= 0.24, ...".
+std::string acceptance_tests_text(const Registration& registration);
 
 /// Prints a warning line on stderr.
 void warn(const std::string& message);

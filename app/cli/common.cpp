@@ -16,6 +16,23 @@ Config config_from_args(const Args& args) {
   return args.has("config") ? load_config(args.get("config"), preset) : preset_config(preset);
 }
 
+std::string preset_list() {
+  std::string names;
+  for (const std::string& n : preset_names()) names += (names.empty() ? "" : ", ") + n;
+  return names;
+}
+
+std::vector<Option> config_options_for(const std::string& default_preset) {
+  return {{"config", 1, "FILE", "configuration JSON (absent keys: the preset's values)"},
+          {"preset", 1, "NAME",
+           "base configuration: " + preset_list() + " (default " + default_preset +
+               "; paper: the published one)"}};
+}
+
+Option threads_option() {
+  return {"threads", 1, "N", "threads for landmarks, graph and verification (default 1)"};
+}
+
 std::vector<Option> single_cloud_options() {
   return {
       {"source", 1, "FILE", "cloud to read (.bin, .pcd, .ply)"},
@@ -59,23 +76,6 @@ void with_config_origin(const Args& args, const std::function<void()>& stage) {
   } catch (const ConfigError& e) {
     throw ConfigError((args.has("config") ? args.get("config") : "built-in defaults") + ": " +
                       e.what());
-  }
-}
-
-void print_clique_search(const Pipeline& p) {
-  const bool exact = p.config().clique.solver == CliqueSolver::exact;
-  for (const CliqueResult& c : p.cliques()) {
-    if (c.budget != CliqueBudget::none && c.upper_bound > static_cast<int>(c.vertices.size()))
-      std::printf("  level %d: clique search stopped by its %s budget: %zu members, at most %d\n",
-                  c.level, c.budget == CliqueBudget::nodes ? "node" : "time", c.vertices.size(),
-                  c.upper_bound);
-    else if (c.budget != CliqueBudget::none)  // stopped before any bound was reached
-      std::printf("  level %d: clique search stopped by its %s budget: %zu members, no bound\n",
-                  c.level, c.budget == CliqueBudget::nodes ? "node" : "time", c.vertices.size());
-    else if (exact && c.optimal)
-      std::printf("  level %d: clique of %zu proven maximum\n", c.level, c.vertices.size());
-    if (c.start == CliqueStart::fallback)
-      std::printf("  level %d: the warm start lost to a cold one and was dropped\n", c.level);
   }
 }
 

@@ -1,5 +1,6 @@
 #include "pagor/report.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <nlohmann/json.hpp>
 
@@ -10,16 +11,15 @@ namespace {
 
 using json = nlohmann::json;
 
-json matrix_json(const Transform& T) {
-  json rows = json::array();
-  for (int r = 0; r < 4; ++r) rows.push_back({T(r, 0), T(r, 1), T(r, 2), T(r, 3)});
-  return rows;
+// A finite number, or null (JSON has no infinity).
+json finite_or_null(double x) {
+  return std::isfinite(x) ? json(x) : json();
 }
 
-json counts_by_class(const LandmarkSet& set) {
-  json j = json::object();
-  for (const auto& c : set.classes) j[c.name] = c.landmarks;
-  return j;
+json error_json(const PoseError& e) {
+  return {{"translation_error_m", e.translation},
+          {"rotation_error_deg", e.rotation_deg},
+          {"success", e.success}};
 }
 
 // How a cloud's labels were read: the scheme in use, whether detected, and what they look like.
@@ -34,48 +34,27 @@ json labels_json(const LabelReading& r) {
 }
 
 // What refinement did; the errors before it when the ground truth is known.
-json refinement_json(const Pipeline& p) {
-  const RefinementResult& r = p.refinement();
-  json j = {{"enabled", p.config().refinement.enabled}, {"ran", r.ran}};
-  if (!r.ran) return j;
-  j["applied"] = r.applied;
-  j["reason"] = r.reason;
-  j["iterations"] = r.iterations;
-  j["pairs"] = r.pairs;
-  j["D_before"] = r.score_before;
-  j["D_after"] = r.score_after;
-  j["correction_translation_m"] = r.correction_translation;
-  j["correction_rotation_deg"] = r.correction_rotation;
-  if (const auto e = p.unrefined_error())
-    j["before"] = {{"translation_error_m", e->translation},
-                   {"rotation_error_deg", e->rotation_deg},
-                   {"success", e->success}};
+json refinement_json(const Registration& r) {
+  const RefinementResult& f = r.refinement;
+  json j = {{"enabled", r.config.refinement.enabled}, {"ran", f.ran}};
+  if (!f.ran) return j;
+  j["applied"] = f.applied;
+  j["reason"] = f.reason;
+  j["iterations"] = f.iterations;
+  j["pairs"] = f.pairs;
+  j["D_before"] = f.score_before;
+  j["D_after"] = f.score_after;
+  j["correction_translation_m"] = f.correction_translation;
+  j["correction_rotation_deg"] = f.correction_rotation;
+  if (r.unrefined_error) j["before"] = error_json(*r.unrefined_error);
   return j;
 }
 
-// Per origin: the correspondences, the selected clique's members and its pose's inliers.
-json origin_json(const Pipeline& p) {
-  const auto& items = p.correspondences().items;
-  const OriginCounts all = count_by_origin(items);
-  OriginCounts clique, inliers;
-  const int sel = p.selected_level();
-  if (sel >= 0 && static_cast<std::size_t>(sel) < p.cliques().size()) {
-    clique = count_by_origin(items, p.cliques()[static_cast<std::size_t>(sel)].vertices);
-    if (static_cast<std::size_t>(sel) < p.poses().size())
-      inliers = count_by_origin(items, p.poses()[static_cast<std::size_t>(sel)].inliers);
-  }
-  const auto one = [](std::size_t n, std::size_t c, std::size_t i) {
-    return json{{"count", n}, {"selected_clique", c}, {"selected_inliers", i}};
-  };
-  return {{"landmark", one(all.landmark, clique.landmark, inliers.landmark)},
-          {"matcher", one(all.matcher, clique.matcher, inliers.matcher)}};
-}
-
 // The configured pose model and, for `auto` with clouds, the scans' ground planes that decided it.
-json gravity_json(const Pipeline& p) {
-  json j = {{"configured", to_string(p.config().gnc.model)},
-            {"used", to_string(p.gnc_params().model)}};
-  if (const auto& g = p.ground_planes()) {
+json pose_model_json(const Registration& r) {
+  json j = {{"configured", to_string(r.pose_model_configured)},
+            {"used", to_string(r.pose_model_used)}};
+  if (const auto& g = r.ground_planes) {
     const auto plane = [](const GroundPlane& x) {
       return json{{"found", x.found}, {"tilt_deg", x.tilt_deg}, {"share", x.share}};
     };
@@ -85,138 +64,153 @@ json gravity_json(const Pipeline& p) {
   return j;
 }
 
-json report_object(const Pipeline& p, const std::string& source_name,
-                   const std::string& target_name) {
-  // Poses as the user's files have them (the pipeline's are between the clouds' own frames).
-  const auto pose_json = [&](const Transform& T) {
-    return matrix_json(to_file_frames(T, p.source().origin, p.target().origin));
-  };
-  json levels = json::array();
-  const auto& g = p.graph();
-  for (std::size_t l = 0; l < p.cliques().size(); ++l) {
-    const auto& c = p.cliques()[l];
-    const auto& pose = p.poses()[l];
-    const double D = p.verification().scores.size() > l ? p.verification().scores[l] : HUGE_VAL;
-    json level = {{"level", l},
-                  {"epsilon", g.thresholds[l]},
-                  {"vertices", g.active_vertices(static_cast<int>(l))},
-                  {"edges", g.edges_at_level[l]},
-                  {"clique_size", c.vertices.size()},
-                  {"clique", c.vertices},
-                  {"clique_time_ms", c.time_ms},
-                  {"clique_gradient_steps", c.gradient_steps},
-                  {"clique_penalty_updates", c.penalty_updates},
-                  {"clique_proven", c.optimal},
-                  {"clique_upper_bound", c.upper_bound > 0 ? json(c.upper_bound) : json()},
-                  {"clique_budget_hit", to_string(c.budget)},
-                  {"clique_start", to_string(c.start)},
-                  {"pose_valid", pose.valid},
-                  {"pose_model", to_string(pose.model)},
-                  {"inliers", pose.inliers.size()},
-                  {"T_target_source", pose.valid ? pose_json(pose.T_target_source) : json()},
-                  {"score_D", std::isfinite(D) ? json(D) : json()}};
-    if (!pose.valid) level["failure"] = pose.failure;
-    const VerificationResult& v = p.verification();
-    if (l < v.support.size()) {  // selected without clouds
-      level["support"] = v.support[l];
-      level["support_score"] =
-          std::isfinite(v.support_scores[l]) ? json(v.support_scores[l]) : json();
-    }
-    if (l < p.level_errors().size() && p.level_errors()[l]) {
-      const auto& e = *p.level_errors()[l];
-      level["translation_error_m"] = e.translation;
-      level["rotation_error_deg"] = e.rotation_deg;
-      level["success"] = e.success;
-    }
-    levels.push_back(level);
+json level_json(const Registration& r, std::size_t l) {
+  const LevelSummary& s = r.levels[l];
+  json level = {{"level", l},
+                {"epsilon", s.epsilon},
+                {"vertices", s.vertices},
+                {"edges", s.edges},
+                {"clique_size", s.clique.size()},
+                {"clique", s.clique},
+                {"clique_time_ms", s.clique_time_ms},
+                {"clique_gradient_steps", s.clique_gradient_steps},
+                {"clique_penalty_updates", s.clique_penalty_updates},
+                {"clique_proven", s.clique_proven},
+                {"clique_upper_bound",
+                 s.clique_number_bound > 0 ? json(s.clique_number_bound) : json()},
+                {"clique_budget_hit", to_string(s.clique_budget)},
+                {"clique_start", to_string(s.clique_start)},
+                {"pose_valid", s.pose.valid},
+                {"pose_model", to_string(s.pose.model)},
+                {"inliers", s.pose.inliers.size()},
+                {"T_target_source", s.pose.valid ? matrix_json(s.pose.T_target_source) : json()},
+                {"score_D", finite_or_null(s.score_D)}};
+  if (!s.pose.valid) level["failure"] = s.pose.failure;
+  if (s.support) {
+    level["support"] = *s.support;
+    level["support_score"] = finite_or_null(s.support_score);
   }
-  const auto selected = p.selected_transform();
-  json gt = nullptr;
-  if (p.ground_truth()) {
-    gt = {{"T_target_source", pose_json(*p.ground_truth())},
-          {"upper_bound", p.upper_bound_success()}};
-    if (const auto e = p.selected_error()) {
-      gt["translation_error_m"] = e->translation;
-      gt["rotation_error_deg"] = e->rotation_deg;
-      gt["success"] = e->success;
-    } else {
-      gt["success"] = false;
-    }
+  if (s.error) {
+    level["translation_error_m"] = s.error->translation;
+    level["rotation_error_deg"] = s.error->rotation_deg;
+    level["success"] = s.error->success;
   }
-  json per_class = json::object();
-  const auto& corr = p.correspondences();
-  for (std::size_t c = 0; c < corr.per_class.size() && c < p.source_landmarks().classes.size(); ++c)
-    per_class[p.source_landmarks().classes[c].name] = corr.per_class[c];
-  json timings = json::object();
-  double total = 0;
-  for (int s = 0; s < kStageCount; ++s) total += p.time_ms(static_cast<Stage>(s));
-  timings["landmarks"] = p.time_ms(Stage::landmarks);
-  timings["correspondences"] = p.time_ms(Stage::correspondences);
-  timings["graph"] = p.time_ms(Stage::graph);
-  timings["clique"] = p.time_ms(Stage::clique);
-  timings["gnc"] = p.time_ms(Stage::gnc);
-  timings["verification"] = p.time_ms(Stage::verification_prep) + p.time_ms(Stage::verification);
-  timings["refinement"] = p.time_ms(Stage::refinement);
-  timings["acceptance"] = p.time_ms(Stage::acceptance);
-  timings["evaluation"] = p.time_ms(Stage::evaluation);
-  timings["total"] = total;
-
-  json out = {
-      {"schema", "pagor.register/1"},
-      {"source", source_name},
-      {"target", target_name},
-      {"T_target_source", selected ? pose_json(*selected) : json()},
-      {"selected_level", p.selected_level() >= 0 ? json(p.selected_level()) : json()},
-      {"levels", levels},
-      {"selected_by", p.has_clouds() ? "score_D" : "without_clouds"},
-      {"pose_model", gravity_json(p)},
-      {"acceptance",
-       {{"accepted", p.acceptance().accepted},
-        {"verified", p.acceptance().verified},
-        {"overlap", p.acceptance().overlap},
-        {"inliers", p.acceptance().inliers},
-        {"margin", p.acceptance().margin},
-        {"sharpness", p.acceptance().sharpness},
-        {"reason", p.acceptance().reason}}},
-      {"refinement", refinement_json(p)},
-      {"ground_truth", gt},
-      {"correspondences",
-       {{"count", corr.items.size()},
-        {"candidates", corr.candidates},
-        {"capped", corr.capped},
-        {"per_class", per_class},
-        {"origin", origin_json(p)}}},
-      {"landmarks",
-       {{"source", counts_by_class(p.source_landmarks())},
-        {"target", counts_by_class(p.target_landmarks())}}},
-      {"labels",
-       {{"source", labels_json(p.source_landmarks().labels)},
-        {"target", labels_json(p.target_landmarks().labels)}}},
-      {"timings_ms", timings},
-      {"warnings", p.warnings()},
-      {"pair_time_budget_hit", p.pair_time_budget_hit()},
-      {"config", json::parse(config_to_json(p.config()))}};
-  return out;
+  if (s.file_inliers) {
+    level["precision"] = s.file_inliers->precision;
+    level["recall"] = s.file_inliers->recall;
+    level["true_inliers"] = s.file_inliers->true_inliers;
+  }
+  return level;
 }
 
-// Paths are bytes, not always UTF-8: replace what JSON cannot hold rather than throw.
-std::string dump(const json& report, int indent) {
-  return report.dump(indent, ' ', false, nlohmann::json::error_handler_t::replace);
+json ground_truth_json(const Registration& r) {
+  if (!r.T_target_source_gt) return nullptr;
+  json gt = {{"T_target_source", matrix_json(*r.T_target_source_gt)},
+             {"upper_bound", r.any_level_succeeds}};
+  if (r.error) {
+    gt["translation_error_m"] = r.error->translation;
+    gt["rotation_error_deg"] = r.error->rotation_deg;
+    gt["success"] = r.error->success;
+  } else {
+    gt["success"] = false;
+  }
+  return gt;
+}
+
+json acceptance_json(const Registration& r) {
+  const Acceptance& a = r.acceptance;
+  return {{"accepted", a.accepted}, {"verified", a.verified}, {"overlap", a.overlap},
+          {"inliers", a.inliers},   {"margin", a.margin},     {"sharpness", a.sharpness},
+          {"reason", a.reason}};
+}
+
+json correspondences_json(const Registration& r) {
+  json per_class = json::object();
+  for (const ClassCount& c : r.classes) per_class[c.name] = c.correspondences;
+  const auto one = [](std::size_t n, std::size_t c, std::size_t i) {
+    return json{{"count", n}, {"selected_clique", c}, {"selected_inliers", i}};
+  };
+  json j = {{"count", r.correspondences},
+            {"candidates", r.correspondence_candidates},
+            {"capped", r.correspondences_capped},
+            {"per_class", per_class},
+            {"origin",
+             {{"landmark", one(r.origin_all.landmark, r.origin_clique.landmark,
+                               r.origin_inliers.landmark)},
+              {"matcher", one(r.origin_all.matcher, r.origin_clique.matcher,
+                              r.origin_inliers.matcher)}}}};
+  if (const auto& f = r.matches_file) {  // what only the file knows
+    j["file"] = f->path;
+    j["weights"] = f->weighted;
+    j["inlier_flags"] = !f->inliers.empty();
+    j["flagged_inliers"] =
+        f->inliers.empty() ? json() : json(std::count_if(f->inliers.begin(), f->inliers.end(), [](char x) { return x != 0; }));
+  }
+  return j;
+}
+
+json timings_json(const Registration& r) {
+  const auto ms = [&](Stage s) { return r.stage_ms[static_cast<std::size_t>(s)]; };
+  return {{"landmarks", ms(Stage::landmarks)},
+          {"correspondences", ms(Stage::correspondences)},
+          {"graph", ms(Stage::graph)},
+          {"clique", ms(Stage::clique)},
+          {"gnc", ms(Stage::gnc)},
+          {"verification", ms(Stage::verification_prep) + ms(Stage::verification)},
+          {"refinement", ms(Stage::refinement)},
+          {"acceptance", ms(Stage::acceptance)},
+          {"evaluation", ms(Stage::evaluation)},
+          {"total", r.total_ms}};
 }
 
 }  // namespace
 
-std::string registration_report_json(const Pipeline& p, const std::string& source_name,
-                                     const std::string& target_name, int indent) {
-  return dump(report_object(p, source_name, target_name), indent);
+nlohmann::json matrix_json(const Transform& T) {
+  json rows = json::array();
+  for (int r = 0; r < 4; ++r) rows.push_back({T(r, 0), T(r, 1), T(r, 2), T(r, 3)});
+  return rows;
 }
 
-std::string registration_report_json(const Pipeline& p, const std::string& source_name,
-                                     const std::string& target_name,
-                                     const std::optional<Diagnosis>& diagnosis, int indent) {
-  json out = report_object(p, source_name, target_name);
-  out["diagnosis"] = diagnosis ? json::parse(diagnosis_json(*diagnosis)) : json();
-  return dump(out, indent);
+nlohmann::json report_object(const Registration& r, bool with_config) {
+  json levels = json::array();
+  for (std::size_t l = 0; l < r.levels.size(); ++l) levels.push_back(level_json(r, l));
+  json landmarks_source = json::object(), landmarks_target = json::object();
+  for (const ClassCount& c : r.classes) {
+    landmarks_source[c.name] = c.source;
+    landmarks_target[c.name] = c.target;
+  }
+  json out = {
+      {"schema", "pagor.register/1"},
+      {"source", r.source_name},
+      {"target", r.target_name},
+      {"T_target_source", r.T_target_source ? matrix_json(*r.T_target_source) : json()},
+      {"selected_level", r.selected_level >= 0 ? json(r.selected_level) : json()},
+      {"levels", levels},
+      {"selected_by", to_string(r.selected_by)},
+      {"pose_model", pose_model_json(r)},
+      {"acceptance", acceptance_json(r)},
+      {"refinement", refinement_json(r)},
+      {"ground_truth", ground_truth_json(r)},
+      {"correspondences", correspondences_json(r)},
+      {"landmarks", {{"source", landmarks_source}, {"target", landmarks_target}}},
+      {"labels", {{"source", labels_json(r.source_labels)}, {"target", labels_json(r.target_labels)}}},
+      {"timings_ms", timings_json(r)},
+      {"warnings", r.warnings},
+      {"pair_time_budget_hit", r.pair_time_budget_hit}};
+  if (with_config) out["config"] = json::parse(config_to_json(r.config));
+  out["diagnosis"] = r.diagnosis ? json::parse(diagnosis_json(*r.diagnosis)) : json();
+  return out;
+}
+
+std::string dump_report(const nlohmann::json& report, int indent) {
+  // Paths are bytes, not always UTF-8: replace what JSON cannot hold rather than throw. An indent
+  // is a number of spaces a reader can bear, not a buffer size.
+  return report.dump(std::clamp(indent, -1, 16), ' ', false,
+                     nlohmann::json::error_handler_t::replace);
+}
+
+std::string to_json(const Registration& registration, int indent, bool with_config) {
+  return dump_report(report_object(registration, with_config), indent);
 }
 
 }  // namespace pagor

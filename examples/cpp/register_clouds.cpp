@@ -9,21 +9,20 @@
 /// Registers `source` to `target` (clouds from pagor::load_cloud(path, labels_path).cloud, or
 /// filled by you: points [m], optional labels) and prints the transform and the verdict.
 void register_clouds(pagor::PointCloud source, pagor::PointCloud target) {
-  pagor::Config config = pagor::default_config();  // or pagor::load_config("my.json")
-  pagor::Pipeline pipeline(config);
-  pipeline.set_input(std::move(source), std::move(target));
-  pipeline.run();  // throws pagor::ConfigError, pagor::InputError
-  if (const auto T = pipeline.selected_transform()) {
-    std::printf("T_target_source (level %d):\n", pipeline.selected_level());
-    for (int r = 0; r < 4; ++r)
-      std::printf("  %10.4f %10.4f %10.4f %10.4f\n", (*T)(r, 0), (*T)(r, 1), (*T)(r, 2),
-                  (*T)(r, 3));
+  const pagor::Config config = pagor::default_config();  // or pagor::load_config("my.json")
+  // Throws pagor::ConfigError, pagor::InputError.
+  const pagor::Registration r = pagor::register_clouds(std::move(source), std::move(target), config);
+  if (r.T_target_source) {
+    const pagor::Transform& T = *r.T_target_source;
+    std::printf("T_target_source (level %d):\n", r.selected_level);
+    for (int row = 0; row < 4; ++row)
+      std::printf("  %10.4f %10.4f %10.4f %10.4f\n", T(row, 0), T(row, 1), T(row, 2), T(row, 3));
   }
-  const pagor::Acceptance& verdict = pipeline.acceptance();
-  if (verdict.accepted)
-    std::printf("accepted: %.0f %% of the source aligned\n", 100.0 * verdict.overlap);
+  if (r.accepted())
+    std::printf("accepted: %.0f %% of the source aligned\n", 100.0 * r.acceptance.overlap);
   else
-    std::printf("rejected: %s\n", verdict.reason.c_str());
+    std::printf("rejected: %s\n", r.acceptance.reason.c_str());
+  // pagor::to_json(r) is what `pagor register --json` writes.
 }
 // end of snippet
 

@@ -8,7 +8,8 @@
 #include "pagor/errors.hpp"
 #include "pagor/io/correspondence_file.hpp"
 #include "pagor/sets/pair_set.hpp"
-#include "pagor/report.hpp"
+#include "pagor/io/clouds.hpp"
+#include "pagor/registration.hpp"
 
 namespace pagor::studio {
 
@@ -211,10 +212,9 @@ void Worker::handle(const Request& request) {
 
 namespace {
 
-// The diagnosis and each verification point's contribution to D, for the diagnosis panel and
+// The graph and each verification point's contribution to D, for the diagnosis panel and
 // the 3D view; computed here, on the worker thread, never in the UI.
 void add_diagnosis(const Pipeline& p, Snapshot& s) {
-  s.diagnosis = diagnose(p);
   s.graph = std::make_shared<const PyramidGraph>(p.graph());
   const Verifier* v = p.verifier();
   if (!v) return;
@@ -226,31 +226,16 @@ void add_diagnosis(const Pipeline& p, Snapshot& s) {
   if (p.ground_truth()) s.gt_contribution = point_contributions(*v, *p.ground_truth(), mu);
 }
 
-// What only a correspondences file knows, as pagor register --correspondences adds it: its name,
-// its inlier flags and each level's precision and recall against them.
-void add_file_details(nlohmann::json& report, const Pipeline& p, const std::string& file,
-                      bool weighted, const std::vector<char>& inlier) {
-  std::size_t flagged = 0;
-  for (char f : inlier) flagged += f != 0;
-  nlohmann::json& c = report["correspondences"];
-  c["file"] = file;
-  c["weights"] = weighted;
-  c["inlier_flags"] = !inlier.empty();
-  c["flagged_inliers"] = inlier.empty() ? nlohmann::json() : nlohmann::json(flagged);
-  if (inlier.empty() || p.matches().size() != p.correspondences().items.size()) return;
-  for (std::size_t l = 0; l < p.cliques().size(); ++l) {
-    const InlierQuality q = inlier_quality(p.cliques()[l].vertices, inlier);
-    nlohmann::json& level = report["levels"][l];
-    level["precision"] = q.precision;
-    level["recall"] = q.recall;
-    level["true_inliers"] = q.true_inliers;
-  }
-}
-
 }  // namespace
 
 std::shared_ptr<Snapshot> Worker::make_snapshot(std::uint64_t request) const {
   const Pipeline& p = pipeline_;
+  RegistrationContext context;
+  context.source_name = source_name_;
+  context.target_name = target_name_;
+  if (!matches_file_.empty())
+    context.matches_file = MatchesFileInfo{matches_file_, matches_weighted_, inlier_flags_};
+  const Registration r = make_registration(p, context);
   auto s = std::make_shared<Snapshot>();
   s->request = request;
   s->data_generation = data_generation_;
@@ -260,47 +245,44 @@ std::shared_ptr<Snapshot> Worker::make_snapshot(std::uint64_t request) const {
   s->ground_truth = ground_truth_;
   s->plan = plan_;
   s->scan_columns = scan_columns_;
-  s->config = p.config();
+  s->config = r.config;
   s->source_landmarks = p.source_landmarks();
   s->target_landmarks = p.target_landmarks();
   s->correspondences = p.correspondences().items;
-  s->correspondences_capped = p.correspondences().capped;
-  const auto& g = p.graph();
-  for (std::size_t l = 0; l < p.cliques().size(); ++l) {
+  s->correspondences_capped = r.correspondences_capped;
+  for (const LevelSummary& l : r.levels) {
     LevelView v;
-    v.epsilon = g.thresholds[l];
-    v.vertices = g.active_vertices(static_cast<int>(l));
-    v.edges = g.edges_at_level[l];
-    v.clique = p.cliques()[l].vertices;
-    v.clique_proven = p.cliques()[l].optimal;
-    v.clique_upper_bound = p.cliques()[l].upper_bound;
-    v.clique_budget = p.cliques()[l].budget;
-    v.clique_start = p.cliques()[l].start;
-    v.pose = p.poses()[l];
-    v.score = p.verification().scores[l];
-    if (l < p.level_errors().size()) v.error = p.level_errors()[l];
+    v.epsilon = l.epsilon;
+    v.vertices = l.vertices;
+    v.edges = l.edges;
+    v.clique = l.clique;
+    v.clique_proven = l.clique_proven;
+    v.clique_upper_bound = l.clique_number_bound;
+    v.clique_budget = l.clique_budget;
+    v.clique_start = l.clique_start;
+    v.pose = l.pose;  // the studio draws the clouds in their own frames
+    if (v.pose.valid)
+      v.pose.T_target_source =
+          to_cloud_frames(v.pose.T_target_source, p.source().origin, p.target().origin);
+    v.score = l.score_D;
+    v.error = l.error;
     s->levels.push_back(std::move(v));
   }
-  s->selected = p.selected_level();
-  s->acceptance = p.acceptance();
-  s->refinement = p.refinement();
-  s->unrefined_error = p.unrefined_error();
-  s->upper_bound = p.upper_bound_success();
-  s->selected_error = p.selected_error();
-  for (int i = 0; i < kStageCount; ++i)
-    s->stage_ms[static_cast<std::size_t>(i)] = p.time_ms(static_cast<Stage>(i));
-  s->verification_points = p.verifier() ? p.verifier()->source_points().size() : 0;
-  s->warnings = p.warnings();
+  s->selected = r.selected_level;
+  s->acceptance = r.acceptance;
+  s->refinement = r.refinement;
+  s->unrefined_error = r.unrefined_error;
+  s->upper_bound = r.any_level_succeeds;
+  s->selected_error = r.error;
+  s->stage_ms = r.stage_ms;
+  s->verification_points = r.verification_points;
+  s->warnings = r.warnings;
   add_diagnosis(p, *s);
+  s->diagnosis = r.diagnosis;
   s->target_index = target_index_;
-  // As pagor register --json writes it.
-  auto report = nlohmann::json::parse(registration_report_json(p, source_name_, target_name_, -1));
-  report["diagnosis"] =
-      s->diagnosis ? nlohmann::json::parse(diagnosis_json(*s->diagnosis)) : nlohmann::json();
   s->matches_file = matches_file_;
   s->inlier_flags = inlier_flags_;
-  if (!matches_file_.empty()) add_file_details(report, p, matches_file_, matches_weighted_, inlier_flags_);
-  s->report_json = report.dump(2) + "\n";
+  s->report_json = to_json(r) + "\n";  // as pagor register --json writes it
   return s;
 }
 

@@ -1,40 +1,46 @@
 #pragma once
 /// \file report.hpp
-/// The JSON result of a registration, schema `pagor.register/1`:
+/// The JSON form of a `Registration` (registration.hpp), schema `pagor.register/1`:
 ///   T_target_source   selected 4x4 transform, row-major nested list (null if none)
 ///   selected_level    index into `levels` (null if none)
 ///   levels[]          epsilon, vertices, edges, clique (correspondence indices), clique_size,
-///                     pose_valid, T_target_source, inliers, score_D (null if invalid),
-///                     and with ground truth translation_error_m, rotation_error_deg, success
+///                     clique_proven, clique_upper_bound (a bound on the level's clique number),
+///                     pose_valid, T_target_source, inliers, score_D (null if invalid), with
+///                     ground truth translation_error_m, rotation_error_deg, success, and with a
+///                     correspondences file's inlier flags precision, recall, true_inliers
 ///   selected_by       "score_D" (verified on the clouds) or "without_clouds" (level_selection.hpp)
 ///   acceptance        accepted, verified (false: no clouds to verify on), overlap, inliers,
-///                     margin, reason (see acceptance.hpp)
+///                     margin, sharpness, reason (see acceptance.hpp)
 ///   ground_truth      T_target_source, translation_error_m, rotation_error_deg, success,
-///                     upper_bound (null without ground truth)
+///                     upper_bound: whether any level's candidate is right (null without truth)
 ///   correspondences   count, candidates, capped, per_class {name: count} (landmark ones),
 ///                     origin {landmark, matcher: {count, selected_clique, selected_inliers}}
-///                     (the selected level's clique members and GNC inliers of each origin)
+///                     (the selected level's clique members and GNC inliers of each origin),
+///                     and from a correspondences file: file, weights, inlier_flags,
+///                     flagged_inliers
 ///   landmarks         source / target: {class name: count}
-///   timings_ms        landmarks, correspondences, graph, clique, gnc, verification, evaluation,
-///   total warnings[], config (the full configuration used)
-///   diagnosis         the stage at fault (diagnosis.hpp; null without ground truth), when given
+///   labels            source / target: scheme, automatic, looks_like, margin_nats, mismatch
+///   timings_ms        landmarks, correspondences, graph, clique, gnc, verification, refinement,
+///                     acceptance, evaluation, total
+///   warnings[], pair_time_budget_hit, config (the full configuration used)
+///   diagnosis         the stage at fault (diagnosis.hpp); null without ground truth
+/// `to_json` (registration.hpp) writes it; these are its parts for writers that add members.
 
-#include <optional>
+#include <nlohmann/json.hpp>
 #include <string>
 
-#include "pagor/pipeline.hpp"
-#include "pagor/verify/diagnosis.hpp"
+#include "pagor/registration.hpp"
 
 namespace pagor {
 
-/// Serialises the state of a pipeline that has run. `source_name`/`target_name` describe inputs.
-std::string registration_report_json(const Pipeline& pipeline, const std::string& source_name,
-                                     const std::string& target_name, int indent = 2);
+/// A 4x4 transform as the report writes it: four rows of four numbers.
+nlohmann::json matrix_json(const Transform& T);
 
-/// The same with `diagnosis` as the member `diagnosis` (null when nullopt): what `pagor register
-/// --json` writes and what the Python module's Result.to_json() returns.
-std::string registration_report_json(const Pipeline& pipeline, const std::string& source_name,
-                                     const std::string& target_name,
-                                     const std::optional<Diagnosis>& diagnosis, int indent = 2);
+/// The report as a JSON object (`with_config`: include the configuration used).
+nlohmann::json report_object(const Registration& registration, bool with_config = true);
+
+/// Text of a report: `indent` spaces a level, clamped to [-1, 16] (-1: one line); bytes that are
+/// not UTF-8 (paths) are replaced, never thrown on.
+std::string dump_report(const nlohmann::json& report, int indent);
 
 }  // namespace pagor

@@ -69,47 +69,43 @@ PairOutcome run_pair(Pipeline& pipeline, const PairEntry& entry, const std::atom
 
 PairOutcome pair_outcome(const Pipeline& pipeline, const PairEntry& entry,
                          const std::string& source_name, const std::string& target_name) {
+  RegistrationContext context;
+  context.source_name = source_name;
+  context.target_name = target_name;
+  return pair_outcome(make_registration(pipeline, context), entry);
+}
+
+PairOutcome pair_outcome(const Registration& r, const PairEntry& entry) {
   PairOutcome o;
   o.name = entry.name;
   o.negative = entry.negative;
   o.loaded = true;
-  o.has_ground_truth = pipeline.ground_truth().has_value();
-  o.source_name = source_name;
-  o.target_name = target_name;
-  o.selected_level = pipeline.selected_level();
-  o.error = pipeline.selected_error();
-  o.success = o.error && o.error->success;
-  o.upper_bound = pipeline.upper_bound_success();
-  o.accepted = pipeline.acceptance().accepted;
-  o.margin = pipeline.acceptance().margin;
-  const std::vector<double>& scores = pipeline.verification().scores;
-  o.score = o.selected_level >= 0 && static_cast<std::size_t>(o.selected_level) < scores.size()
-                ? scores[static_cast<std::size_t>(o.selected_level)]
-                : std::numeric_limits<double>::quiet_NaN();
-  for (const auto& e : pipeline.level_errors()) o.level_success.push_back(e && e->success);
-  // Poses as the files have them, like the report's (the pipeline's are in the clouds' frames).
-  const auto in_files = [&](const std::optional<Transform>& T) -> std::optional<Transform> {
-    if (!T) return std::nullopt;
-    return to_file_frames(*T, pipeline.source().origin, pipeline.target().origin);
-  };
-  o.T_target_source = in_files(pipeline.selected_transform());
-  o.T_target_source_gt = in_files(pipeline.ground_truth());
-  o.level_epsilons = pipeline.graph().thresholds;
-  o.level_epsilons.resize(pipeline.cliques().size());
-  o.trim = pipeline.config().graph.trim;
-  for (int i = 0; i < kStageCount; ++i) {
-    o.stage_ms[static_cast<std::size_t>(i)] = pipeline.time_ms(static_cast<Stage>(i));
-    o.total_ms += o.stage_ms[static_cast<std::size_t>(i)];
+  o.has_ground_truth = r.T_target_source_gt.has_value();
+  o.source_name = r.source_name;
+  o.target_name = r.target_name;
+  o.selected_level = r.selected_level;
+  o.error = r.error;
+  o.success = r.succeeded();
+  o.upper_bound = r.any_level_succeeds;
+  o.accepted = r.acceptance.accepted;
+  o.margin = r.acceptance.margin;
+  o.score = o.selected_level >= 0 ? r.levels[static_cast<std::size_t>(o.selected_level)].score_D
+                                  : std::numeric_limits<double>::quiet_NaN();
+  for (const LevelSummary& l : r.levels) {
+    if (o.has_ground_truth) o.level_success.push_back(l.error && l.error->success);
+    o.level_epsilons.push_back(l.epsilon);
   }
-  const std::optional<Diagnosis> diagnosis = diagnose(pipeline);
-  if (diagnosis) o.diagnosis = verdict_name(diagnosis->verdict);
-  auto j = nlohmann::json::parse(
-      registration_report_json(pipeline, source_name, target_name, diagnosis, -1));
-  j.erase("config");
-  j["trim"] = to_string(pipeline.config().graph.trim);  // the unit of the levels' epsilon
+  o.T_target_source = r.T_target_source;
+  o.T_target_source_gt = r.T_target_source_gt;
+  o.trim = r.config.graph.trim;
+  o.stage_ms = r.stage_ms;
+  o.total_ms = r.total_ms;
+  if (r.diagnosis) o.diagnosis = verdict_name(r.diagnosis->verdict);
+  nlohmann::json j = report_object(r, false);
+  j["trim"] = to_string(r.config.graph.trim);  // the unit of the levels' epsilon
   j["pair"] = entry.name;
   if (entry.negative) j["negative"] = true;
-  o.report_json = j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+  o.report_json = dump_report(j, -1);
   return o;
 }
 

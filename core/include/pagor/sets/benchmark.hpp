@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "pagor/pipeline.hpp"
+#include "pagor/registration.hpp"
 #include "pagor/sets/pair_set.hpp"
 
 namespace pagor {
@@ -63,6 +64,9 @@ PairOutcome run_pair(Pipeline& pipeline, const PairEntry& entry,
 /// stage's last run, so `total_ms` is the cost of a whole run with this configuration.
 PairOutcome pair_outcome(const Pipeline& pipeline, const PairEntry& entry,
                          const std::string& source_name, const std::string& target_name);
+
+/// The outcome of a registration of `entry`: the row `pagor bench` prints and writes.
+PairOutcome pair_outcome(const Registration& registration, const PairEntry& entry);
 
 /// A rate as shown: "93.3 %", or "n/a" when undefined (a ratio of nothing).
 std::string rate_text(std::optional<double> rate);
