@@ -58,9 +58,11 @@ TEST_CASE("malformed lines are errors naming the file and the line") {
         "[inlier]]), got 5");
   CHECK(error_of("# c\n1 2 3 4 5 6 1 1\n1 2 3 4 5 6 1\n") ==
         "c.txt:3: 7 columns, but line 2 has 8");
-  CHECK(error_of("1 2 3 4 5 x\n") == "c.txt:1: qz 'x' is not a finite number");
-  CHECK(error_of("1 2 3 4 5 6\n1 2 nan 4 5 6\n") == "c.txt:2: pz 'nan' is not a finite number");
-  CHECK(error_of("1 2 3 4 5 6 1e999\n") == "c.txt:1: weight '1e999' is not a finite number");
+  CHECK(error_of("1 2 3 4 5 x\n") == "c.txt:1: qz 'x' is not a finite number (column 11)");
+  CHECK(error_of("1 2 3 4 5 6\n1 2 nan 4 5 6\n") ==
+        "c.txt:2: pz 'nan' is not a finite number (column 5)");
+  CHECK(error_of("1 2 3 4 5 6 1e999\n") ==
+        "c.txt:1: weight '1e999' is not a finite number (column 13)");
   CHECK(error_of("1 2 3 4 5 6 -1\n") == "c.txt:1: weight '-1' is negative");
   CHECK(error_of("1 2 3 4 5 6 1 2\n") == "c.txt:1: inlier flag '2' is not 0 or 1");
   CHECK(error_of("1 2 3 4 5 6 1 yes\n") == "c.txt:1: inlier flag 'yes' is not 0 or 1");
@@ -118,4 +120,36 @@ TEST_CASE("a correspondences file holds at most what the consistency graph takes
       Catch::Contains("huge.txt: correspondences file is ") && Catch::Contains("more than the"));
   CHECK_THROWS_WITH(read_correspondence_file("/dev/zero"),
                     Catch::Contains("/dev/zero: correspondences file is a character device"));
+}
+
+TEST_CASE("hexadecimal is not a coordinate: an error naming the line and the column") {
+  // strtod read 0x10 as 16.
+  CHECK(error_of("0x10 2 3 4 5 6\n") ==
+        "c.txt:1: px '0x10' is not a finite number (column 1; numbers are decimal, hexadecimal "
+        "is not read)");
+  CHECK(error_of("1 2 3 4 5 6\n1, 2, 3, 4, -0X1p3, 6\n") ==
+        "c.txt:2: qy '-0X1p3' is not a finite number (column 13; numbers are decimal, "
+        "hexadecimal is not read)");
+  CHECK(error_of("1 2 3 4 5 6 0x1\n") ==
+        "c.txt:1: weight '0x1' is not a finite number (column 13; numbers are decimal, "
+        "hexadecimal is not read)");
+  CHECK(error_of("1 2 3 4 5 inf\n") == "c.txt:1: qz 'inf' is not a finite number (column 11)");
+  // Decimal forms are all read.
+  const CorrespondenceFile f = parse_correspondence_file("+1 .5 -2. 1e3 -3E-1 0\n", "c.txt");
+  CHECK(f.items[0].p == Eigen::Vector3d(1, 0.5, -2));
+  CHECK(f.items[0].q == Eigen::Vector3d(1000, -0.3, 0));
+}
+
+TEST_CASE("a coordinate beyond 1e7 m is corrupt: an error naming the line and the column") {
+  CHECK(error_of("1 2 3 4 5 6\n1 2 3 1e30 5 6\n") ==
+        "c.txt:2: qx '1e30' lies farther than 1e7 m from the origin, corrupt (column 7)");
+  CHECK(error_of("-2e7 2 3 4 5 6\n") ==
+        "c.txt:1: px '-2e7' lies farther than 1e7 m from the origin, corrupt (column 1)");
+  // A georeferenced frame (a national grid, 300 km and 5,000 km out) is read as it is.
+  const CorrespondenceFile f =
+      parse_correspondence_file("300000.25 5000000 10 300001.5 5000001 11\n", "c.txt");
+  CHECK(f.items[0].p == Eigen::Vector3d(300000.25, 5000000, 10));
+  CHECK(f.items[0].q == Eigen::Vector3d(300001.5, 5000001, 11));
+  // A weight is not a coordinate: a large one is kept.
+  CHECK(parse_correspondence_file("1 2 3 4 5 6 1e30\n").weights == std::vector<double>{1e30});
 }

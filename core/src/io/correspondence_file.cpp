@@ -1,39 +1,64 @@
 #include "pagor/io/correspondence_file.hpp"
 
-#include <cerrno>
 #include <cmath>
-#include <cstdlib>
+#include <optional>
 #include <sstream>
 
+#include "io/parse_numbers.hpp"
 #include "pagor/errors.hpp"
 #include "pagor/io/file_input.hpp"
 
 namespace pagor {
 namespace {
 
+// One field of a line: its text and 1-based column (for messages).
+struct Field {
+  std::string text;
+  std::size_t column = 0;
+};
+
 // Splits a line (comment removed) into fields separated by blanks or commas.
-std::vector<std::string> fields(const std::string& line) {
-  std::vector<std::string> out;
-  std::string cur;
-  for (char ch : line) {
+std::vector<Field> fields(const std::string& line) {
+  std::vector<Field> out;
+  Field cur;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char ch = line[i];
     if (ch == ' ' || ch == '\t' || ch == ',' || ch == '\r') {
-      if (!cur.empty()) out.push_back(std::move(cur));
-      cur.clear();
+      if (!cur.text.empty()) out.push_back(std::move(cur));
+      cur = Field{};
     } else {
-      cur.push_back(ch);
+      if (cur.text.empty()) cur.column = i + 1;
+      cur.text.push_back(ch);
     }
   }
-  if (!cur.empty()) out.push_back(std::move(cur));
+  if (!cur.text.empty()) out.push_back(std::move(cur));
   return out;
 }
 
-double number(const std::string& field, const std::string& where, const char* what) {
-  const char* begin = field.c_str();
-  char* end = nullptr;
-  errno = 0;
-  const double v = std::strtod(begin, &end);
-  if (end == begin || *end != '\0' || errno == ERANGE || !std::isfinite(v))
-    throw InputError(where + ": " + what + " '" + field + "' is not a finite number");
+// A decimal number (parse::to_double: no hexadecimal, no locale); `what` names the column's
+// meaning. Messages keep the form `where: what 'text' ...` and add the 1-based column.
+double number(const Field& field, const std::string& where, const char* what) {
+  const std::string at = where + ": " + what + " '" + parse::printable(field.text) + "'";
+  const std::string column = "column " + std::to_string(field.column);
+  const std::optional<double> v = parse::to_double(field.text);
+  if (!v || !std::isfinite(*v)) {
+    const std::size_t digits = field.text.find_first_not_of("+-");
+    const bool hex = digits != std::string::npos && field.text.size() > digits + 1 &&
+                     field.text[digits] == '0' &&
+                     (field.text[digits + 1] == 'x' || field.text[digits + 1] == 'X');
+    throw InputError(at + " is not a finite number (" + column +
+                     (hex ? "; numbers are decimal, hexadecimal is not read)" : ")"));
+  }
+  return *v;
+}
+
+// A coordinate: a number within kMaxMatchCoordinate of the origin on its axis.
+double coordinate(const Field& field, const std::string& where, const char* what) {
+  const double v = number(field, where, what);
+  if (!(std::abs(v) <= kMaxMatchCoordinate))
+    throw InputError(where + ": " + what + " '" + parse::printable(field.text) +
+                     "' lies farther than 1e7 m from the origin, corrupt (column " +
+                     std::to_string(field.column) + ")");
   return v;
 }
 
@@ -50,8 +75,7 @@ CorrespondenceFile parse_correspondence_file(const std::string& text, const std:
     ++line_no;
     const std::string where = origin + ":" + std::to_string(line_no);
     const auto hash = line.find('#');
-    const std::vector<std::string> f =
-        fields(hash == std::string::npos ? line : line.substr(0, hash));
+    const std::vector<Field> f = fields(hash == std::string::npos ? line : line.substr(0, hash));
     if (f.empty()) continue;
     if (f.size() < 6 || f.size() > 8)
       throw InputError(where +
@@ -69,7 +93,7 @@ CorrespondenceFile parse_correspondence_file(const std::string& text, const std:
                        " correspondences, the most the consistency graph takes "
                        "(kMaxGraphCorrespondences); keep the best ones");
     double v[6];
-    for (int k = 0; k < 6; ++k) v[k] = number(f[static_cast<std::size_t>(k)], where, names[k]);
+    for (int k = 0; k < 6; ++k) v[k] = coordinate(f[static_cast<std::size_t>(k)], where, names[k]);
     Correspondence c;
     c.class_index = -1;
     c.origin = CorrespondenceOrigin::matcher;
@@ -79,14 +103,16 @@ CorrespondenceFile parse_correspondence_file(const std::string& text, const std:
     c.score = 1.0;
     if (columns >= 7) {
       const double w = number(f[6], where, "weight");
-      if (w < 0) throw InputError(where + ": weight '" + f[6] + "' is negative");
+      if (w < 0)
+        throw InputError(where + ": weight '" + parse::printable(f[6].text) + "' is negative");
       c.score = w;
       out.weights.push_back(w);
     }
     if (columns == 8) {
-      if (f[7] != "0" && f[7] != "1")
-        throw InputError(where + ": inlier flag '" + f[7] + "' is not 0 or 1");
-      out.inlier.push_back(f[7] == "1");
+      if (f[7].text != "0" && f[7].text != "1")
+        throw InputError(where + ": inlier flag '" + parse::printable(f[7].text) +
+                         "' is not 0 or 1");
+      out.inlier.push_back(f[7].text == "1");
     }
     out.items.push_back(c);
     out.lines.push_back(line_no);

@@ -3,10 +3,11 @@
 /// Correspondences from any matcher, as text: one correspondence per line,
 ///   px py pz qx qy qz [weight [inlier]]
 /// (source point, target point [m], an optional non-negative weight, an optional ground-truth
-/// inlier flag 0 or 1), separated by blanks or commas. `#` starts a comment; blank lines are
-/// skipped. Every line has the same number of columns (6, 7 or 8). This is the input of
-/// `pagor register --correspondences` and the format the benchmark's association problems are
-/// written in.
+/// inlier flag 0 or 1), separated by blanks or commas. Numbers are decimal (`12.5`, `-3e2`): hex
+/// (`0x10`), `inf` and `nan` are errors, as is a coordinate beyond kMaxMatchCoordinate. `#` starts
+/// a comment; blank lines are skipped. Every line has the same number of columns (6, 7 or 8). This
+/// is the input of `pagor register --correspondences` and the format the benchmark's association
+/// problems are written in.
 
 #include <cstdint>
 #include <string>
@@ -23,6 +24,11 @@ constexpr std::size_t kMaxFileCorrespondences = kMaxGraphCorrespondences;
 /// Largest correspondences file: 1 KiB per correspondence the file may hold [bytes].
 constexpr std::uint64_t kMaxCorrespondenceFileBytes = std::uint64_t{1024} * kMaxFileCorrespondences;
 
+/// Largest coordinate a correspondence may have on an axis [m]: the farthest a georeferenced
+/// frame lies from its origin (kMaxFrameOrigin of the cloud readers: geocentric and national
+/// grids stay within it). A coordinate beyond it is corrupt (1e30), an error naming the line.
+constexpr double kMaxMatchCoordinate = 1e7;
+
 /// What a correspondences file holds.
 struct CorrespondenceFile {
   /// One per data line, in file order. Each has its own source and target id (its position),
@@ -34,9 +40,10 @@ struct CorrespondenceFile {
 };
 
 /// Parses the text of a correspondences file. Throws InputError naming `origin` and the line
-/// (`origin:LINE: ...`) for a malformed number, a wrong column count, a negative or non-finite
-/// weight or a flag other than 0/1, when there is no correspondence at all, and at the first line
-/// beyond kMaxFileCorrespondences (the message names the budget).
+/// (`origin:LINE: ...`; for a number also its 1-based column) for a malformed number (not
+/// decimal, not finite, a coordinate beyond kMaxMatchCoordinate), a wrong column count, a negative
+/// or non-finite weight or a flag other than 0/1, when there is no correspondence at all, and at
+/// the first line beyond kMaxFileCorrespondences (the message names the budget).
 CorrespondenceFile parse_correspondence_file(const std::string& text,
                                              const std::string& origin = "correspondences");
 
