@@ -1,6 +1,8 @@
-"""Builds the extension module `pagor` with the project's CMake; setuptools only drives it.
+"""Builds the package `pagor` (python/pagor/: pure-Python modules, the stubs of its extension and
+py.typed) with its extension `pagor._pagor` built by the project's CMake; setuptools only drives
+it.
 
-pip runs this through pyproject.toml's setuptools backend. The module is configured and built in
+pip runs this through pyproject.toml's setuptools backend. The extension is configured and built in
 the CMake build directory `build-python/` (kept, so a second `pip install` is incremental), with
 only the core and the module enabled. Environment:
   PAGOR_BUILD_DIR   a CMake build directory to use instead; when it is already configured (the
@@ -31,7 +33,7 @@ def project_version():
 
 
 class CMakeBuild(build_ext):
-    """Configures (once), builds the target pagor_python and copies the module into place."""
+    """Configures (once), builds the target pagor_python and copies the extension into place."""
 
     def build_extension(self, ext):
         build_dir = BUILD_DIR
@@ -44,7 +46,7 @@ class CMakeBuild(build_ext):
                        + shlex.split(os.environ.get("CMAKE_ARGS", "")))
         jobs = os.environ.get("CMAKE_BUILD_PARALLEL_LEVEL") or str(os.cpu_count() or 1)
         self.spawn(["cmake", "--build", str(build_dir), "--target", "pagor_python", "-j", jobs])
-        built = build_dir / "python" / ("pagor" + sysconfig.get_config_var("EXT_SUFFIX"))
+        built = build_dir / "python" / "pagor" / ("_pagor" + sysconfig.get_config_var("EXT_SUFFIX"))
         if not built.exists():
             sys.exit(f"setup.py: {built} was not built: the build directory {build_dir} is "
                      f"configured for another Python than {sys.executable}, or without the "
@@ -56,9 +58,12 @@ class CMakeBuild(build_ext):
 
 setup(
     version=project_version(),
-    packages=[],  # one extension module, no Python packages (and no discovery in this tree)
+    # The package's Python files and stubs; its C++ sources (python/pagor/pybind/) stay out.
+    packages=["pagor"],
+    package_dir={"": "python"},
+    package_data={"pagor": ["py.typed", "_pagor.pyi"]},
     py_modules=[],
-    ext_modules=[Extension("pagor", sources=[])],
+    ext_modules=[Extension("pagor._pagor", sources=[])],
     cmdclass={"build_ext": CMakeBuild},
     # setuptools' own files go beside CMake's, not into the source tree.
     options={"build": {"build_base": str(SETUPTOOLS_DIR)},

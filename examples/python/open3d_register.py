@@ -3,8 +3,8 @@
 open3d_register.py SOURCE TARGET [--config FILE.json] [--save aligned.ply] [--no-window].
 
 The clouds are read with pagor.read_cloud, which also gives their semantic labels (KITTI .bin +
-.label, PCD or PLY with a label field), and become open3d.geometry.PointCloud objects; pagor
-reads their points in place (numpy.asarray(pcd.points) is a view, no copy on the Python side).
+.label, PCD or PLY with a label field), and become open3d.geometry.PointCloud objects, which
+pagor.register takes as they are (it reads their points in place, no copy on the Python side).
 The source is drawn in orange after the transform, the target in blue."""
 import argparse
 import json
@@ -34,8 +34,7 @@ def main():
 
     source, source_labels = open3d_cloud(args.source, args.source_labels)
     target, target_labels = open3d_cloud(args.target, args.target_labels)
-    result = pagor.register(np.asarray(source.points), np.asarray(target.points),
-                            source_labels, target_labels, config=config)
+    result = pagor.register(source, target, source_labels, target_labels, config=config)
     if result.T_target_source is None:
         raise SystemExit("no level gave a valid pose")
     print(result)

@@ -13,9 +13,15 @@ PAGOR_BUILD_DIR=$build "$work/venv/bin/pip" install --no-build-isolation --no-in
 cd "$work"
 "$work/venv/bin/python" - <<'PY'
 import pathlib, sys
+import numpy  # from Debian, seen through --system-site-packages
 import pagor
 where = pathlib.Path(pagor.__file__).resolve()
 assert where.is_relative_to(pathlib.Path(sys.prefix).resolve()), f"imported {where}, not the venv's"
+package = where.parent
+for name in ("__init__.py", "results.py", "_inputs.py", "py.typed", "_pagor.pyi"):
+    assert (package / name).is_file(), f"{name} is not installed in {package}"
+assert not (package / "pybind").exists(), "the C++ sources were installed"
+assert pathlib.Path(pagor._pagor.__file__).parent == package
 scene = pagor.synthetic_scene(seed=7)
 result = pagor.register(scene["source"], scene["target"], scene["source_labels"],
                         scene["target_labels"])

@@ -24,8 +24,9 @@ constexpr int kMaxNesting = 64;
 
 /// A Python object as JSON. Raises ValueError naming `origin` and the key path (`config:
 /// graph.thresholds[1]: nan is not a finite number`) for what JSON cannot hold: non-string keys,
-/// non-finite floats, integers beyond 64 bits, other types, nesting deeper than kMaxNesting.
-/// `path` and `depth` are the object's own, for the recursion.
+/// strings and keys that are not valid UTF-8 (lone surrogates), non-finite floats, integers beyond
+/// 64 bits, other types, nesting deeper than kMaxNesting. `path` and `depth` are the object's own,
+/// for the recursion.
 nlohmann::json from_python(const py::handle& object, const std::string& origin,
                            const std::string& path = {}, int depth = 0);
 

@@ -21,8 +21,12 @@ py::object to_python(const nlohmann::json& value) {
       return py::int_(value.get<std::uint64_t>());
     case T::number_float:
       return py::float_(value.get<double>());
-    case T::string:
-      return py::str(value.get_ref<const std::string&>());
+    case T::string: {
+      // A report may hold bytes that are not UTF-8 (a file's name): replaced, never thrown on.
+      const std::string& text = value.get_ref<const std::string&>();
+      return py::reinterpret_steal<py::str>(
+          PyUnicode_DecodeUTF8(text.data(), static_cast<py::ssize_t>(text.size()), "replace"));
+    }
     case T::array: {
       py::list out;
       for (const auto& item : value) out.append(to_python(item));
@@ -47,6 +51,22 @@ namespace {
                         what);
 }
 
+// A str as UTF-8; one that cannot be (lone surrogates: bytes decoded with surrogateescape) is a
+// ValueError naming the key path.
+std::string utf8(const py::handle& text, const std::string& origin, const std::string& path,
+                 const char* what) {
+  Py_ssize_t size = 0;
+  const char* data = PyUnicode_AsUTF8AndSize(text.ptr(), &size);
+  if (data == nullptr) {
+    PyErr_Clear();
+    fail(origin, path,
+         std::string(what) + " " +
+             std::string(py::reinterpret_steal<py::str>(PyObject_ASCII(text.ptr()))) +
+             " is not valid UTF-8 text");
+  }
+  return std::string(data, static_cast<std::size_t>(size));
+}
+
 }  // namespace
 
 nlohmann::json from_python(const py::handle& object, const std::string& origin,
@@ -69,13 +89,13 @@ nlohmann::json from_python(const py::handle& object, const std::string& origin,
       fail(origin, path, std::string(py::str(object)) + " is not a finite number");
     return v;
   }
-  if (py::isinstance<py::str>(object)) return object.cast<std::string>();
+  if (py::isinstance<py::str>(object)) return utf8(object, origin, path, "the string");
   if (py::isinstance<py::dict>(object)) {
     nlohmann::json out = nlohmann::json::object();
     for (const auto& [key, item] : py::reinterpret_borrow<py::dict>(object)) {
       if (!py::isinstance<py::str>(key))
         fail(origin, path, "keys must be strings, got " + std::string(py::repr(key)));
-      const std::string name = key.cast<std::string>();
+      const std::string name = utf8(key, origin, path, "the key");
       out[name] = from_python(item, origin, path.empty() ? name : path + "." + name, depth + 1);
     }
     return out;

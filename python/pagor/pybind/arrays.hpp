@@ -20,12 +20,21 @@ namespace pagor::python {
 
 namespace py = pybind11;
 
-/// Points from an N x 3 array of float32 or float64 (anything numpy.asarray takes; a numpy array
-/// or a buffer such as Open3D's Vector3dVector is read in place). Raises ValueError for another
-/// shape or dtype, no points, or a non-finite coordinate (naming the point).
-std::vector<Eigen::Vector3f> points_from_array(const py::handle& array, const std::string& what);
+/// A cloud from an N x 3 array of float32 or float64 (anything numpy.asarray takes; a numpy array
+/// or a buffer such as Open3D's Vector3dVector is read in place) and optional labels, framed as
+/// the file readers frame a file's cloud (load_cloud, io/cloud_frame.hpp): a cloud whose median
+/// point lies farther than 1 km from the origin keeps float32 points relative to a frame origin
+/// near them (`origin`, chosen from the coordinates in double), and points farther than 1e6 m
+/// from that origin on an axis (corrupt: 1e30) are dropped, with their labels, and a warning
+/// naming `what` is added to `warnings`. Raises ValueError naming `what` (or `what`_labels) for
+/// another shape or dtype, no points, a non-finite coordinate (naming the point), no point left,
+/// or labels that do not fit (labels_from_array).
+PointCloud cloud_from_array(const py::handle& points, const py::handle& labels,
+                            const std::string& what, std::vector<std::string>& warnings);
 
-/// The same as 3-D vectors in double precision (correspondences: the core keeps them as double).
+/// 3-D vectors in double precision (correspondences: the core keeps them as double). Raises
+/// ValueError naming `what` and the row for another shape or dtype, no rows, a non-finite
+/// coordinate or one beyond kMaxMatchCoordinate (correspondence_file.hpp: as a file's).
 std::vector<Eigen::Vector3d> vectors_from_array(const py::handle& array, const std::string& what);
 
 /// N labels from a 1-D integer array (uint32 is read in place; other integer types are checked to
@@ -43,6 +52,10 @@ Transform transform_from_array(const py::handle& array, const std::string& what)
 
 /// A 4 x 4 float64 array (a copy: 128 bytes).
 py::array_t<double> transform_to_array(const Transform& T);
+
+/// N x 3 float64 array of `rows` plus `offset` (a copy).
+py::array_t<double> vectors_to_array(const std::vector<Eigen::Vector3d>& rows,
+                                     const Eigen::Vector3d& offset = Eigen::Vector3d::Zero());
 
 /// N x 3 float32 array that owns `points` (moved in; no copy).
 py::array_t<float> points_to_array(std::vector<Eigen::Vector3f>&& points);

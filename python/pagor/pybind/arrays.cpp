@@ -1,11 +1,11 @@
 #include "arrays.hpp"
 
 #include <cmath>
-#include <cstring>
 #include <sstream>
-#include <type_traits>
 
+#include "io/cloud_frame.hpp"
 #include "pagor/errors.hpp"
+#include "pagor/io/correspondence_file.hpp"
 #include "pagor/sets/pair_set.hpp"
 
 namespace pagor::python {
@@ -41,22 +41,16 @@ std::string dtype_text(const py::array& a) {
   return py::str(a.dtype());
 }
 
-template <class Scalar, class Out>
-void copy_rows(const py::array& a, std::vector<Out>& out, const std::string& what) {
+// The rows of an N x 3 float32 or float64 array as double vectors, checked finite. Any strides
+// are read in place.
+template <class Scalar>
+void read_rows(const py::array& a, std::vector<Eigen::Vector3d>& out, const std::string& what) {
   const auto view = a.unchecked<Scalar, 2>();
   out.resize(static_cast<std::size_t>(view.shape(0)));
-  // The common case, N x 3 C-contiguous of the core's own scalar type, is one memcpy.
-  constexpr bool same_layout =
-      sizeof(Out) == 3 * sizeof(Scalar) && std::is_same_v<typename Out::Scalar, Scalar>;
-  if (same_layout && (a.flags() & py::array::c_style) && !out.empty()) {
-    std::memcpy(static_cast<void*>(out.data()), a.data(), out.size() * sizeof(Out));
-  } else {
-    for (py::ssize_t i = 0; i < view.shape(0); ++i)
-      for (int k = 0; k < 3; ++k)
-        out[static_cast<std::size_t>(i)][k] = static_cast<typename Out::Scalar>(view(i, k));
-  }
-  for (std::size_t i = 0; i < out.size(); ++i) {
-    if (!out[i].allFinite()) {
+  for (py::ssize_t i = 0; i < view.shape(0); ++i) {
+    Eigen::Vector3d& p = out[static_cast<std::size_t>(i)];
+    for (int k = 0; k < 3; ++k) p[k] = static_cast<double>(view(i, k));
+    if (!p.allFinite()) {
       std::ostringstream s;
       s << what << ": point " << i << " has a non-finite coordinate (" << view(i, 0) << ", "
         << view(i, 1) << ", " << view(i, 2) << ")";
@@ -65,17 +59,16 @@ void copy_rows(const py::array& a, std::vector<Out>& out, const std::string& wha
   }
 }
 
-template <class Out>
-std::vector<Out> rows_from_array(const py::handle& object, const std::string& what) {
+std::vector<Eigen::Vector3d> rows_from_array(const py::handle& object, const std::string& what) {
   const py::array a = as_array(object, what);
   if (a.ndim() != 2 || a.shape(1) != 3)
     throw py::value_error(what + ": expected an N x 3 array of points, got shape " + shape_text(a));
   if (a.shape(0) == 0) throw py::value_error(what + ": no points (shape " + shape_text(a) + ")");
-  std::vector<Out> out;
+  std::vector<Eigen::Vector3d> out;
   if (py::array_t<float>::check_(a))
-    copy_rows<float>(a, out, what);
+    read_rows<float>(a, out, what);
   else if (py::array_t<double>::check_(a))
-    copy_rows<double>(a, out, what);
+    read_rows<double>(a, out, what);
   else
     throw py::value_error(what + ": expected float32 or float64 coordinates, got dtype " +
                           dtype_text(a));
@@ -84,12 +77,48 @@ std::vector<Out> rows_from_array(const py::handle& object, const std::string& wh
 
 }  // namespace
 
-std::vector<Eigen::Vector3f> points_from_array(const py::handle& array, const std::string& what) {
-  return rows_from_array<Eigen::Vector3f>(array, what);
+PointCloud cloud_from_array(const py::handle& points, const py::handle& labels,
+                            const std::string& what, std::vector<std::string>& warnings) {
+  const std::vector<Eigen::Vector3d> rows = rows_from_array(points, what);
+  PointCloud cloud;
+  std::vector<std::uint32_t> all_labels;
+  if (!labels.is_none()) all_labels = labels_from_array(labels, rows.size(), what + "_labels");
+  // The file readers' frame (cloud_frame.hpp): far from the origin, relative to an origin near
+  // the points; float32 input shifts exactly (whole metres), float64 keeps its precision there.
+  cloud.origin = frame_origin(rows.size(), [&](std::size_t i) { return rows[i]; });
+  cloud.points.reserve(rows.size());
+  if (!all_labels.empty()) cloud.labels.reserve(rows.size());
+  double loss = 0;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    Eigen::Vector3f p;
+    for (int k = 0; k < 3; ++k) p[k] = narrowed(rows[i][k], cloud.origin[k], loss);
+    if (!(p.cwiseAbs().maxCoeff() <= kMaxCoordinate)) continue;  // corrupt (1e30): dropped
+    cloud.points.push_back(p);
+    if (!all_labels.empty()) cloud.labels.push_back(all_labels[i]);
+  }
+  const std::size_t dropped = rows.size() - cloud.points.size();
+  if (cloud.points.empty())
+    throw py::value_error(what + ": no point lies within 1e6 m of the cloud's centre (all " +
+                          std::to_string(rows.size()) + " are corrupt or far apart)");
+  if (dropped > 0)
+    warnings.push_back(what + ": dropped " + std::to_string(dropped) +
+                       (dropped == 1 ? " point" : " points") +
+                       " lying more than 1e6 m from the cloud's centre (corrupt coordinates)");
+  return cloud;
 }
 
 std::vector<Eigen::Vector3d> vectors_from_array(const py::handle& array, const std::string& what) {
-  return rows_from_array<Eigen::Vector3d>(array, what);
+  std::vector<Eigen::Vector3d> rows = rows_from_array(array, what);
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    if (!(rows[i].cwiseAbs().maxCoeff() <= kMaxMatchCoordinate)) {
+      std::ostringstream s;
+      s << what << ": point " << i << " (" << rows[i][0] << ", " << rows[i][1] << ", " << rows[i][2]
+        << ") lies farther than " << kMaxMatchCoordinate
+        << " m from the origin on an axis (corrupt coordinates)";
+      throw py::value_error(s.str());
+    }
+  }
+  return rows;
 }
 
 std::vector<std::uint32_t> labels_from_array(const py::handle& object, std::size_t count,
@@ -161,6 +190,15 @@ py::array_t<double> transform_to_array(const Transform& T) {
   auto view = out.mutable_unchecked<2>();
   for (int r = 0; r < 4; ++r)
     for (int c = 0; c < 4; ++c) view(r, c) = T(r, c);
+  return out;
+}
+
+py::array_t<double> vectors_to_array(const std::vector<Eigen::Vector3d>& rows,
+                                     const Eigen::Vector3d& offset) {
+  py::array_t<double> out({static_cast<py::ssize_t>(rows.size()), py::ssize_t{3}});
+  auto view = out.mutable_unchecked<2>();
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    for (int k = 0; k < 3; ++k) view(static_cast<py::ssize_t>(i), k) = rows[i][k] + offset[k];
   return out;
 }
 

@@ -1,0 +1,285 @@
+"""The result of a registration: `Result` with its `Level`s, `Landmarks` and `Correspondences`.
+
+Plain Python objects holding the report (a dict, schema ``pagor.register/1``: what
+``pagor register --json`` writes) and numpy arrays, so they pickle (multiprocessing, Dask) and
+compare as data. Every attribute is read from the report or from the arrays the run produced; none
+is computed here on its own account.
+"""
+from __future__ import annotations
+
+from typing import Any, Dict, List, Optional, Tuple
+
+import numpy as np
+
+from . import _pagor
+
+__all__ = ["Result", "Level", "Landmarks", "Correspondences", "ORIGINS"]
+
+#: The names of CorrespondenceOrigin, in the order of its codes: who made a correspondence.
+ORIGINS: Tuple[str, ...] = ("landmark", "matcher")
+
+
+def _transform(value: Any) -> Optional[np.ndarray]:
+    """A report's 4 x 4 row-major nested list as a float64 array; None for null."""
+    return None if value is None else np.array(value, dtype=np.float64).reshape(4, 4)
+
+
+def _indent(indent: Optional[int]) -> int:
+    if indent is None:
+        return -1
+    if isinstance(indent, bool) or not isinstance(indent, int):
+        raise TypeError(f"indent: expected an int or None, got {type(indent).__name__}")
+    return max(-1, min(16, indent))
+
+
+class Level:
+    """One level of the pyramid: its threshold, graph, clique and pose (the report's
+    ``levels[i]``; attributes the report does not hold are None)."""
+
+    def __init__(self, level: Dict[str, Any]):
+        self._level = level
+        #: The level's densest clique: indices into `Result.correspondences`, increasing (int64).
+        self.clique: np.ndarray = np.asarray(level.get("clique", []), dtype=np.int64)
+
+    @property
+    def level(self) -> int:
+        """The level's index, 0 for the tightest threshold."""
+        return self._level.get("level")
+
+    @property
+    def epsilon(self) -> float:
+        """The TRIM threshold: [m] for a difference TRIM, unitless for a ratio TRIM."""
+        return self._level.get("epsilon")
+
+    @property
+    def vertices(self) -> int:
+        """Correspondences with at least one consistency edge at this level."""
+        return self._level.get("vertices")
+
+    @property
+    def edges(self) -> int:
+        """Consistency edges at this level."""
+        return self._level.get("edges")
+
+    @property
+    def clique_size(self) -> int:
+        """Members of the level's clique (len(clique))."""
+        return self._level.get("clique_size")
+
+    @property
+    def clique_proven(self) -> Optional[bool]:
+        """Whether the clique is proven maximum on its level."""
+        return self._level.get("clique_proven")
+
+    @property
+    def inliers(self) -> int:
+        """GNC-TLS inliers of the level's pose (a count)."""
+        return self._level.get("inliers")
+
+    @property
+    def pose_valid(self) -> bool:
+        """Whether the level has a pose (its clique was large enough for the pose model)."""
+        return self._level.get("pose_valid")
+
+    @property
+    def T_target_source(self) -> Optional[np.ndarray]:
+        """The level's pose (4 x 4 float64) in the frames of the inputs; None when invalid."""
+        return _transform(self._level.get("T_target_source"))
+
+    @property
+    def score_D(self) -> Optional[float]:
+        """Verification score D [m] on the clouds, lower is better; None when not scored (no
+        valid pose, or no clouds)."""
+        return self._level.get("score_D")
+
+    @property
+    def support(self) -> Optional[int]:
+        """Selected without clouds: the correspondences the pose explains; None otherwise."""
+        return self._level.get("support")
+
+    @property
+    def translation_error_m(self) -> Optional[float]:
+        """Translation error against the ground truth [m]; None without one."""
+        return self._level.get("translation_error_m")
+
+    @property
+    def rotation_error_deg(self) -> Optional[float]:
+        """Rotation error against the ground truth [deg]; None without one."""
+        return self._level.get("rotation_error_deg")
+
+    @property
+    def success(self) -> Optional[bool]:
+        """Within the success criterion of the ground truth; None without one."""
+        return self._level.get("success")
+
+    def to_dict(self) -> Dict[str, Any]:
+        """The report's ``levels[i]`` (the dict itself: do not change it)."""
+        return self._level
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, Level) and self._level == other._level
+
+    def __repr__(self) -> str:
+        return (f"<pagor.Level {self._level.get('level', -1)}: epsilon "
+                f"{self._level.get('epsilon', 0.0):g}, clique {self._level.get('clique_size', 0)}"
+                f", inliers {self._level.get('inliers', 0)}>")
+
+
+class Landmarks:
+    """A cloud's landmarks: `positions` (N x 3 float64 [m], in the frame of the points as given)
+    and `class_index` (N int32, into `class_names`; the configured classes)."""
+
+    def __init__(self, positions: np.ndarray, class_index: np.ndarray,
+                 class_names: Tuple[str, ...]):
+        self.positions = positions
+        self.class_index = class_index
+        self.class_names = class_names
+
+    @property
+    def class_name(self) -> np.ndarray:
+        """Each landmark's class name (an array of str)."""
+        return _names(self.class_names, self.class_index)
+
+    def __len__(self) -> int:
+        return len(self.positions)
+
+    def __repr__(self) -> str:
+        return f"<pagor.Landmarks: {len(self)}>"
+
+
+def _names(names: Tuple[str, ...], index: np.ndarray) -> np.ndarray:
+    table = np.array(list(names) + [""], dtype=str)  # index -1 (no class): ""
+    return table[np.where(index < 0, len(names), index)]
+
+
+class Correspondences:
+    """The putative correspondences the pyramid was built on; each level's `clique` indexes
+    them. `p`, `q`: source and target points (N x 3 float64 [m], in the frames of the inputs);
+    `class_index` (N int32, into `class_names`; -1 for a matcher's correspondence, which has no
+    class); `origin` (N str: 'landmark' from the clouds' landmarks, 'matcher' given to
+    register_correspondences); `source`, `target`: the landmark (or keypoint) ids (N int32);
+    `score`: a landmark pair's similarity in [0, 1], or a matcher's weight (N float64)."""
+
+    def __init__(self, arrays: Dict[str, np.ndarray], class_names: Tuple[str, ...]):
+        self.p: np.ndarray = arrays["p"]
+        self.q: np.ndarray = arrays["q"]
+        self.class_index: np.ndarray = arrays["class_index"]
+        self.origin: np.ndarray = np.array(ORIGINS, dtype=str)[arrays["origin"]]
+        self.source: np.ndarray = arrays["source"]
+        self.target: np.ndarray = arrays["target"]
+        self.score: np.ndarray = arrays["score"]
+        self.class_names = class_names
+
+    @property
+    def class_name(self) -> np.ndarray:
+        """Each correspondence's class name ("" for a matcher's)."""
+        return _names(self.class_names, self.class_index)
+
+    def __len__(self) -> int:
+        return len(self.p)
+
+    def __repr__(self) -> str:
+        counts = ", ".join(f"{o} {int((self.origin == o).sum())}" for o in ORIGINS)
+        return f"<pagor.Correspondences: {len(self)} ({counts})>"
+
+
+class Result:
+    """A registration's outcome. The numbers are the report's (`to_dict()`, `to_json()`: schema
+    ``pagor.register/1``, what ``pagor register --json`` writes); landmarks, correspondences and
+    cliques are numpy arrays. Picklable."""
+
+    def __init__(self, run: Dict[str, Any]):
+        self._report: Dict[str, Any] = run["report"]
+        names = tuple(run["class_names"])
+        self.landmarks: Dict[str, Landmarks] = {
+            side: Landmarks(run["landmarks"][side]["positions"],
+                            run["landmarks"][side]["class_index"], names)
+            for side in ("source", "target")}
+        """Each cloud's landmarks ('source', 'target'); empty without clouds."""
+        self.correspondences = Correspondences(run["correspondences"], names)
+        """The correspondences the levels' cliques index."""
+        self.levels: List[Level] = [Level(level) for level in self._report.get("levels", [])]
+        """Per pyramid level: threshold, clique, pose, score (pagor.Level)."""
+
+    @property
+    def T_target_source(self) -> Optional[np.ndarray]:
+        """The selected transform (4 x 4 float64) that maps source points into the target frame,
+        in the frames of the points as given; None when no level has a valid pose."""
+        return _transform(self._report.get("T_target_source"))
+
+    @property
+    def selected_level(self) -> Optional[int]:
+        """Index into `levels` of the selected pose; None when no level has a valid pose."""
+        return self._report.get("selected_level")
+
+    @property
+    def selected_by(self) -> str:
+        """'score_D' (lowest D on the clouds) or 'without_clouds' (the best support among the
+        correspondences, when there were no clouds)."""
+        return self._report.get("selected_by")
+
+    @property
+    def accepted(self) -> bool:
+        """The verdict: whether the selected pose is trusted. False when there is no pose, and
+        False when there were no clouds to verify it on (`verified` is then False too)."""
+        return bool(self._report["acceptance"]["accepted"]) and self.T_target_source is not None
+
+    @property
+    def verified(self) -> bool:
+        """Whether the pose was judged on clouds (False for correspondences alone)."""
+        return bool(self._report["acceptance"].get("verified", True))
+
+    @property
+    def acceptance(self) -> Dict[str, Any]:
+        """The verdict's numbers: accepted, verified, overlap, inliers, margin, sharpness,
+        reason (why it was rejected, or that there was nothing to verify on)."""
+        return self._report["acceptance"]
+
+    @property
+    def ground_truth(self) -> Optional[Dict[str, Any]]:
+        """Against the ground truth given: T_target_source, errors, success, upper_bound (some
+        level's pose is right); None without one."""
+        return self._report.get("ground_truth")
+
+    @property
+    def diagnosis(self) -> Optional[Dict[str, Any]]:
+        """The stage at fault against the ground truth (a dict with 'verdict'); None without
+        ground truth."""
+        return self._report.get("diagnosis")
+
+    @property
+    def timings_ms(self) -> Dict[str, float]:
+        """Wall time per stage and in total ('total') [ms]."""
+        return self._report.get("timings_ms")
+
+    @property
+    def warnings(self) -> List[str]:
+        """The run's warnings (also in the report)."""
+        return self._report.get("warnings", [])
+
+    @property
+    def config(self) -> Dict[str, Any]:
+        """The full configuration used (pagor.check_config's form)."""
+        return self._report.get("config")
+
+    def to_dict(self) -> Dict[str, Any]:
+        """The report as a dict (json.loads(to_json())); the Result's own, do not change it."""
+        return self._report
+
+    def to_json(self, indent: Optional[int] = 2) -> str:
+        """The report as JSON text, exactly as ``pagor register --json`` writes it (schema
+        pagor.register/1; keys sorted). indent: spaces per level, at most 16 (larger is
+        clamped); -1 or None: one line."""
+        return _pagor.dump_json(self._report, _indent(indent))
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, Result) and self._report == other._report
+
+    def __repr__(self) -> str:
+        T = self.T_target_source
+        if T is None:
+            return "<pagor.Result: no valid candidate>"
+        verdict = ("accepted" if self.accepted else "rejected") if self.verified else \
+            "not verified (no clouds)"
+        return (f"<pagor.Result: level {self.selected_level}, t = ({T[0, 3]:.3f}, {T[1, 3]:.3f}, "
+                f"{T[2, 3]:.3f}) m, {verdict}>")
