@@ -173,3 +173,20 @@ def test_a_missing_file_is_file_not_found_naming_the_argument(tmp_path):
         scan = tmp_path / "scan.bin"
         np.zeros((10, 4), np.float32).tofile(scan)
         pagor.read_cloud(scan, tmp_path / "scan.label")
+
+
+def test_fused_correspondences_carry_their_origin_and_class(scene):
+    landmarks_only = pagor.register(scene["source"], scene["target"])  # class-agnostic keypoints
+    c = landmarks_only.correspondences
+    assert set(c.class_name) == {"structure"} and set(c.origin) == {"landmark"}
+    fused = pagor.register_correspondences(c.p, c.q, source=scene["source"],
+                                           target=scene["target"],
+                                           config={"correspondences": {"fuse_matches": True}})
+    f = fused.correspondences
+    origin = fused.to_dict()["correspondences"]["origin"]
+    for name in ("landmark", "matcher"):
+        assert (f.origin == name).sum() == origin[name]["count"] == len(c)
+        clique = fused.levels[fused.selected_level].clique
+        assert (f.origin[clique] == name).sum() == origin[name]["selected_clique"]
+    assert set(f.class_name[f.origin == "matcher"]) == {""}
+    assert (f.class_index[f.origin == "matcher"] == -1).all()
