@@ -186,7 +186,11 @@ class Correspondences:
 class Result:
     """A registration's outcome. The numbers are the report's (`to_dict()`, `to_json()`: schema
     ``pagor.register/1``, what ``pagor register --json`` writes); landmarks, correspondences and
-    cliques are numpy arrays. Picklable."""
+    cliques are numpy arrays. Picklable.
+
+    Attributes besides the properties: `levels` (a list of Level, each with its `clique` as an
+    int64 array), `landmarks` ({'source': Landmarks, 'target': Landmarks}; empty without clouds)
+    and `correspondences` (Correspondences: the rows the cliques index)."""
 
     def __init__(self, run: Dict[str, Any]):
         self._report: Dict[str, Any] = run["report"]
