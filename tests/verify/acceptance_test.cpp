@@ -1,7 +1,10 @@
 #include <catch2/catch.hpp>
 
+#include <cstdio>
+
 #include "pagor/front/landmarks.hpp"
 #include "pagor/pipeline.hpp"
+#include "pagor/sets/self_similar.hpp"
 #include "pagor/sets/synthetic.hpp"
 #include "pagor/verify/acceptance.hpp"
 
@@ -138,4 +141,136 @@ TEST_CASE("a pose that aligns only the ground of a sloped street is not trusted"
   CHECK(a.overlap < 0.05);  // of the boards, none aligned
   CHECK_FALSE(a.accepted);
   CHECK_THAT(a.reason, Catch::StartsWith("overlap"));
+}
+
+namespace {
+
+// Judges `T` as the only candidate of a self-similar scene, with the given thresholds.
+Acceptance judge_pose(const SelfSimilarScene& s, const Transform& T, const AcceptanceParams& params) {
+  const Config c = default_config();
+  const Verifier verifier(s.source, s.target, c.verification.voxel_size);
+  std::vector<PoseEstimate> candidates(1);
+  candidates[0].valid = true;
+  candidates[0].T_target_source = T;
+  candidates[0].inliers = {0, 1, 2, 3, 4, 5};
+  VerificationResult v;
+  v.selected = 0;
+  v.scores = {verifier.score(T, c.verification.mu, ScoreKind::truncated, 1, &v.selected_distances)};
+  v.distance_bound = static_cast<float>(c.verification.mu);
+  return judge_selection(verifier, candidates, v, c.verification, c.evaluation, params,
+                         PoseModel::se3);
+}
+
+SelfSimilarScene self_similar(SelfSimilarKind kind, bool objects) {
+  SelfSimilarParams p;
+  p.kind = kind;
+  p.seed = 3;
+  p.distinct_objects = objects;
+  return make_self_similar_scene(p);
+}
+
+// Only the ambiguity decides: the other tests pass whatever the pose.
+AcceptanceParams ambiguity_only() {
+  AcceptanceParams p;
+  p.min_overlap = p.minimal_support_overlap = p.min_margin = 0;
+  p.min_inliers = 0;
+  p.min_sharpness = -1000;
+  return p;
+}
+
+}  // namespace
+
+TEST_CASE("a corridor of pillars is ambiguous: every pose a period off fits as well") {
+  const SelfSimilarScene s = self_similar(SelfSimilarKind::corridor, false);
+  for (const Transform& T : {s.T_target_source, s.look_alikes[2]}) {
+    const Acceptance a = judge_pose(s, T, AcceptanceParams{});
+    INFO(a.reason);
+    CHECK_FALSE(a.accepted);
+    CHECK_THAT(a.reason, Catch::StartsWith("ambiguous: "));
+    CHECK_THAT(a.reason, Catch::Contains("fits as well"));
+    CHECK(a.ambiguity > AcceptanceParams{}.max_ambiguity);
+    CHECK_FALSE(pose_error(a.alternative.T_target_source, T).success);  // a different answer
+    REQUIRE(a.tests.size() == 6u);
+    CHECK(a.tests.back().name == "ambiguity");
+    CHECK(a.tests.back().value == a.ambiguity);
+    CHECK_FALSE(a.tests.back().passed);
+  }
+}
+
+TEST_CASE("a pose a period off is ambiguous, naming the alternative and how far it moved") {
+  // The selected pose leaves the car, the sign and the bench off, which the truth and other poses
+  // of the corridor's lattice align: the points only the alternative aligns outnumber those only
+  // the selected pose aligns.
+  const SelfSimilarScene s = self_similar(SelfSimilarKind::corridor, true);
+  const Transform& off = s.look_alikes[2];  // the truth moved one period along the corridor
+  const Acceptance a = judge_pose(s, off, ambiguity_only());
+  INFO(a.reason);
+  CHECK_FALSE(a.accepted);
+  CHECK_THAT(a.reason, Catch::StartsWith("ambiguous: "));
+  CHECK(a.ambiguity > 2.0);
+  CHECK_FALSE(pose_error(a.alternative.T_target_source, off).success);
+  const double moved =
+      (a.alternative.T_target_source.block<2, 1>(0, 3) - off.block<2, 1>(0, 3)).norm();
+  char distance[32];
+  std::snprintf(distance, sizeof(distance), "moved %.1f m", moved);
+  CHECK_THAT(a.reason, Catch::Contains(distance));
+  CHECK_THAT(a.reason, Catch::Contains(a.alternative.description));
+  for (std::size_t i = 0; i + 1 < a.tests.size(); ++i) CHECK(a.tests[i].passed);
+  // Whichever alternative is named, the truth is a rival: as the other level's candidate (its D
+  // lower, so the margin is negative and not tested here) with no shift searched.
+  std::vector<PoseEstimate> candidates(2);
+  const Config c = default_config();
+  const Verifier verifier(s.source, s.target, c.verification.voxel_size);
+  for (int k = 0; k < 2; ++k) {
+    candidates[k].valid = true;
+    candidates[k].T_target_source = k == 0 ? off : s.T_target_source;
+    candidates[k].inliers = {0, 1, 2, 3, 4, 5};
+  }
+  VerificationResult v;
+  v.selected = 0;
+  v.scores = {verifier.score(off, c.verification.mu, ScoreKind::truncated, 1, &v.selected_distances),
+              verifier.score(s.T_target_source, c.verification.mu, ScoreKind::truncated)};
+  v.distance_bound = static_cast<float>(c.verification.mu);
+  AcceptanceParams only_levels = ambiguity_only();
+  only_levels.ambiguity_range = 0;  // no shifts searched: the candidates and the half turn
+  only_levels.min_margin = -1;
+  const Acceptance b = judge_selection(verifier, candidates, v, c.verification, c.evaluation,
+                                       only_levels, PoseModel::se3);
+  INFO(b.reason);
+  CHECK_FALSE(b.accepted);
+  CHECK(b.ambiguity > 2.0);
+}
+
+TEST_CASE("the same corridor with a car, a sign and a bench is accepted at its true pose") {
+  const SelfSimilarScene s = self_similar(SelfSimilarKind::corridor, true);
+  const Acceptance a = judge_pose(s, s.T_target_source, AcceptanceParams{});
+  INFO(a.reason << "; best alternative " << a.alternative.description << " " << a.ambiguity);
+  CHECK(a.accepted);
+  CHECK(a.ambiguity <= AcceptanceParams{}.max_ambiguity);
+  REQUIRE(a.tests.size() == 6u);
+  for (const AcceptanceTest& t : a.tests) CHECK(t.passed);
+}
+
+TEST_CASE("a symmetric hall is ambiguous under a half turn") {
+  const SelfSimilarScene s = self_similar(SelfSimilarKind::symmetric_hall, false);
+  const Acceptance a = judge_pose(s, s.T_target_source, AcceptanceParams{});
+  INFO(a.reason);
+  CHECK_FALSE(a.accepted);
+  CHECK_THAT(a.reason, Catch::StartsWith("ambiguous: the pose turned 180 deg"));
+  CHECK(pose_error(a.alternative.T_target_source, s.look_alikes[0]).success);
+  // With its distinct objects the half turn explains clearly less.
+  const SelfSimilarScene marked = self_similar(SelfSimilarKind::symmetric_hall, true);
+  const Acceptance b = judge_pose(marked, marked.T_target_source, ambiguity_only());
+  CHECK(b.ambiguity < a.ambiguity);
+}
+
+TEST_CASE("a large max_ambiguity turns the test off") {
+  const SelfSimilarScene s = self_similar(SelfSimilarKind::symmetric_hall, false);
+  AcceptanceParams p;
+  p.max_ambiguity = 10;
+  const Acceptance a = judge_pose(s, s.T_target_source, p);
+  CHECK(a.ambiguity == 0.0);
+  CHECK(a.alternative.description.empty());
+  REQUIRE_FALSE(a.tests.empty());
+  CHECK_FALSE(a.tests.back().applies);
 }

@@ -329,6 +329,13 @@ Diagnosis diagnose(const DiagnosisInput& in, const Transform& T_gt, const Diagno
     d.score_misled = !(d.selected_error && d.selected_error->success) && d.gt_score > sel.score;
   }
   judge(in, params, d);
+  if (in.acceptance && !in.acceptance->alternative.description.empty() &&
+      !(d.selected_error && d.selected_error->success) &&
+      pose_error(in.acceptance->alternative.T_target_source, T_gt, in.config->evaluation).success) {
+    d.alternative_right = true;
+    d.explanation += "; the ambiguity's alternative, " + in.acceptance->alternative.description +
+                     ", is right";
+  }
   explain_origins(in, d);
   d.time_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
@@ -348,6 +355,7 @@ std::optional<Diagnosis> diagnose(const Pipeline& p, const DiagnosisParams& para
   in.verifier = p.verifier();
   in.config = &p.config();
   in.selected_pose = p.selected_transform();
+  in.acceptance = &p.acceptance();
   return diagnose(in, *p.ground_truth(), params);
 }
 

@@ -13,6 +13,14 @@
 ///   possible D (mu times the number of source points); 1 when there is no distinct candidate.
 /// - sharpness: how much of the overlap is lost when the pose is moved by the success criterion's
 ///   translation along each horizontal axis (a true alignment is a sharp peak).
+/// - ambiguity: whether a distinct alternative fits the clouds as well: of the structure points on
+///   which the two disagree (one aligns within inlier_distance, the other not within twice it),
+///   (those only the alternative aligns + 10) / (those only the selected pose aligns + 10). The
+///   alternatives: the other levels' candidates, the pose turned 180 degrees about the vertical
+///   through the centre of what it aligns, and both moved along the target structure's principal
+///   axes by the shifts where the clouds' occupancy agrees best, which is where a repetition
+///   period shows (verify/ambiguity.cpp). A corridor of pillars, a street of identical facades,
+///   a symmetric hall: a pose off by whole periods, or turned, fits as well as the right one.
 /// The pose is accepted when every measure reaches its threshold; a pose resting on the minimal
 /// number of inliers for its model must reach the higher `minimal_support_overlap`.
 
@@ -45,6 +53,14 @@ struct AcceptanceParams {
   /// poses 0.17-0.55 (KITTI 0.36-0.43, semreg-dev with and without labels 0.17-0.55); wrong poses
   /// that reach the overlap threshold 0.01-0.07 (a street that slides along itself, hedges)
   double min_sharpness = 0.1;
+  /// largest ambiguity ratio accepted (Acceptance::ambiguity: points only the best distinct
+  /// alternative aligns + 10, over points only the selected pose aligns + 10); above it the
+  /// verdict is "ambiguous", naming the alternative. 10 or more turns the test off (nothing is
+  /// searched). Calibrated in bench/README.md ("Issue 33: ambiguity in the verdict")
+  double max_ambiguity = 0.55;
+  /// furthest shift searched for a repetition along each principal axis [m] (and no further than
+  /// the target's structure reaches)
+  double ambiguity_range = 40.0;
 
   template <class V>
   static void fields(V&& v) {
@@ -73,7 +89,39 @@ struct AcceptanceParams {
       {"min_margin",
        "The least D margin to the best distinct candidate, as a fraction of mu times the points.",
        "", Range::closed(0, 1)});
+    v(&AcceptanceParams::max_ambiguity,
+      {"max_ambiguity",
+       "The largest ratio of points only a distinct alternative pose aligns (another level's, the "
+       "pose turned 180 degrees, moved by a repetition of the scene) to points only the selected "
+       "pose aligns, 10 added to each; 10 or more: off.",
+       "", Range::closed(0, 1e6)});
+    v(&AcceptanceParams::ambiguity_range,
+      {"ambiguity_range", "The furthest shift searched for a repetition along each principal axis.",
+       "m", Range::closed(0, 1e4)});
   }
+};
+
+/// One test of the verdict, for display: "overlap 0.31 >= 0.24".
+struct AcceptanceTest {
+  std::string name;         ///< "overlap", "inliers", "sharpness", "margin", "minimal support", "ambiguity"
+  double value = 0.0;       ///< the measure
+  double threshold = 0.0;   ///< what it is compared with
+  bool at_most = false;     ///< passes when value <= threshold (ambiguity), else value >= threshold
+  bool passed = false;      ///< whether the test passed (also true when it does not apply)
+  bool applies = true;      ///< false: not taken (minimal support with redundant inliers; off)
+  std::string unit;         ///< "" for fractions and counts
+  std::string description;  ///< what the measure is, one line
+};
+
+/// A distinct pose that explains the clouds about as well as the selected one.
+struct AcceptanceAlternative {
+  Transform T_target_source = Transform::Identity();  ///< the alternative pose
+  /// what it is, in words: "a pose moved 18.0 m (x +17.9, y -1.2)", "the pose turned 180 deg and
+  /// moved 0.4 m (...)", "level 2's candidate (25.8 m, 3 deg away)"; empty when there is none
+  std::string description;
+  /// (points only it aligns + 10) / (points only the selected pose aligns + 10): about 1, nothing
+  /// tells the two apart; over 1, the alternative fits better
+  double ratio = 0.0;
 };
 
 /// The verdict and the measures behind it.
@@ -89,7 +137,17 @@ struct Acceptance {
   /// / overlap: near 1 for an alignment of distinct structure, near 0 (or below) for one that
   /// slides along itself or aligns what matches anywhere
   double sharpness = 0.0;
-  std::string reason;  ///< which measure failed, e.g. "overlap 0.08 < 0.25"; empty if accepted
+  /// the best distinct alternative's ratio (Acceptance::alternative); 0 when there is none or the
+  /// test is off
+  double ambiguity = 0.0;
+  AcceptanceAlternative alternative;  ///< the best distinct alternative (empty description: none)
+  /// every test with its value and threshold, in the order the reason is chosen: overlap, inliers,
+  /// sharpness, margin, minimal support, ambiguity; empty when nothing was judged
+  std::vector<AcceptanceTest> tests;
+  /// which measure failed, e.g. "overlap 0.08 < 0.25", or "ambiguous: a pose moved 18.0 m (x
+  /// +18.0, y +0.1) fits as well: it alone aligns 0.97 times the points the selected pose alone
+  /// aligns"; empty if accepted
+  std::string reason;
 };
 
 /// Judges the selection of `verification` among `candidates`. No selection: not accepted.

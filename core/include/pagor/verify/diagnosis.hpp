@@ -108,6 +108,9 @@ struct Diagnosis {
   std::optional<PoseError> selected_error;
   /// The ground truth scores worse than the selected (wrong) candidate: D itself misled.
   bool score_misled = false;
+  /// The selected pose is wrong and the acceptance's ambiguity alternative (Acceptance::alternative)
+  /// is right: the scene repeats, and the verdict found the right pose as the look-alike.
+  bool alternative_right = false;
   double time_ms = 0.0;  ///< wall time [ms]
 
   /// Whether correspondence i is true under the tolerance used.
@@ -129,6 +132,8 @@ struct DiagnosisInput {
   const Config* config = nullptr;
   /// The selected pose after refinement (nullopt: the selected level's candidate as it is).
   std::optional<Transform> selected_pose;
+  /// The verdict (null: not judged); its ambiguity alternative is checked against the truth.
+  const Acceptance* acceptance = nullptr;
 };
 
 /// Diagnoses the stages' outputs against `T_target_source_gt`. Every pointer but `verifier`

@@ -1,0 +1,353 @@
+#include "verify/ambiguity.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace pagor {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+// Correlation peaks scored by E, and of those the best refined locally: each costs one search of
+// the counted points per step (a scene repeating along two axes, turned or not, has at most four
+// look-alikes within the range worth a look; beyond them the peaks are echoes of the same).
+constexpr std::size_t kPeaksScored = 6, kPeaksRefined = 2;
+// Points added to both sides of the ratio of disagreeing points: with nothing that tells two poses
+// apart (a corridor a period on, a street sliding along itself) the ratio is 1, ambiguous, and a
+// handful of points cannot make it 0 or 10. Ten points of the verification's 0.5 m voxels are
+// 2.5 m^2 of surface, the end of a car.
+constexpr double kPriorPoints = 10.0;
+
+// The target structure's horizontal principal axes (columns, major first) and, in that frame
+// (u, v, z), the grid's lower corner.
+struct Frame {
+  Eigen::Matrix2d axes = Eigen::Matrix2d::Identity();
+  Eigen::Vector3d lower = Eigen::Vector3d::Zero();
+  Eigen::Vector3d to_frame(const Eigen::Vector3d& p) const {
+    const Eigen::Vector2d uv = axes.transpose() * p.head<2>();
+    return {uv.x(), uv.y(), p.z()};
+  }
+};
+
+// Occupied cells of the target structure on a grid of `cell` [m] in its principal frame.
+class Occupancy {
+ public:
+  Occupancy(const std::vector<Eigen::Vector3f>& points, const std::vector<char>& counts,
+            double cell)
+      : cell_(cell) {
+    Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+    Eigen::Matrix2d cov = Eigen::Matrix2d::Zero();
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < points.size(); ++i)
+      if (counts[i]) mean += points[i].head<2>().cast<double>(), ++n;
+    if (n == 0) return;
+    mean /= static_cast<double>(n);
+    for (std::size_t i = 0; i < points.size(); ++i)
+      if (counts[i]) {
+        const Eigen::Vector2d d = points[i].head<2>().cast<double>() - mean;
+        cov += d * d.transpose();
+      }
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(cov);
+    frame_.axes.col(0) = eig.eigenvectors().col(1);  // eigenvalues ascend: the major axis last
+    frame_.axes.col(1) = eig.eigenvectors().col(0);
+    Eigen::Vector3d lo = Eigen::Vector3d::Constant(HUGE_VAL), hi = -lo;
+    for (std::size_t i = 0; i < points.size(); ++i)
+      if (counts[i]) {
+        const Eigen::Vector3d f = frame_.to_frame(points[i].cast<double>());
+        lo = lo.cwiseMin(f);
+        hi = hi.cwiseMax(f);
+      }
+    frame_.lower = lo;
+    for (int k = 0; k < 3; ++k) size_[k] = static_cast<int>((hi[k] - lo[k]) / cell_) + 1;
+    occupied_.assign(static_cast<std::size_t>(size_[0]) * size_[1] * size_[2], 0);
+    for (std::size_t i = 0; i < points.size(); ++i)
+      if (counts[i]) occupied_[index(key(points[i].cast<double>()))] = 1;
+  }
+
+  const Frame& frame() const { return frame_; }
+  double cell() const { return cell_; }
+  double extent(int axis) const { return size_[axis] * cell_; }
+  Eigen::Vector3i key(const Eigen::Vector3d& p) const {
+    const Eigen::Vector3d f = (frame_.to_frame(p) - frame_.lower) / cell_;
+    return {static_cast<int>(std::floor(f.x())), static_cast<int>(std::floor(f.y())),
+            static_cast<int>(std::floor(f.z()))};
+  }
+  bool inside(const Eigen::Vector3i& k) const {
+    for (int a = 0; a < 3; ++a)
+      if (k[a] < 0 || k[a] >= size_[a]) return false;
+    return true;
+  }
+  bool at(const Eigen::Vector3i& k) const { return inside(k) && occupied_[index(k)] != 0; }
+
+ private:
+  std::size_t index(const Eigen::Vector3i& k) const {
+    return (static_cast<std::size_t>(k.z()) * size_[1] + k.y()) * size_[0] + k.x();
+  }
+  double cell_;
+  Frame frame_;
+  int size_[3] = {0, 0, 0};
+  std::vector<char> occupied_;
+};
+
+// A peak of a correlation profile: the pose it stands for and how many cells agree there.
+struct Peak {
+  Transform T = Transform::Identity();
+  double agreement = 0.0;
+  bool turned = false;
+};
+
+Transform moved(const Transform& T, const Eigen::Vector2d& shift) {
+  Transform out = T;
+  out.block<2, 1>(0, 3) += shift;
+  return out;
+}
+
+// The correlation of the counted source points under `T` with the target's occupancy, for every
+// shift along each principal axis within `range`, and its peaks: shifts that agree at least as
+// well as every other within `separation` [m].
+void profile_peaks(const Verifier& verifier, const std::vector<char>& counts, const Transform& T,
+                   const Occupancy& occ, double range, double separation, bool turned,
+                   std::vector<Peak>& peaks) {
+  std::vector<Eigen::Vector3i> cells;
+  const auto& src = verifier.source_points();
+  for (std::size_t i = 0; i < src.size(); ++i)
+    if (counts[i])
+      cells.push_back(occ.key(T.block<3, 3>(0, 0) * src[i].cast<double>() + T.block<3, 1>(0, 3)));
+  const auto less = [](const Eigen::Vector3i& a, const Eigen::Vector3i& b) {
+    return std::lexicographical_compare(a.data(), a.data() + 3, b.data(), b.data() + 3);
+  };
+  std::sort(cells.begin(), cells.end(), less);
+  cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
+  const int w = std::max(1, static_cast<int>(std::ceil(separation / occ.cell())));
+  for (int axis = 0; axis < 2; ++axis) {
+    const int K = static_cast<int>(std::min(range, occ.extent(axis)) / occ.cell());
+    // Per shift the raw agreement and the agreement per comparable cell (those the shift keeps
+    // within the target's grid): the latter finds the peaks without the fall-off of a shrinking
+    // overlap (walls that slide along themselves agree less at every step away).
+    std::vector<double> raw(static_cast<std::size_t>(2 * K + 1), 0.0), rate = raw;
+    for (int k = -K; k <= K; ++k) {
+      Eigen::Vector3i step = Eigen::Vector3i::Zero();
+      step[axis] = k;
+      double agree = 0, comparable = 0;
+      for (const Eigen::Vector3i& cell : cells) {
+        agree += occ.at(cell + step);
+        comparable += occ.inside(cell + step);
+      }
+      raw[static_cast<std::size_t>(k + K)] = agree;
+      // Shifts that leave less than half of the cells comparable tell little.
+      rate[static_cast<std::size_t>(k + K)] =
+          comparable >= 0.5 * static_cast<double>(cells.size()) ? agree / comparable : 0.0;
+    }
+    for (int k = -K; k <= K; ++k) {
+      const double v = rate[static_cast<std::size_t>(k + K)];
+      bool peak = v > 0;
+      for (int j = std::max(-K, k - w); peak && j <= std::min(K, k + w); ++j) {
+        const double u = rate[static_cast<std::size_t>(j + K)];
+        peak = j < k ? u < v : u <= v;
+      }
+      if (!peak) continue;
+      const Eigen::Vector2d shift = occ.frame().axes.col(axis) * (k * occ.cell());
+      peaks.push_back({moved(T, shift), raw[static_cast<std::size_t>(k + K)], turned});
+    }
+  }
+}
+
+// Where the target looked: the horizontal cells of `cell` [m] that hold a target point, gaps of a
+// cell closed (a cell between two looked-at ones counts). Not widened beyond the last points: a
+// source point just beyond the target's range is unaligned by the right pose and aligned by a pose
+// that moves it inwards, which made right poses with objects look rivalled (1.4).
+class Footprint {
+ public:
+  Footprint(const std::vector<Eigen::Vector3f>& target, double cell, bool everywhere)
+      : cell_(cell), everywhere_(everywhere) {
+    if (target.empty() || everywhere) return;
+    Eigen::Vector2f lo = target[0].head<2>(), hi = lo;
+    for (const auto& p : target) lo = lo.cwiseMin(p.head<2>()), hi = hi.cwiseMax(p.head<2>());
+    lower_ = lo.cast<double>() - Eigen::Vector2d::Constant(cell_);
+    nx_ = static_cast<int>((hi.x() - lo.x()) / cell_) + 3;
+    ny_ = static_cast<int>((hi.y() - lo.y()) / cell_) + 3;
+    std::vector<char> held(static_cast<std::size_t>(nx_) * ny_, 0);
+    for (const auto& p : target) {
+      const auto [x, y] = key(p.cast<double>());
+      held[static_cast<std::size_t>(y) * nx_ + x] = 1;
+    }
+    looked_ = held;
+    const auto at = [&](int x, int y) { return held[static_cast<std::size_t>(y) * nx_ + x] != 0; };
+    for (int y = 1; y + 1 < ny_; ++y)
+      for (int x = 1; x + 1 < nx_; ++x)
+        if ((at(x - 1, y) && at(x + 1, y)) || (at(x, y - 1) && at(x, y + 1)))
+          looked_[static_cast<std::size_t>(y) * nx_ + x] = 1;
+  }
+  bool covers(const Eigen::Vector3d& q) const {
+    if (everywhere_) return true;
+    const auto [x, y] = key(q);
+    return x >= 0 && y >= 0 && x < nx_ && y < ny_ && looked_[static_cast<std::size_t>(y) * nx_ + x];
+  }
+
+ private:
+  std::pair<int, int> key(const Eigen::Vector3d& q) const {
+    return {static_cast<int>(std::floor((q.x() - lower_.x()) / cell_)),
+            static_cast<int>(std::floor((q.y() - lower_.y()) / cell_))};
+  }
+  double cell_;
+  bool everywhere_;
+  Eigen::Vector2d lower_ = Eigen::Vector2d::Zero();
+  int nx_ = 0, ny_ = 0;
+  std::vector<char> looked_;
+};
+
+Eigen::Vector3d apply(const Transform& T, const Eigen::Vector3f& p) {
+  return T.block<3, 3>(0, 0) * p.cast<double>() + T.block<3, 1>(0, 3);
+}
+
+// Scores an alternative against the selected pose by the points on which they disagree: those one
+// aligns (within the inlier distance r) and the other clearly does not (beyond 2 r), among the
+// counted points both put where the target looked. What both align (a wall sliding along itself,
+// a row of pillars a period on) says nothing either way; counted in, a car in a corridor was 4 %
+// of the evidence. The margin between r and 2 r keeps out points that only the voxel grid's phase
+// moves across r (the refined pose fits the voxel centroids, an alternative does not). A point
+// moved out of the target's view can be neither aligned nor refuted (moving a stretch of corridor
+// further into view gains wall it did not earn).
+class Comparison {
+ public:
+  explicit Comparison(const AmbiguityInput& in)
+      : in_(in),
+        footprint_(in.verifier->target_points(), in.distinct.max_translation_error / 2,
+                   in.target_complete),
+        r_(static_cast<float>(in.inlier_distance)) {
+    d_sel_ = in.selected_distances ? *in.selected_distances
+                                   : in.verifier->distances(in.T_selected, 2 * r_, *in.counts);
+    const auto& src = in.verifier->source_points();
+    seen_.assign(src.size(), 0);
+    for (std::size_t i = 0; i < src.size(); ++i) {
+      seen_[i] = (*in.counts)[i] && footprint_.covers(apply(in.T_selected, src[i]));
+      aligned_ += seen_[i] && d_sel_[i] <= r_;
+    }
+  }
+
+  /// (points only `T` aligns + prior) / (points only the selected pose aligns + prior); 0 when
+  /// `T` puts most of what the selected pose aligns where the target did not look.
+  double ratio(const Transform& T) const {
+    const std::vector<float> d = in_.verifier->distances(T, 2 * r_, seen_);
+    const auto& src = in_.verifier->source_points();
+    std::size_t only_sel = 0, only_alt = 0, judged = 0;
+    for (std::size_t i = 0; i < src.size(); ++i) {
+      if (!seen_[i] || !footprint_.covers(apply(T, src[i]))) continue;
+      judged += d_sel_[i] <= r_;
+      only_sel += d_sel_[i] <= r_ && d[i] > 2 * r_;
+      only_alt += d[i] <= r_ && d_sel_[i] > 2 * r_;
+    }
+    // A pose that puts most of the evidence where the target did not look is no competitor (in a
+    // 30 m hall, a pose moved 17 m kept a handful of points, and matched them).
+    if (2 * judged < aligned_) return 0.0;
+    return (static_cast<double>(only_alt) + kPriorPoints) /
+           (static_cast<double>(only_sel) + kPriorPoints);
+  }
+
+  /// The centre of what the selected pose aligns, in the target frame.
+  Eigen::Vector2d aligned_centre() const {
+    Eigen::Vector2d sum = Eigen::Vector2d::Zero();
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < d_sel_.size(); ++i)
+      if ((*in_.counts)[i] && d_sel_[i] <= r_)
+        sum += apply(in_.T_selected, in_.verifier->source_points()[i]).head<2>(), ++n;
+    return n ? Eigen::Vector2d(sum / static_cast<double>(n)) : in_.T_selected.block<2, 1>(0, 3);
+  }
+
+ private:
+  const AmbiguityInput& in_;
+  Footprint footprint_;
+  float r_;
+  std::vector<float> d_sel_;
+  std::vector<char> seen_;  // counted, and put where the target looked by the selected pose
+  std::size_t aligned_ = 0;  // of those, aligned by the selected pose
+};
+
+Transform half_turn(const Transform& T, const Eigen::Vector2d& centre) {
+  Transform R = Transform::Identity();
+  R.block<2, 2>(0, 0) = -Eigen::Matrix2d::Identity();
+  R.block<2, 1>(0, 3) = 2 * centre;  // p -> centre - (p - centre)
+  return R * T;
+}
+
+std::string describe(const Transform& alt, const Transform& selected, bool turned) {
+  const Eigen::Vector2d d = alt.block<2, 1>(0, 3) - selected.block<2, 1>(0, 3);
+  char buf[128];
+  std::snprintf(buf, sizeof(buf), "%s %.1f m (x %+.1f, y %+.1f)",
+                turned ? "the pose turned 180 deg and moved" : "a pose moved", d.norm(), d.x(),
+                d.y());
+  return buf;
+}
+
+// Moves T in the horizontal plane by steps of `step` [m] while its ratio improves; halves the step
+// once.
+Transform climb(const Comparison& cmp, Transform T, double& e, double step) {
+  // At most four moves a step size: the alternative is a peak of the correlation already, within
+  // a cell of its best; on a plateau (a wall sliding along itself) it is not chased back.
+  for (int round = 0; round < 2; ++round, step /= 2)
+    for (int moves = 0, better = 1; better && moves < 4; ++moves) {
+      better = 0;
+      for (const Eigen::Vector2d& dir : {Eigen::Vector2d(1, 0), Eigen::Vector2d(-1, 0),
+                                        Eigen::Vector2d(0, 1), Eigen::Vector2d(0, -1)}) {
+        const Transform next = moved(T, step * dir);
+        const double en = cmp.ratio(next);
+        if (en > e) {
+          T = next, e = en, better = 1;
+          break;
+        }
+      }
+    }
+  return T;
+}
+
+}  // namespace
+
+AcceptanceAlternative find_best_alternative(const AmbiguityInput& in,
+                                            const std::vector<Transform>& candidates,
+                                            const std::vector<std::string>& names) {
+  AcceptanceAlternative best;
+  const Occupancy occ(in.verifier->target_points(), *in.target_counts, in.mu / 2);
+  const Comparison cmp(in);
+  const auto distinct = [&](const Transform& T) {
+    return !pose_error(T, in.T_selected, in.distinct).success;
+  };
+  const auto offer = [&](const Transform& T, double ratio, std::string description) {
+    if (best.description.empty() || ratio > best.ratio) best = {T, std::move(description), ratio};
+  };
+  for (std::size_t i = 0; i < candidates.size(); ++i)
+    if (distinct(candidates[i]))
+      offer(candidates[i], cmp.ratio(candidates[i]), names[i]);
+
+  // Repetitions: correlation peaks of the pose and of its half turn.
+  std::vector<Peak> peaks;
+  const double separation = in.distinct.max_translation_error;
+  profile_peaks(*in.verifier, *in.counts, in.T_selected, occ, in.search_range, separation, false,
+                peaks);
+  const Transform turned = half_turn(in.T_selected, cmp.aligned_centre());
+  profile_peaks(*in.verifier, *in.counts, turned, occ, in.search_range, separation, true, peaks);
+  peaks.erase(std::remove_if(peaks.begin(), peaks.end(),
+                             [&](const Peak& p) { return !distinct(p.T); }),
+              peaks.end());
+  std::sort(peaks.begin(), peaks.end(),
+            [](const Peak& a, const Peak& b) { return a.agreement > b.agreement; });
+  if (peaks.size() > kPeaksScored) peaks.resize(kPeaksScored);
+  std::vector<double> e(peaks.size());
+  std::vector<std::size_t> order(peaks.size());
+  for (std::size_t i = 0; i < peaks.size(); ++i) {
+    e[i] = cmp.ratio(peaks[i].T);
+    order[i] = i;
+  }
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return e[a] > e[b]; });
+  for (std::size_t r = 0; r < order.size(); ++r) {
+    const std::size_t i = order[r];
+    Transform T = peaks[i].T;
+    // The best few moved to their own optimum: a peak is found on a grid of mu / 2.
+    if (r < kPeaksRefined) T = climb(cmp, T, e[i], occ.cell() / 2);
+    if (distinct(T)) offer(T, e[i], describe(T, in.T_selected, peaks[i].turned));
+  }
+  return best;
+}
+
+}  // namespace pagor
