@@ -7,6 +7,7 @@
 #include "io/json_input.hpp"
 #include "pagor/errors.hpp"
 #include "pagor/io/file_input.hpp"
+#include "pagor/sets/runner.hpp"
 
 namespace pagor::cli {
 namespace {
@@ -16,6 +17,20 @@ std::string dump(const nlohmann::json& j) {  // paths are bytes, not always UTF-
 }
 
 }  // namespace
+
+Option jobs_option() {
+  return {"jobs", 1, "N",
+          "pairs run at once, each on a worker thread of its own (default 1; 'auto': the "
+          "cores); the results and their order are those of 1"};
+}
+
+int jobs_from_args(const Args& args) {
+  try {
+    return parse_jobs(args.get("jobs", "1"), "--jobs");
+  } catch (const InputError& e) {
+    throw UsageError(e.what());
+  }
+}
 
 BenchJournal::BenchJournal(const std::string& out, bool resume, std::string tool)
     : out_(out), partial_(sibling_path(out, ".partial")), tool_(std::move(tool)) {
@@ -53,12 +68,9 @@ const nlohmann::json* BenchJournal::find(const std::string& key) const {
   return it == done_.end() ? nullptr : &it->second;
 }
 
-void BenchJournal::append(nlohmann::json line, const std::string& pair, const std::string& key) {
-  line["pair"] = pair;
-  line["run_key"] = key;
-  line["tool_version"] = tool_;
-  appender_->append(dump(line));
-  done_[key] = std::move(line);
+void BenchJournal::append(const std::string& line, const std::string& key) {
+  appender_->append(line);
+  done_[key] = nlohmann::json::parse(line);
 }
 
 void BenchJournal::finish(const std::vector<std::string>& keys) {

@@ -15,10 +15,16 @@
 #include <string>
 #include <vector>
 
+#include "common/args.hpp"
 #include "pagor/io/atomic_file.hpp"
 #include "pagor/io/file_lock.hpp"
 
 namespace pagor::cli {
+
+/// `--jobs N` of bench and sweep: pairs run at once, each on a worker thread of its own.
+Option jobs_option();
+/// Its value (1 when absent; "auto": the cores). Throws UsageError naming --jobs.
+int jobs_from_args(const Args& args);
 
 class BenchJournal {
  public:
@@ -34,9 +40,13 @@ class BenchJournal {
   /// Where the journal is kept (FILE.partial).
   const std::string& partial() const { return partial_; }
 
-  /// Appends one result line, adding "pair" (the pair's name in its set), "run_key" and
-  /// "tool_version". Throws InputError.
-  void append(nlohmann::json line, const std::string& pair, const std::string& key);
+  /// The tool and its build, as written to every line.
+  const std::string& tool() const { return tool_; }
+
+  /// Appends one result line (bench_result_line, runner.hpp: its "run_key" is `key`) and flushes
+  /// it. Pairs may come in any order (those run in parallel come as they finish): FILE.partial
+  /// holds each finished pair once, and finish() writes them in set order. Throws InputError.
+  void append(const std::string& line, const std::string& key);
 
   /// Writes `out` atomically with the lines recorded under `keys`, in that order (a key without a
   /// line, a pair that failed, is left out), then removes the journal. Throws InputError.

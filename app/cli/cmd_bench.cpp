@@ -80,18 +80,20 @@ void print_summary(const BenchmarkSummary& s, const Config& config) {
 }  // namespace
 
 std::vector<Option> bench_options() {
-  std::vector<Option> o = {{"manifest", 1, "FILE",
-           "pairs manifest: 'SOURCE TARGET [gt=FILE] [source_labels=FILE] [target_labels=FILE] "
-           "[name=TEXT] [overlap=no]' per line, paths relative to it"},
-          {"kitti-root", 1, "DIR", "KITTI root holding sequences/ (with --pairs)"},
-          {"sequence", 1, "SEQ", "KITTI sequence (default 00)"},
-          {"pairs", 1, "FILE", "KITTI pairs file: 'source target' frame numbers per line"},
-          {"out", 1, "FILE", "write one JSON line per pair (pagor.register/1 without config)"},
-          {"resume", 0, "", "with --out: continue a killed run, skipping pairs already written"},
-          threads_option(),
-          {"compare-thresholds", 0, "",
-           "instead: the pyramid vs each threshold alone vs each alone with the exact maximum "
-           "clique (TEASER++-like), success rates"}};
+  std::vector<Option> o = {
+      {"manifest", 1, "FILE",
+       "pairs manifest: 'SOURCE TARGET [gt=FILE] [source_labels=FILE] [target_labels=FILE] "
+       "[name=TEXT] [overlap=no]' per line, paths relative to it"},
+      {"kitti-root", 1, "DIR", "KITTI root holding sequences/ (with --pairs)"},
+      {"sequence", 1, "SEQ", "KITTI sequence (default 00)"},
+      {"pairs", 1, "FILE", "KITTI pairs file: 'source target' frame numbers per line"},
+      {"out", 1, "FILE", "write one JSON line per pair (pagor.register/1 without config)"},
+      {"resume", 0, "", "with --out: continue a killed run, skipping pairs already written"},
+      threads_option(),
+      jobs_option(),
+      {"compare-thresholds", 0, "",
+       "instead: the pyramid vs each threshold alone vs each alone with the exact maximum "
+       "clique (TEASER++-like), success rates"}};
   for (Option& c : config_options_for()) o.push_back(std::move(c));
   return o;
 }
@@ -109,14 +111,14 @@ std::string tool_version() {
   return std::string("pagor ") + PAGOR_VERSION + " (build " + build + ")";
 }
 
-// Each pair's result key: the tool, the configuration and the pair's fingerprint (its name and
-// the content of its files). Empty for a pair whose files cannot be read (it fails when run).
-std::vector<std::string> run_keys(const PairSet& set, const Config& config) {
-  const std::string common = tool_version() + "\n" + config_to_json(config, -1) + "\n";
+// Each pair's result key (run_key, runner.hpp). Empty for a pair whose files cannot be read (it
+// fails when run).
+std::vector<std::string> run_keys(const PairSet& set, const Config& config,
+                                  const std::string& tool) {
   std::vector<std::string> keys;
   for (const PairEntry& e : set.pairs) {
     try {
-      keys.push_back(fingerprint(common + pair_fingerprint(e)));
+      keys.push_back(run_key(tool, config, e));
     } catch (const InputError&) {
       keys.emplace_back();
     }
@@ -138,20 +140,17 @@ int run_bench(const Args& args) {
     inputs.insert(inputs.end(), pairs.begin(), pairs.end());
     check_outputs({{"--out", args.get("out")}}, inputs);
     journal.emplace(args.get("out"), args.has("resume"), tool_version());
-    keys = run_keys(set, config);
+    keys = run_keys(set, config, journal->tool());
   }
 
-  SetRunner runner(set, args.get_int("threads", 1));
+  const int jobs = jobs_from_args(args);
+  std::vector<std::unique_ptr<SetRunner>> runners =
+      make_runners(set, jobs, args.get_int("threads", 1));
   std::printf("%-14s %6s %10s %11s %8s %6s %8s %10s  %s\n", "pair", "level", "t err [m]",
               "r err [deg]", "success", "bound", "verdict", "time [ms]", "diagnosis");
   const bool progress = isatty(STDERR_FILENO);  // in a log it would run into the next line
   RunSetHooks hooks;
   hooks.reuse = [&](std::size_t k) -> std::optional<PairOutcome> {
-    const PairEntry& entry = set.pairs[k];
-    if (progress) {
-      std::fprintf(stderr, "[%zu/%zu] %s ...\r", k + 1, set.pairs.size(), entry.name.c_str());
-      std::fflush(stderr);
-    }
     const nlohmann::json* done = journal && !keys[k].empty() ? journal->find(keys[k]) : nullptr;
     if (!done) return std::nullopt;
     PairOutcome o = outcome_from_json_line(
@@ -159,15 +158,25 @@ int run_bench(const Args& args) {
     o.timed = false;  // its times are not counted
     return o;
   };
-  hooks.done = [&](std::size_t k, const PairOutcome& o) {
+  // As each pair finishes (in any order with --jobs): its line to the journal at once.
+  hooks.finished = [&](std::size_t k, const PairOutcome& o) {
+    if (journal && o.loaded && o.timed && !keys[k].empty())
+      journal->append(bench_result_line(o.report_json, set.pairs[k].name, keys[k], journal->tool()),
+                      keys[k]);
+  };
+  hooks.done = [&](std::size_t, const PairOutcome& o) {  // rows in set order
+    if (progress) std::fprintf(stderr, "%70s\r", "");
     for (const std::string& w : o.load_warnings) warn(w);
     print_row(o);
-    if (journal && o.loaded && o.timed && !keys[k].empty())
-      journal->append(nlohmann::json::parse(o.report_json), set.pairs[k].name, keys[k]);
+  };
+  hooks.progress = [&](const SetProgress& p) {
+    if (!progress) return;
+    std::fprintf(stderr, "%-70s\r", progress_text(p).c_str());
+    std::fflush(stderr);
   };
   std::vector<PairOutcome> outcomes;
-  with_config_origin(args, [&] { outcomes = run_set(runner, config, hooks); });
-  if (progress) std::fprintf(stderr, "%60s\r", "");
+  with_config_origin(args, [&] { outcomes = run_set(runners, config, hooks); });
+  if (progress) std::fprintf(stderr, "%70s\r", "");
   const BenchmarkSummary s = summarize(outcomes);
   if (s.pairs_run == 0)
     throw InputError(set.origin + ": no pair could be run (first: " + outcomes.front().load_error +

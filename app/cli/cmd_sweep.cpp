@@ -3,9 +3,13 @@
 // its cached stages reused across the settings (sweep.hpp).
 // Prints a table like the paper's ablation; writes JSON lines, CSV and a plot (PNG and CSV).
 
+#include <unistd.h>
+
+#include <chrono>
 #include <cstdio>
 #include <sstream>
 
+#include "bench_journal.hpp"
 #include "command.hpp"
 #include "common/outputs.hpp"
 #include "pagor/errors.hpp"
@@ -70,23 +74,25 @@ void print_table(const SweepResult& r, const Config& base) {
 }  // namespace
 
 std::vector<Option> sweep_options() {
-  std::vector<Option> o = {{"manifest", 1, "FILE", "pairs manifest (as for bench)"},
-          {"kitti-root", 1, "DIR", "KITTI root holding sequences/ (with --pairs)"},
-          {"sequence", 1, "SEQ", "KITTI sequence (default 00)"},
-          {"pairs", 1, "FILE", "KITTI pairs file: 'source target' frame numbers per line"},
-          {"thresholds", 1, "SETS", "threshold sets, e.g. '0.02,0.04,0.08;0.03,0.06'"},
-          {"mu", 1, "LIST", "verification truncations [m], e.g. '0.5,1,2'"},
-          {"trim", 1, "LIST", "TRIM kinds: ratio,difference"},
-          {"model", 1, "LIST", "pose models: se3,se2,four_dof"},
-          {"solver", 1, "LIST", "clique solvers: cascaded,independent,exact"},
-          {"param", 1, "PATH=LIST",
-           "any parameter by key path, e.g. 'gnc.noise_bound=0.5,1,2'; several separated by "
-           "spaces (pagor config --describe lists the paths)"},
-          {"out", 1, "FILE", "write one JSON line per setting (pagor.sweep/1)"},
-          {"csv", 1, "FILE", "write the table as CSV"},
-          {"plot", 1, "PNG", "draw success and upper bound per setting as a PNG"},
-          {"plot-csv", 1, "FILE", "write the plotted numbers as CSV"},
-          threads_option()};
+  std::vector<Option> o = {
+      {"manifest", 1, "FILE", "pairs manifest (as for bench)"},
+      {"kitti-root", 1, "DIR", "KITTI root holding sequences/ (with --pairs)"},
+      {"sequence", 1, "SEQ", "KITTI sequence (default 00)"},
+      {"pairs", 1, "FILE", "KITTI pairs file: 'source target' frame numbers per line"},
+      {"thresholds", 1, "SETS", "threshold sets, e.g. '0.02,0.04,0.08;0.03,0.06'"},
+      {"mu", 1, "LIST", "verification truncations [m], e.g. '0.5,1,2'"},
+      {"trim", 1, "LIST", "TRIM kinds: ratio,difference"},
+      {"model", 1, "LIST", "pose models: se3,se2,four_dof"},
+      {"solver", 1, "LIST", "clique solvers: cascaded,independent,exact"},
+      {"param", 1, "PATH=LIST",
+       "any parameter by key path, e.g. 'gnc.noise_bound=0.5,1,2'; several separated by "
+       "spaces (pagor config --describe lists the paths)"},
+      {"out", 1, "FILE", "write one JSON line per setting (pagor.sweep/1)"},
+      {"csv", 1, "FILE", "write the table as CSV"},
+      {"plot", 1, "PNG", "draw success and upper bound per setting as a PNG"},
+      {"plot-csv", 1, "FILE", "write the plotted numbers as CSV"},
+      threads_option(),
+      jobs_option()};
   for (Option& c : config_options_for()) o.push_back(std::move(c));
   return o;
 }
@@ -106,15 +112,25 @@ int run_sweep_command(const Args& args) {
     throw UsageError("--plot needs the studio's renderer: build with PAGOR_BUILD_STUDIO=ON");
 #endif
   std::printf("%zu settings x %zu pairs\n", settings.size(), set.pairs.size());
+  const int jobs = jobs_from_args(args);
+  const bool tty = isatty(STDERR_FILENO);  // in a log it would run into the next line
+  const auto t0 = std::chrono::steady_clock::now();
+  SetProgress progress{0, set.pairs.size(), 0, set.pairs.size(), 0.0};
   SweepResult result;
   with_config_origin(args, [&] {
-    result = run_sweep(set, settings, args.get_int("threads", 1),
-                       [&](int p, int k, const PairOutcome& o) {
-                         std::fprintf(stderr, "\r[pair %d/%zu, setting %d/%zu] %-30s", p + 1,
-                                      set.pairs.size(), k + 1, settings.size(), o.name.c_str());
-                       });
+    result = run_sweep(
+        set, settings, args.get_int("threads", 1),
+        [&](int, int k, const PairOutcome&) {
+          if (static_cast<std::size_t>(k) + 1 < settings.size()) return;  // the pair is done
+          ++progress.done;
+          ++progress.ran;
+          progress.elapsed_s =
+              std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+          if (tty) std::fprintf(stderr, "%-70s\r", progress_text(progress).c_str());
+        },
+        nullptr, jobs);
   });
-  std::fprintf(stderr, "\r%70s\r", "");
+  if (tty) std::fprintf(stderr, "%70s\r", "");
   for (const auto& o : result.settings.front().outcomes)
     if (!o.loaded) warn("pair " + o.name + " failed: " + o.load_error);
   print_table(result, base);

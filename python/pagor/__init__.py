@@ -10,7 +10,9 @@ consistency graphs, cascaded densest cliques, GNC-TLS poses, verification on the
 matcher's correspondences; both return a `Result` (the report of ``pagor register --json`` and
 numpy arrays; picklable). `read_cloud(path)` reads every format the pagor tool reads.
 Configurations are dicts with the keys of the JSON configuration (`default_config()`,
-`preset_config(name)`, `check_config(dict)`). Bad arguments raise ValueError or TypeError naming
+`preset_config(name)`, `check_config(dict)`). `run_pairs(pairs, config)` runs a whole set (a
+manifest, a KITTI pairs file or a list) on every core or on a Dask cluster and returns the rows
+``pagor bench --out`` writes; ``python3 -m pagor bench`` writes them as the tool does. Bad arguments raise ValueError or TypeError naming
 the argument or the configuration key (`Error`, a ValueError, for the core's own checks); a
 missing file raises FileNotFoundError.
 """
@@ -23,6 +25,7 @@ import numpy as np
 
 from . import _inputs, _pagor
 from .results import ORIGINS, Correspondences, Landmarks, Level, Result
+from .sets import KittiPairs, Rows, run_pairs
 
 __version__: str = _pagor.__version__
 Error = _pagor.Error
@@ -30,7 +33,8 @@ Error.__module__ = "pagor"
 
 __all__ = ["register", "register_correspondences", "read_cloud", "synthetic_scene",
            "default_config", "preset_config", "preset_names", "check_config", "Result", "Level",
-           "Landmarks", "Correspondences", "ORIGINS", "Error", "__version__"]
+           "Landmarks", "Correspondences", "ORIGINS", "Error", "__version__", "run_pairs",
+           "KittiPairs", "Rows"]
 
 
 def _warn(messages: List[str]) -> None:

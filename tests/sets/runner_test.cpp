@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "pagor/errors.hpp"
 #include "pagor/sets/runner.hpp"
@@ -234,4 +236,120 @@ TEST_CASE("the rows and the summary agree: every accept is counted, failed pairs
   CHECK(s.pairs_run == 5);
   CHECK(s.skipped == 1);
   CHECK(s.negatives == 2);
+}
+
+// A report without its times (every key ending in `_ms`: `timings_ms`, the diagnosis' `time_ms`,
+// each level's `clique_time_ms`): what must not depend on how many jobs ran the set.
+static void erase_times(nlohmann::json& j) {
+  if (j.is_object())
+    for (auto it = j.begin(); it != j.end();) {
+      const std::string& key = it.key();
+      if (key.size() > 3 && key.compare(key.size() - 3, 3, "_ms") == 0)
+        it = j.erase(it);
+      else
+        erase_times(*it++);
+    }
+  else if (j.is_array())
+    for (auto& child : j) erase_times(child);
+}
+
+static std::string without_timings(const std::string& report_json) {
+  nlohmann::json j = nlohmann::json::parse(report_json);
+  erase_times(j);
+  return j.dump();
+}
+
+TEST_CASE("pairs on two worker threads give the outcomes of one, rows in set order") {
+  const PairSet set = synthetic_set();
+  SetRunner one(set);
+  const std::vector<PairOutcome> want = run_set(one, synthetic_config());
+  std::vector<std::unique_ptr<SetRunner>> runners = make_runners(set, 2);
+  REQUIRE(runners.size() == 2);
+  std::vector<std::size_t> done, finished;
+  std::vector<SetProgress> progress;
+  RunSetHooks hooks;
+  hooks.finished = [&](std::size_t i, const PairOutcome&) { finished.push_back(i); };
+  hooks.done = [&](std::size_t i, const PairOutcome&) { done.push_back(i); };
+  hooks.progress = [&](const SetProgress& p) { progress.push_back(p); };
+  const std::vector<PairOutcome> got = run_set(runners, synthetic_config(), hooks);
+  CHECK(done == std::vector<std::size_t>{0, 1, 2, 3});  // set order, however they finished
+  std::sort(finished.begin(), finished.end());
+  CHECK(finished == std::vector<std::size_t>{0, 1, 2, 3});  // each once
+  REQUIRE(progress.size() == 4);
+  CHECK(progress.back().done == 4);
+  CHECK(progress.back().ran == 4);
+  CHECK(progress.back().seconds_left() == std::optional<double>(0.0));
+  REQUIRE(got.size() == want.size());
+  for (std::size_t i = 0; i < want.size(); ++i) {
+    INFO("pair " << i);
+    CHECK(got[i].name == want[i].name);
+    CHECK(got[i].loaded == want[i].loaded);
+    CHECK(same_result(got[i], want[i]));
+    if (want[i].loaded)
+      CHECK(without_timings(got[i].report_json) == without_timings(want[i].report_json));
+  }
+  CHECK_FALSE(got[3].loaded);  // the missing pair fails its row only
+  CHECK_THAT(got[3].load_error, Catch::Contains("/nonexistent/cloud.pcd"));
+}
+
+TEST_CASE("parallel pairs: reused outcomes are not run, a cancel stops them, jobs parse") {
+  const PairSet set = synthetic_set();
+  std::vector<std::unique_ptr<SetRunner>> runners = make_runners(set, 2);
+  RunSetHooks hooks;
+  hooks.reuse = [](std::size_t i) -> std::optional<PairOutcome> {
+    if (i == 3) return std::nullopt;  // only the missing pair runs
+    PairOutcome o;
+    o.name = "reused " + std::to_string(i);
+    o.loaded = true;
+    o.timed = false;
+    return o;
+  };
+  std::vector<std::size_t> finished;
+  hooks.finished = [&](std::size_t i, const PairOutcome&) { finished.push_back(i); };
+  const std::vector<PairOutcome> out = run_set(runners, synthetic_config(), hooks);
+  CHECK(finished == std::vector<std::size_t>{3});
+  CHECK(out[0].name == "reused 0");
+  CHECK(out[2].name == "reused 2");
+  CHECK_FALSE(out[3].loaded);
+  std::atomic<bool> cancel{true};
+  RunSetHooks cancelled;
+  cancelled.cancel = &cancel;
+  CHECK_THROWS_AS(run_set(runners, synthetic_config(), cancelled), Cancelled);
+  CHECK(parse_jobs("3", "--jobs") == 3);
+  CHECK(parse_jobs("auto", "--jobs") >= 1);
+  CHECK_THROWS_WITH(parse_jobs("0", "--jobs"), Catch::Contains("--jobs"));
+  CHECK_THROWS_WITH(parse_jobs("2x", "--jobs"), Catch::Contains("'2x'"));
+}
+
+TEST_CASE("a sweep on two jobs equals the sweep on one") {
+  const PairSet set = synthetic_set();
+  SweepGrid grid;
+  grid.add("verification.mu", {0.5, 1.0});
+  const auto settings = sweep_settings(synthetic_config(), grid);
+  const SweepResult one = run_sweep(set, settings, 1, {}, nullptr, 1);
+  std::vector<int> seen(set.pairs.size() * settings.size(), 0);
+  const SweepResult two = run_sweep(
+      set, settings, 1, [&](int p, int k, const PairOutcome&) { ++seen[p * settings.size() + k]; },
+      nullptr, 2);
+  CHECK(std::all_of(seen.begin(), seen.end(), [](int n) { return n == 1; }));
+  CHECK(two.stage_runs == one.stage_runs);
+  REQUIRE(two.settings.size() == one.settings.size());
+  for (std::size_t k = 0; k < settings.size(); ++k)
+    for (std::size_t i = 0; i < set.pairs.size(); ++i) {
+      INFO("setting " << k << ", pair " << i);
+      CHECK(two.settings[k].outcomes[i].name == one.settings[k].outcomes[i].name);
+      CHECK(same_result(two.settings[k].outcomes[i], one.settings[k].outcomes[i]));
+    }
+  const auto strip = [](std::string lines) {  // the wall and mean times aside
+    std::string out;
+    std::istringstream in(lines);
+    for (std::string line; std::getline(in, line);) {
+      nlohmann::json j = nlohmann::json::parse(line);
+      j.erase("wall_ms");
+      j.erase("mean_time_ms");
+      out += j.dump() + "\n";
+    }
+    return out;
+  };
+  CHECK(strip(sweep_json_lines(two)) == strip(sweep_json_lines(one)));
 }

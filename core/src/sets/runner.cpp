@@ -1,10 +1,21 @@
 #include "pagor/sets/runner.hpp"
 
 #include <algorithm>
+#include <chrono>
+#include <condition_variable>
+#include <cstdio>
+#include <cstdlib>
+#include <deque>
+#include <exception>
+#include <mutex>
 #include <new>
+#include <nlohmann/json.hpp>
 #include <numeric>
+#include <thread>
 
 #include "pagor/errors.hpp"
+#include "pagor/io/atomic_file.hpp"
+#include "pagor/io/file_input.hpp"
 
 namespace pagor {
 namespace {
@@ -148,20 +159,204 @@ void SetRunner::clear_cache() {
   last_.reset();
 }
 
+namespace {
+
+std::vector<std::size_t> run_order(const RunSetHooks& hooks, std::size_t n) {
+  std::vector<std::size_t> order = hooks.order;
+  if (order.empty()) {
+    order.resize(n);
+    std::iota(order.begin(), order.end(), 0);
+  }
+  return order;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+}  // namespace
+
+std::string progress_text(const SetProgress& p) {
+  char rate[32] = "n/a", left[32] = "n/a";
+  if (const auto r = p.rate()) std::snprintf(rate, sizeof(rate), "%.2f", *r);
+  if (const auto s = p.seconds_left()) {
+    const long t = static_cast<long>(*s + 0.5);
+    if (t >= 3600)
+      std::snprintf(left, sizeof(left), "%ld h %02ld min", t / 3600, t / 60 % 60);
+    else if (t >= 60)
+      std::snprintf(left, sizeof(left), "%ld min %02ld s", t / 60, t % 60);
+    else
+      std::snprintf(left, sizeof(left), "%ld s", t);
+  }
+  char text[128];
+  std::snprintf(text, sizeof(text), "%zu/%zu pairs, %s pairs/s, %s left", p.done, p.total, rate,
+                left);
+  return text;
+}
+
 std::vector<PairOutcome> run_set(SetRunner& runner, const Config& config,
                                  const RunSetHooks& hooks) {
   std::vector<PairOutcome> out(runner.size());
-  std::vector<std::size_t> order = hooks.order;
-  if (order.empty()) {
-    order.resize(runner.size());
-    std::iota(order.begin(), order.end(), 0);
-  }
+  const std::vector<std::size_t> order = run_order(hooks, runner.size());
+  const auto t0 = std::chrono::steady_clock::now();
+  SetProgress progress{0, runner.size(), 0, order.size(), 0.0};
   for (std::size_t i : order) {
     std::optional<PairOutcome> reused = hooks.reuse ? hooks.reuse(i) : std::nullopt;
-    out[i] = reused ? std::move(*reused) : runner.run(i, config, hooks.cancel);
+    if (reused) {
+      out[i] = std::move(*reused);
+      --progress.to_run;
+    } else {
+      out[i] = runner.run(i, config, hooks.cancel);
+      ++progress.ran;
+      if (hooks.finished) hooks.finished(i, out[i]);
+    }
     if (hooks.done) hooks.done(i, out[i]);
+    ++progress.done;
+    progress.elapsed_s = seconds_since(t0);
+    if (hooks.progress) hooks.progress(progress);
   }
   return out;
+}
+
+std::vector<std::unique_ptr<SetRunner>> make_runners(const PairSet& set, int jobs, int threads) {
+  std::vector<std::unique_ptr<SetRunner>> runners;
+  for (int k = 0; k < std::max(jobs, 1); ++k)
+    runners.push_back(std::make_unique<SetRunner>(set, threads));
+  return runners;
+}
+
+void run_parallel(int jobs, const std::vector<std::size_t>& order,
+                  const std::function<void(int, std::size_t, const std::atomic<bool>*)>& work,
+                  const std::function<void(std::size_t)>& finished,
+                  const std::atomic<bool>* cancel) {
+  std::mutex mutex;
+  std::condition_variable changed;
+  std::deque<std::size_t> ready;  // finished, not yet handed to `finished`
+  std::size_t next = 0;           // the next position of `order` to take
+  int running = 0;
+  std::exception_ptr error;
+  std::atomic<bool> stop{false};
+  const auto worker = [&](int w) {
+    for (;;) {
+      std::size_t i;
+      {
+        const std::lock_guard<std::mutex> lock(mutex);
+        if (stop || next == order.size()) break;
+        i = order[next++];
+      }
+      try {
+        work(w, i, &stop);
+      } catch (...) {
+        const std::lock_guard<std::mutex> lock(mutex);
+        if (!error) error = std::current_exception();
+        stop = true;
+        break;
+      }
+      const std::lock_guard<std::mutex> lock(mutex);
+      ready.push_back(i);
+      changed.notify_all();
+    }
+    const std::lock_guard<std::mutex> lock(mutex);
+    --running;
+    changed.notify_all();
+  };
+  const int n = std::max(1, std::min<int>(jobs, static_cast<int>(order.size())));
+  std::vector<std::thread> threads;
+  running = n;
+  for (int w = 0; w < n; ++w) threads.emplace_back(worker, w);
+  std::exception_ptr hook_error;
+  {
+    std::unique_lock<std::mutex> lock(mutex);
+    for (;;) {
+      changed.wait_for(lock, std::chrono::milliseconds(50),
+                       [&] { return !ready.empty() || running == 0; });
+      if (cancel && cancel->load()) stop = true;
+      while (!ready.empty()) {
+        const std::size_t i = ready.front();
+        ready.pop_front();
+        if (hook_error) continue;
+        lock.unlock();  // the workers go on while the caller writes
+        try {
+          finished(i);
+        } catch (...) {
+          hook_error = std::current_exception();
+          stop = true;
+        }
+        lock.lock();
+      }
+      if (running == 0 && ready.empty()) break;
+    }
+  }
+  for (std::thread& t : threads) t.join();
+  if (error) std::rethrow_exception(error);
+  if (hook_error) std::rethrow_exception(hook_error);
+  if (cancel && cancel->load()) throw Cancelled();
+}
+
+std::vector<PairOutcome> run_set(std::vector<std::unique_ptr<SetRunner>>& runners,
+                                 const Config& config, const RunSetHooks& hooks) {
+  if (runners.size() == 1) return run_set(*runners.front(), config, hooks);
+  const std::size_t n = runners.front()->size();
+  std::vector<PairOutcome> out(n);
+  const auto t0 = std::chrono::steady_clock::now();
+  const std::vector<std::size_t> order = run_order(hooks, n);
+  std::vector<bool> has(n, false);
+  std::vector<std::size_t> to_run;
+  for (std::size_t i : order) {
+    std::optional<PairOutcome> reused = hooks.reuse ? hooks.reuse(i) : std::nullopt;
+    if (reused) {
+      out[i] = std::move(*reused);
+      has[i] = true;
+    } else {
+      to_run.push_back(i);
+    }
+  }
+  SetProgress progress{0, n, 0, to_run.size(), 0.0};
+  std::size_t shown = 0;  // positions of `order` whose outcome went to `done`
+  const auto flush = [&] {
+    for (; shown < order.size() && has[order[shown]]; ++shown) {
+      if (hooks.done) hooks.done(order[shown], out[order[shown]]);
+      ++progress.done;
+      progress.elapsed_s = seconds_since(t0);
+      if (hooks.progress) hooks.progress(progress);
+    }
+  };
+  flush();  // the reused pairs before the first one to run
+  run_parallel(
+      static_cast<int>(runners.size()), to_run,
+      [&](int w, std::size_t i, const std::atomic<bool>* stop) {
+        out[i] = runners[static_cast<std::size_t>(w)]->run(i, config, stop);
+      },
+      [&](std::size_t i) {
+        has[i] = true;
+        ++progress.ran;
+        if (hooks.finished) hooks.finished(i, out[i]);
+        flush();
+      },
+      hooks.cancel);
+  return out;
+}
+
+int parse_jobs(const std::string& text, const std::string& what) {
+  if (text == "auto") return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  char* end = nullptr;
+  const long n = std::strtol(text.c_str(), &end, 10);
+  if (text.empty() || *end != '\0' || n < 1 || n > 1024)
+    throw InputError(what + ": expected a number of jobs 1 .. 1024 or 'auto', got '" + text + "'");
+  return static_cast<int>(n);
+}
+
+std::string run_key(const std::string& tool, const Config& config, const PairEntry& entry) {
+  return fingerprint(tool + "\n" + config_to_json(config, -1) + "\n" + pair_fingerprint(entry));
+}
+
+std::string bench_result_line(const std::string& report_json, const std::string& pair,
+                              const std::string& key, const std::string& tool) {
+  nlohmann::json line = nlohmann::json::parse(report_json);
+  line["pair"] = pair;
+  line["run_key"] = key;
+  line["tool_version"] = tool;
+  return line.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);  // paths: bytes
 }
 
 }  // namespace pagor

@@ -7,6 +7,8 @@
 #include <cstdlib>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <numeric>
+#include <optional>
 #include <sstream>
 
 #include "pagor/errors.hpp"
@@ -195,9 +197,57 @@ SweepResult run_sweep(SetRunner& runner, const std::vector<SweepSetting>& settin
 }
 
 SweepResult run_sweep(const PairSet& set, const std::vector<SweepSetting>& settings, int threads,
-                      const SweepProgressFn& progress, const std::atomic<bool>* cancel) {
-  SetRunner runner(set, threads);
-  return run_sweep(runner, settings, progress, cancel);
+                      const SweepProgressFn& progress, const std::atomic<bool>* cancel, int jobs) {
+  if (jobs <= 1 || set.pairs.size() < 2) {
+    SetRunner runner(set, threads);
+    return run_sweep(runner, settings, progress, cancel);
+  }
+  std::vector<std::unique_ptr<SetRunner>> runners = make_runners(set, jobs, threads);
+  const std::size_t n = set.pairs.size();
+  // by_pair[p][k]: pair p's outcome and time with setting k, each pair filled by one worker
+  std::vector<std::vector<PairOutcome>> by_pair(n);
+  std::vector<std::vector<double>> ms(n, std::vector<double>(settings.size(), 0.0));
+  std::vector<std::size_t> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  run_parallel(
+      jobs, order,
+      [&](int w, std::size_t p, const std::atomic<bool>* stop) {
+        std::optional<PairOutcome> skipped;  // a pair that does not load: skipped in every setting
+        for (std::size_t k = 0; k < settings.size(); ++k) {
+          if (stop->load()) throw Cancelled();
+          const auto t0 = std::chrono::steady_clock::now();
+          PairOutcome o =
+              skipped ? *skipped
+                      : runners[static_cast<std::size_t>(w)]->run(p, settings[k].config, stop);
+          if (!o.loaded) skipped = o;
+          ms[p][k] =
+              std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
+                  .count();
+          by_pair[p].push_back(std::move(o));
+        }
+      },
+      [&](std::size_t p) {
+        if (progress)
+          for (std::size_t k = 0; k < settings.size(); ++k)
+            progress(static_cast<int>(p), static_cast<int>(k), by_pair[p][k]);
+      },
+      cancel);
+  SweepResult result;
+  result.pairs = static_cast<int>(n);
+  for (std::size_t k = 0; k < settings.size(); ++k) {
+    SweepSettingResult r{settings[k], {}, {}, 0.0};
+    for (std::size_t p = 0; p < n; ++p) {
+      r.outcomes.push_back(std::move(by_pair[p][k]));
+      r.wall_ms += ms[p][k];
+    }
+    r.summary = summarize(r.outcomes);
+    result.settings.push_back(std::move(r));
+  }
+  for (const auto& runner : runners)
+    for (int i = 0; i < kStageCount; ++i)
+      result.stage_runs[static_cast<std::size_t>(i)] +=
+          runner->stage_runs()[static_cast<std::size_t>(i)];
+  return result;
 }
 
 std::vector<double> parse_number_list(const std::string& text, const std::string& what) {

@@ -7,6 +7,8 @@
 ///   define_io          read_cloud, synthetic_scene
 ///   define_register    register_clouds, register_correspondences: plain dicts of numpy arrays
 ///                      and the report, which results.py turns into Result, Level, ...
+///   define_sets        bench_pairs, pair_keys, tool_version, config_json, FileLock: the result
+///                      lines of `pagor bench --out` for sets.py's run_pairs
 /// Every core error (pagor::Error) is raised as pagor.Error, a subclass of ValueError, with the
 /// core's message.
 
@@ -19,5 +21,6 @@ namespace py = pybind11;
 void define_config(py::module_& m);
 void define_io(py::module_& m);
 void define_register(py::module_& m);
+void define_sets(py::module_& m);
 
 }  // namespace pagor::python

@@ -14,4 +14,5 @@ PYBIND11_MODULE(_pagor, m) {
   python::define_config(m);
   python::define_io(m);
   python::define_register(m);
+  python::define_sets(m);
 }

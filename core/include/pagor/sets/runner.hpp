@@ -13,6 +13,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "pagor/config.hpp"
@@ -70,13 +71,41 @@ class SetRunner {
   std::array<int, kStageCount> stage_runs_{};
 };
 
-/// What a caller of run_set may do around each pair.
+/// How far a run over a set has come: what a progress line shows.
+struct SetProgress {
+  std::size_t done = 0;    ///< pairs with an outcome (run or reused)
+  std::size_t total = 0;   ///< pairs in the set
+  std::size_t ran = 0;     ///< of `done`, the pairs run now (not reused)
+  std::size_t to_run = 0;  ///< pairs this run has to run (total minus the reused)
+  double elapsed_s = 0.0;  ///< wall time since the run started [s]
+  /// Pairs run per second of wall time; undefined before the first pair has run.
+  std::optional<double> rate() const {
+    return ran > 0 && elapsed_s > 0 ? std::optional<double>(ran / elapsed_s) : std::nullopt;
+  }
+  /// Wall time left at that rate [s]; undefined while the rate is.
+  std::optional<double> seconds_left() const {
+    const auto r = rate();
+    return r ? std::optional<double>((to_run - ran) / *r) : std::nullopt;
+  }
+};
+
+/// "12/40 pairs, 1.9 pairs/s, 15 s left" (the rate and time left "n/a" while undefined).
+std::string progress_text(const SetProgress& progress);
+
+/// What a caller of run_set may do around each pair. Every hook is called on the calling thread,
+/// one call at a time, also when the pairs run on several worker threads.
 struct RunSetHooks {
   /// Before pair i runs: an outcome to use instead (a result taken from an earlier run, with
-  /// `timed = false`), or nullopt to run it.
+  /// `timed = false`), or nullopt to run it. With jobs > 1 it is asked for every pair first.
   std::function<std::optional<PairOutcome>(std::size_t i)> reuse;
-  /// After pair i has an outcome (run or reused).
+  /// As soon as pair i has run, in the order the pairs finish (which, with jobs > 1, is not the
+  /// set's): where results go that must not be lost when the run is killed (a journal).
+  std::function<void(std::size_t i, const PairOutcome& outcome)> finished;
+  /// After pair i has an outcome (run or reused), in the order of `order` (the set's by default),
+  /// out-of-order finishes held back until those before them are done: where rows are printed.
   std::function<void(std::size_t i, const PairOutcome& outcome)> done;
+  /// After each pair's outcome: how far the run has come.
+  std::function<void(const SetProgress& progress)> progress;
   /// The order to run the pairs in (empty: set order). Outcomes come back in set order anyway.
   std::vector<std::size_t> order;
   const std::atomic<bool>* cancel = nullptr;  ///< checked between pairs and stages
@@ -86,5 +115,40 @@ struct RunSetHooks {
 /// SetRunner::run does.
 std::vector<PairOutcome> run_set(SetRunner& runner, const Config& config,
                                  const RunSetHooks& hooks = {});
+
+/// The same on `runners.size()` worker threads, pairs in parallel: each worker takes the next pair
+/// (in `hooks.order`) and runs it on its own runner, so each runner and its pipelines are used by
+/// one thread at a time. The outcomes are those of one runner alone, times apart. The first
+/// exception a pair throws (a ConfigError, Cancelled) stops the others after their current pair
+/// and is rethrown here. Every runner must be over the same set.
+std::vector<PairOutcome> run_set(std::vector<std::unique_ptr<SetRunner>>& runners,
+                                 const Config& config, const RunSetHooks& hooks = {});
+
+/// `jobs` runners over `set`, each with `threads` for its pipelines' parallel stages.
+std::vector<std::unique_ptr<SetRunner>> make_runners(const PairSet& set, int jobs, int threads = 1);
+
+/// Runs `work(worker, i)` for each i of `order` on `jobs` threads (worker: 0 .. jobs - 1, each
+/// thread its own), and `finished(i)` on the calling thread, one at a time, as each returns. The
+/// `stop` given to `work` becomes true when `cancel` does or another call has thrown; the first
+/// exception is rethrown here once every thread has ended. What both run parallel set loops on.
+void run_parallel(
+    int jobs, const std::vector<std::size_t>& order,
+    const std::function<void(int worker, std::size_t i, const std::atomic<bool>* stop)>& work,
+    const std::function<void(std::size_t i)>& finished, const std::atomic<bool>* cancel = nullptr);
+
+/// The worker threads `text` asks for: a whole number >= 1, or "auto" for the machine's cores.
+/// Throws InputError naming `what` (e.g. "--jobs") otherwise.
+int parse_jobs(const std::string& text, const std::string& what);
+
+/// What a result line of `pagor bench --out` is filed under (its `run_key`): a fingerprint of the
+/// tool and its build (`tool`), the whole configuration, and the pair's name and the content of
+/// every file it reads (pair_fingerprint). Throws InputError naming a file that cannot be read.
+std::string run_key(const std::string& tool, const Config& config, const PairEntry& entry);
+
+/// A result line as `pagor bench --out` writes it (without the newline): the pair's report
+/// (PairOutcome::report_json) with "pair", "run_key" and "tool_version" added, keys in order. The
+/// CLI and the Python package both write their lines with this.
+std::string bench_result_line(const std::string& report_json, const std::string& pair,
+                              const std::string& key, const std::string& tool);
 
 }  // namespace pagor

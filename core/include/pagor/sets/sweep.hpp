@@ -92,10 +92,14 @@ using SweepProgressFn = std::function<void(int pair, int setting, const PairOutc
 SweepResult run_sweep(SetRunner& runner, const std::vector<SweepSetting>& settings,
                       const SweepProgressFn& progress = {},
                       const std::atomic<bool>* cancel = nullptr);
-/// The same on a runner of its own.
+/// The same on runners of its own: `jobs` worker threads each take the next pair and run every
+/// setting on it (runner.hpp: run_parallel), each with `threads` for the pipelines' parallel
+/// stages. The outcomes equal those of one job, times apart; `progress` is called on the calling
+/// thread, for each setting of a pair once the pair is done (pairs in the order they finish), and
+/// a setting's `wall_ms` is then the sum of its time on every worker.
 SweepResult run_sweep(const PairSet& set, const std::vector<SweepSetting>& settings,
                       int threads = 1, const SweepProgressFn& progress = {},
-                      const std::atomic<bool>* cancel = nullptr);
+                      const std::atomic<bool>* cancel = nullptr, int jobs = 1);
 
 /// Parses a list like "0.5,1,2" (comma-separated numbers); `what` names it in errors. Threshold
 /// sets are separated by ';' ("0.02,0.04;0.02,0.04,0.08"). Throws InputError.
