@@ -1,7 +1,5 @@
 // pagor-studio: the interactive studio (GLFW window) and its headless twin (OSMesa), one code path.
 
-#include <GLFW/glfw3.h>
-#include <backends/imgui_impl_glfw.h>
 #include <imgui.h>
 
 #include <algorithm>
@@ -22,13 +20,11 @@
 #include "pagor/io/kitti.hpp"
 #include "render/headless.hpp"
 #include "studio.hpp"
+#include "widgets/timings.hpp"
+#include "window_loop.hpp"
 
 namespace pagor::studio {
 namespace {
-
-void* glfw_proc(const char* name) {
-  return reinterpret_cast<void*>(glfwGetProcAddress(name));
-}
 
 std::vector<cli::Option> studio_options() {
   std::vector<cli::Option> o = cli::pair_options();
@@ -43,6 +39,12 @@ std::vector<cli::Option> studio_options() {
       {"screenshot", 1, "PNG", "headless: write the rendered UI to this PNG"},
       {"size", 1, "WxH", "image or window size in pixels (default 1280x720)"},
       {"frames", 1, "N", "headless: also time N frames and print the frame time"},
+      {"orbit", 0, "",
+       "headless, with --frames: turn the camera 3 degrees before each timed frame (the frame "
+       "time of an orbit; still frames reuse the last picture of the 3D view)"},
+      {"timings", 0, "",
+       "headless: show wall-clock times in the picture (hidden by default, so that two renders "
+       "of the same inputs are equal byte for byte)"},
       {"json", 1, "OUT",
        "headless: write the result as pagor register --json does (schema pagor.register/1)"},
       {"timeout", 1, "S",
@@ -123,16 +125,6 @@ AppState state_from_args(const cli::Args& args) {
   std::_Exit(1);
 }
 
-// Where the window keeps its recent files: $XDG_CONFIG_HOME/pagor-studio/recent.txt (else
-// ~/.config/...); empty without a home. The headless studio keeps none.
-std::string recent_files_path() {
-  if (const char* x = std::getenv("XDG_CONFIG_HOME"); x && *x)
-    return std::string(x) + "/pagor-studio/recent.txt";
-  if (const char* h = std::getenv("HOME"); h && *h)
-    return std::string(h) + "/.config/pagor-studio/recent.txt";
-  return {};
-}
-
 int run_headless(const cli::Args& args, AppState state) {
   if (!args.has("screenshot") && !args.has("frames") && !args.has("json"))
     throw cli::UsageError("--headless needs --screenshot OUT.png, --json OUT or --frames N");
@@ -149,6 +141,7 @@ int run_headless(const cli::Args& args, AppState state) {
     cli::check_outputs({{"--screenshot", args.get("screenshot")}}, inputs);
   }
   const int w = state.width, h = state.height;
+  ui::set_timings_shown(args.has("timings"));
   HeadlessContext context(w, h);
   Gl gl;
   std::string error;
@@ -203,92 +196,21 @@ int run_headless(const cli::Args& args, AppState state) {
   if (args.has("frames")) {
     const int n = std::max(1, cli::parse_int(args.get("frames"), "--frames"));
     const int uploads = studio.scene().cloud_uploads();
+    const int renders = studio.scene().renders(), thinned = studio.scene().thinned_renders();
     std::vector<double> ms;
     for (int i = 0; i < n; ++i) {
+      if (args.has("orbit")) studio.state().camera.yaw_deg += 3.0f;
       studio.frame(w, h);
       ms.push_back(studio.last_frame_ms());
     }
     std::sort(ms.begin(), ms.end());
     std::printf(
-        "frame time at %dx%d over %d frames: median %.1f ms, min %.1f ms, max %.1f ms; "
-        "cloud uploads during them: %d\n",
-        w, h, n, ms[ms.size() / 2], ms.front(), ms.back(),
-        studio.scene().cloud_uploads() - uploads);
+        "frame time at %dx%d over %d frames%s: median %.1f ms, min %.1f ms, max %.1f ms; "
+        "cloud uploads during them: %d; 3D view drawn %d times (%d thinned)\n",
+        w, h, n, args.has("orbit") ? " (orbit)" : "", ms[ms.size() / 2], ms.front(), ms.back(),
+        studio.scene().cloud_uploads() - uploads, studio.scene().renders() - renders,
+        studio.scene().thinned_renders() - thinned);
   }
-  return 0;
-}
-
-int run_window(AppState state) {
-  glfwSetErrorCallback(
-      [](int code, const char* text) { std::fprintf(stderr, "GLFW error %d: %s\n", code, text); });
-  if (!glfwInit()) throw Error("cannot initialise GLFW (no display? use --headless)");
-  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
-  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
-  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
-  GLFWwindow* window =
-      glfwCreateWindow(state.width, state.height, "Pagor Studio", nullptr, nullptr);
-  if (!window) {
-    glfwTerminate();
-    throw Error("cannot open a window with OpenGL 3.3 core");
-  }
-  glfwMakeContextCurrent(window);
-  glfwSwapInterval(1);
-  Gl gl;
-  std::string error;
-  if (!gl.load(glfw_proc, error)) throw Error(error);
-  ImGui::CreateContext();
-  // Shortcut keys are queued from GLFW's callback (installed first, so that ImGui's backend
-  // chains to it): a tap shorter than a frame still counts.
-  // Keys pressed and released within one frame (a quick tap while a frame takes long) are also
-  // held down for that frame, so that ImGui, which reads key states once a frame, sees them: a
-  // tapped Enter in a text field is not lost.
-  static Studio* g_studio = nullptr;
-  static std::vector<int> g_pressed, g_tapped;
-  glfwSetKeyCallback(window, [](GLFWwindow*, int key, int, int action, int mods) {
-    if (g_studio && action == GLFW_PRESS)
-      g_studio->queue_key(key, (mods & GLFW_MOD_CONTROL) != 0, (mods & GLFW_MOD_SHIFT) != 0);
-    if (key < 0 || key >= static_cast<int>(IM_ARRAYSIZE(ImGuiIO::KeysDown))) return;
-    if (action == GLFW_PRESS) g_pressed.push_back(key);
-    if (action == GLFW_RELEASE &&
-        std::find(g_pressed.begin(), g_pressed.end(), key) != g_pressed.end())
-      g_tapped.push_back(key);
-  });
-  // Files dropped on the window are opened by their kind.
-  glfwSetDropCallback(window, [](GLFWwindow*, int count, const char** paths) {
-    if (!g_studio) return;
-    g_studio->open_files(std::vector<std::string>(paths, paths + count));
-  });
-  ImGui_ImplGlfw_InitForOpenGL(window, true);  // platform only: input, time, cursor
-  {
-    state.recent_file = recent_files_path();
-    load_recent_files(state);
-    Studio studio(gl, std::move(state));
-    g_studio = &studio;
-    struct Reset {
-      ~Reset() { g_studio = nullptr; }
-    } reset;
-    if (!studio.init(error)) throw Error(error);
-    studio.submit_data();
-    if (studio.state().bench.open) studio.open_benchmark_now();
-    while (!glfwWindowShouldClose(window)) {
-      g_pressed.clear();
-      g_tapped.clear();
-      glfwPollEvents();
-      int w = 0, h = 0;
-      glfwGetFramebufferSize(window, &w, &h);
-      if (w <= 0 || h <= 0) continue;
-      ImGuiIO& io = ImGui::GetIO();
-      for (int k : g_tapped) io.KeysDown[k] = true;  // released already: held for this frame
-      ImGui_ImplGlfw_NewFrame();
-      studio.frame(w, h);
-      for (int k : g_tapped) io.KeysDown[k] = glfwGetKey(window, k) == GLFW_PRESS;
-      glfwSwapBuffers(window);
-    }
-  }
-  ImGui_ImplGlfw_Shutdown();
-  ImGui::DestroyContext();
-  glfwDestroyWindow(window);
-  glfwTerminate();
   return 0;
 }
 

@@ -325,7 +325,18 @@ void Studio::frame(int width, int height) {
   // The status before the snapshot: a request it counts as finished is in the snapshot if it
   // succeeded.
   const WorkerStatus status = worker_.status();
+  const auto previous = snapshot_;
   snapshot_ = worker_.snapshot();
+  // A new result, a run ended (a failure too) or the benchmark done: ImGui fits new tables and
+  // texts over a few frames, so these are drawn without waiting for input.
+  const bool bench_was_busy = bench_was_busy_;
+  bench_was_busy_ = bench_busy();
+  if (snapshot_ != previous || status.finished != finished_seen_ ||
+      (bench_was_busy && !bench_was_busy_))
+    settle_frames_ = kSettleFrames;
+  else if (settle_frames_ > 0)
+    --settle_frames_;
+  finished_seen_ = status.finished;
   // A slider held by the mouse (the previous frame's active item) re-runs at every step.
   runs_.observe(snapshot_, ImGui::IsAnyItemActive() && ImGui::IsMouseDown(ImGuiMouseButton_Left));
   update_staleness(status);
@@ -337,6 +348,8 @@ void Studio::frame(int width, int height) {
 
   ui::registry().begin_frame();
   ImGuiIO& io = ImGui::GetIO();
+  input_.feed(io);
+  for (const InputQueue::Press& p : input_.presses()) queue_key(p.key, p.ctrl, p.shift);
   io.DisplaySize = ImVec2(static_cast<float>(width), static_cast<float>(height));
   ImGui::NewFrame();
   handle_shortcuts();
@@ -365,6 +378,18 @@ void Studio::frame(int width, int height) {
   }
   frame_ms_ =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+bool Studio::bench_busy() const {
+  const BenchStatus b = bench_.status();
+  return b.busy || b.sweeping;
+}
+
+bool Studio::wants_frame() const {
+  const WorkerStatus status = worker_.status();
+  return status.busy || status.submitted != status.finished || worker_.snapshot() != snapshot_ ||
+         bench_busy() || !plot_exports_.empty() || state_.want_screenshot || !keys_.empty() ||
+         input_.pending() || settle_frames_ > 0;
 }
 
 bool Studio::screenshot(const std::string& path, int width, int height, std::string& error) const {

@@ -17,6 +17,7 @@
 #include "scene/scene_window.hpp"
 #include "state/app_state.hpp"
 #include "state/history.hpp"
+#include "state/input_queue.hpp"
 #include "widgets/plot.hpp"
 
 namespace pagor::studio {
@@ -66,9 +67,18 @@ class Studio : public StudioActions {
   /// each opened by its kind, two clouds as source and target.
   void open_files(const std::vector<std::string>& paths);
 
-  /// A key press (GLFW key code) for the shortcuts, queued until the next frame so that a press
-  /// and release between two frames still counts (ImGui 1.86 only sees keys held at a frame).
+  /// A key press (GLFW key code) for the shortcuts alone, handled at the next frame (the tests'
+  /// shortcut presses; the window's keys go through input()).
   void queue_key(int key, bool ctrl, bool shift);
+  /// The keyboard's events in the order they came (the window's GLFW callbacks fill it; the
+  /// driven-UI tests may): each frame feeds ImGui one logical event of it and reads its key
+  /// press as a shortcut.
+  InputQueue& input() { return input_; }
+
+  /// Whether another frame is needed without new input: a run or the benchmark's pairs in
+  /// progress, a result not yet shown, a plot export or screenshot to write, queued keys. The
+  /// window waits for events while it is false.
+  bool wants_frame() const;
 
   /// Builds and draws one frame of width x height pixels into the default framebuffer, and writes
   /// the screenshot the user asked for.
@@ -93,6 +103,7 @@ class Studio : public StudioActions {
 
  private:
   void handle_shortcuts();
+  bool bench_busy() const;
   void layout_windows(const WorkerStatus& status, float width, float height);
   void left_panel(float left, float height);
   void pair_view(float x, float width, float height);
@@ -123,6 +134,12 @@ class Studio : public StudioActions {
     bool ctrl, shift;
   };
   std::vector<KeyPress> keys_;
+  InputQueue input_;
+  // Frames still to draw after a result or a pass arrived (ImGui fits tables over a few frames).
+  static constexpr int kSettleFrames = 3;
+  int settle_frames_ = 0;
+  std::uint64_t finished_seen_ = 0;
+  bool bench_was_busy_ = false;
   double frame_ms_ = 0.0;
   std::uint64_t fit_request_ = 0;  // the data request the camera is to be fitted to (0: any)
   // Files just opened as data, and the worker request that reads them: one the worker fails to

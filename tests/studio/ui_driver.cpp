@@ -100,10 +100,12 @@ void UiDriver::frame() {
   for (int b = 0; b < 5; ++b) io.MouseDown[b] = down_[b];
   io.MouseWheel = wheel_;
   wheel_ = 0;
-  io.KeyCtrl = ctrl_;
-  io.KeyShift = shift_;
-  std::fill(std::begin(io.KeysDown), std::end(io.KeysDown), false);
-  for (int k : keys_down_) io.KeysDown[k] = true;
+  if (!studio_->input().pending()) {  // else the queue sets the key states
+    io.KeyCtrl = ctrl_;
+    io.KeyShift = shift_;
+    std::fill(std::begin(io.KeysDown), std::end(io.KeysDown), false);
+    for (int k : keys_down_) io.KeysDown[k] = true;
+  }
   for (char32_t c : pending_chars_) io.AddInputCharacter(static_cast<unsigned int>(c));
   pending_chars_.clear();
   studio_->frame(width_, height_);
@@ -170,6 +172,27 @@ void UiDriver::set_modifiers(bool ctrl, bool shift) {
   if (shift != shift_) ++events_;
   ctrl_ = ctrl;
   shift_ = shift;
+}
+
+void UiDriver::queue_key(int code, bool down) {
+  studio_->input().key(code, down);
+  ++events_;
+}
+void UiDriver::queue_tap(int code) {
+  queue_key(code, true);
+  queue_key(code, false);
+}
+void UiDriver::queue_chars(const std::u32string& text) {
+  for (char32_t c : text) studio_->input().character(static_cast<unsigned int>(c));
+  events_ += static_cast<int>(text.size());
+}
+int UiDriver::drain(int max_frames) {
+  int n = 0;
+  while (studio_->input().pending()) {
+    if (n++ >= max_frames) FAIL("the input queue did not drain in " << max_frames << " frames");
+    frame();
+  }
+  return n;
 }
 
 void UiDriver::click(ImVec2 p, int b) {

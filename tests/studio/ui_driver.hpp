@@ -24,7 +24,7 @@ namespace pagor::test {
 // Key codes the studio reads (GLFW's numbering).
 namespace keys {
 constexpr int Enter = 257, Escape = 256, Backspace = 259, Tab = 258, Left = 263, Right = 262,
-              F1 = 290;
+              F1 = 290, Home = 268, End = 269, LeftShift = 340, LeftCtrl = 341;
 }
 
 /// The action being performed, printed when an assertion aborts the process.
@@ -60,6 +60,16 @@ class UiDriver {
   void key(int code, bool down);
   void chars(const std::u32string& text);
   void set_modifiers(bool ctrl, bool shift);
+
+  // ---- the window's keyboard path: the studio's input queue, as GLFW's callbacks fill it ----
+  /// Queues a key press or release without drawing a frame (keys faster than frames).
+  void queue_key(int code, bool down);
+  /// Queues a key's press and release.
+  void queue_tap(int code);
+  /// Queues typed characters without drawing a frame.
+  void queue_chars(const std::u32string& text);
+  /// Draws frames until the queue is empty; returns how many (fails beyond `max_frames`).
+  int drain(int max_frames = 200);
 
   // ---- gestures (events plus the frames they need) ----
   void click(ImVec2 p, int b = 0);

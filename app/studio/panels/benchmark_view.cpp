@@ -12,6 +12,7 @@
 #include "panels/plot_panel.hpp"
 #include "widgets/bench_plots.hpp"
 #include "widgets/plot.hpp"
+#include "widgets/timings.hpp"
 #include "widgets/widgets.hpp"
 
 namespace pagor::studio {
@@ -131,8 +132,20 @@ void source_controls(AppState& state, BenchWorker& bench, StudioActions& actions
 
 void progress_and_cache(BenchViewState& v, BenchWorker& bench, const BenchStatus& st) {
   char text[160];
-  std::snprintf(text, sizeof(text), "%d / %d pairs with these parameters%s, %.2f s", st.done,
-                st.total, st.busy ? " (running)" : "", st.pass_ms / 1000.0);
+  std::snprintf(text, sizeof(text), "%d / %d pairs with these parameters%s, %s", st.done, st.total,
+                st.busy ? " (running)" : "", ui::timing("%.2f s", st.pass_ms / 1000.0).c_str());
+  // Cancel while the pass runs; after a cancel, run the rest.
+  if (st.busy) {
+    if (ui::button("cancel##bench", ImVec2(0, 0),
+                   "stop evaluating the set after the pair in progress (rows done stay)"))
+      bench.cancel();
+    ImGui::SameLine();
+  } else if (st.cancelled) {
+    if (ui::button("resume##bench", ImVec2(0, 0),
+                   "evaluate the set again with these parameters (cached pairs are quick)"))
+      bench.rerun();
+    ImGui::SameLine();
+  }
   ImGui::ProgressBar(st.total ? float(st.done) / st.total : 0.0f, ImVec2(-1, 0), text);
   ImGui::Text("caches: %d of %d pairs kept, %.0f MiB of %d MiB", st.cached, st.total,
               double(st.cache_bytes) / (1 << 20), v.budget_mib);
@@ -142,7 +155,7 @@ void progress_and_cache(BenchViewState& v, BenchWorker& bench, const BenchStatus
           "budget [MiB]##bench", &v.budget_mib, 64, 8192, true,
           "memory the per-pair caches may hold; pairs beyond it re-run from their files"))
     bench.set_budget(std::size_t(v.budget_mib) << 20);
-  if (!st.error.empty()) ImGui::TextColored(ImVec4(1, 0.45f, 0.4f, 1), "%s", st.error.c_str());
+  if (!st.error.empty()) ui::figure(st.error, ImVec4(1, 0.45f, 0.4f, 1));
 }
 
 void summary_line(const BenchmarkSummary& s) {
@@ -198,7 +211,7 @@ void row_cells(const BenchRow& r) {
   ImGui::TableNextColumn();
   ImGui::Text("%.1f", 100.0 * o.margin);
   ImGui::TableNextColumn();
-  ImGui::Text("%.0f", r.last_ms);
+  ui::figure(ui::timing("%.0f", r.last_ms));
   ImGui::TableNextColumn();
   ImGui::TextUnformatted(r.cached ? "yes" : "no");
   ImGui::TableNextColumn();  // the stage at fault (diagnosis.hpp); needs the ground truth

@@ -9,6 +9,7 @@
 
 #include "panels/panels.hpp"
 #include "widgets/number_format.hpp"
+#include "widgets/timings.hpp"
 #include "widgets/widgets.hpp"
 
 namespace pagor::studio {
@@ -257,7 +258,7 @@ void diagnosis_panel(const Snapshot* s, const std::string& stale_reason, ViewSta
                        d.gt_score, d.levels[static_cast<std::size_t>(d.selected)].score,
                        d.score_misled ? ": the score itself misled" : "", s->config.verification.mu,
                        s->verification_points);
-  ImGui::TextDisabled("diagnosis took %.1f ms", d.time_ms);
+  ImGui::TextDisabled("%s", ui::timing("diagnosis took %.1f ms", d.time_ms).c_str());
   ImGui::EndChild();
   ImGui::SameLine();
   ImGui::BeginChild("diag_view", ImVec2(0, 0));

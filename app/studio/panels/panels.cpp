@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <limits>
+#include <map>
 #include <string>
 
 #include "pagor/errors.hpp"
@@ -17,6 +18,23 @@ namespace pagor::studio {
 namespace {
 
 constexpr int kMaxFrame = 999999;
+constexpr int kExistsRecheckFrames = 60;  // a file may appear or go: looked at again after these
+
+bool path_exists(const std::string& path) {
+  struct Seen {
+    bool exists;
+    int frame;
+  };
+  static std::map<std::string, Seen> seen;  // the paths of the last few seconds' fields
+  const int now = ImGui::GetFrameCount();
+  auto it = seen.find(path);
+  if (it == seen.end() || now - it->second.frame > kExistsRecheckFrames) {
+    if (seen.size() > 64) seen.clear();
+    std::error_code ec;
+    it = seen.insert_or_assign(path, Seen{std::filesystem::exists(path, ec), now}).first;
+  }
+  return it->second.exists;
+}
 
 void open_data(AppState& s, StudioActions& actions) {
   s.have_data = true;
@@ -27,12 +45,13 @@ void open_data(AppState& s, StudioActions& actions) {
   actions.submit_data();
 }
 
-// A path field with a "..." button that opens the file browser for it.
+// A path field with a "..." button that opens the file browser for it; a path that names nothing
+// is drawn as a warning.
 void path_field(AppState& s, const char* label, std::string* path, FilePurpose purpose,
                 const char* tip) {
   ImGui::PushID(label);
   ImGui::PushItemWidth(ImGui::CalcItemWidth() - ImGui::GetFrameHeight() - 4);
-  ui::input_path(label, path, tip);
+  ui::input_path(label, path, tip, path->empty() || path_exists(resolve_path(s, *path)));
   ImGui::PopItemWidth();
   ImGui::SameLine(0, 4);
   if (ui::button("...", ImVec2(ImGui::GetFrameHeight(), 0), "Choose the file in a browser."))

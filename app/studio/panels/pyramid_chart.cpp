@@ -49,12 +49,52 @@ int label_stride(int n, float slot) {
 
 }  // namespace
 
+std::string selected_text(const Snapshot& s) {
+  const PoseError& e = *s.selected_error;
+  std::string t = ui::format("selected: %s (L%d), ", e.success ? "SUCCESS" : "FAILURE", s.selected);
+  if (!s.refinement.applied)
+    return t + ui::format("%.2f m / %.2f\xc2\xb0 (not refined)", e.translation, e.rotation_deg);
+  t += ui::format("refined %.2f m / %.2f\xc2\xb0", e.translation, e.rotation_deg);
+  if (s.unrefined_error)
+    t += ui::format(" (candidate before refinement %.2f m / %.2f\xc2\xb0)",
+                    s.unrefined_error->translation, s.unrefined_error->rotation_deg);
+  return t;
+}
+
+bool same_pose(const Transform& a, const Transform& b) {
+  const double dt = (a.block<3, 1>(0, 3) - b.block<3, 1>(0, 3)).norm();
+  const Eigen::Matrix3d R = a.block<3, 3>(0, 0).transpose() * b.block<3, 3>(0, 0);
+  const double angle_deg =
+      std::acos(std::clamp((R.trace() - 1.0) / 2.0, -1.0, 1.0)) * 180.0 / 3.14159265358979323846;
+  return dt <= kSamePoseTranslation && angle_deg <= kSamePoseRotationDeg;
+}
+
 std::string level_gap_text(const Snapshot& s) {
   const auto m = score_margin(s);
-  if (!m && !s.source) return "D gap to the runner-up level: n/a (no clouds, so no D)";
-  if (!m) return "D gap to the runner-up level: n/a (fewer than two valid levels)";
-  return ui::format("D gap to the runner-up level: %.0f m (L%d %.0f m, L%d %.0f m)",
-                    m->second - m->best, m->best_level, m->best, m->second_level, m->second);
+  if (!m && !s.source) return "D gap to the runner-up pose: n/a (no clouds, so no D)";
+  if (!m) return "D gap to the runner-up pose: n/a (fewer than two valid levels)";
+  // The runner-up is the best level with another pose: levels that found the selected pose
+  // again (the same clique) score the same D and are no competition.
+  const Transform& best = s.levels[static_cast<std::size_t>(m->best_level)].pose.T_target_source;
+  std::string same;
+  int runner = -1;
+  for (std::size_t i = 0; i < s.levels.size(); ++i) {
+    const LevelView& l = s.levels[i];
+    if (static_cast<int>(i) == m->best_level || !l.pose.valid || !std::isfinite(l.score)) continue;
+    if (same_pose(l.pose.T_target_source, best))
+      same += (same.empty() ? "L" : ", L") + std::to_string(i);
+    else if (runner < 0 || l.score < s.levels[static_cast<std::size_t>(runner)].score)
+      runner = static_cast<int>(i);
+  }
+  std::string t = "D gap to the runner-up pose: n/a (every valid level found the same pose)";
+  if (runner >= 0) {
+    const double d = s.levels[static_cast<std::size_t>(runner)].score;
+    t = ui::format("D gap to the runner-up pose: %.0f m (L%d %.0f m, L%d %.0f m)", d - m->best,
+                   m->best_level, m->best, runner, d);
+  }
+  if (!same.empty())
+    t += "; " + same + " found the same pose as L" + std::to_string(m->best_level) + " (same D)";
+  return t;
 }
 
 std::string acceptance_text(const Snapshot& s) {

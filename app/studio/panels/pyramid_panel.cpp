@@ -18,7 +18,7 @@ namespace pagor::studio {
 namespace {
 
 const ImVec4 kGood(0.35f, 0.9f, 0.45f, 1.0f), kBad(1.0f, 0.4f, 0.4f, 1.0f),
-    kDim(0.6f, 0.6f, 0.6f, 1.0f);
+    kDim(0.6f, 0.6f, 0.6f, 1.0f), kRefined(0.55f, 0.78f, 1.0f, 1.0f);
 
 // The stale-results warning, or the line saying the last run changed the selected level.
 void change_line(const RunChanges& changes, const std::string& stale_reason) {
@@ -62,6 +62,22 @@ std::string clique_search_text(const LevelView& l) {
   return out + "; start " + to_string(l.clique_start);
 }
 
+// ΔD against the previous run: the level of the same ε, or the level at the same place whose ε
+// was edited (said so); "new" for a level inserted.
+void delta_cell(const RunChanges& changes, const LevelChange* change) {
+  if (!changes.comparable || !change) return;
+  if (change->added) {
+    ui::figure("new", kDim);
+    return;
+  }
+  const std::string eps =
+      change->epsilon_before ? ui::format(" (\xce\xb5 was %.3g)", *change->epsilon_before) : "";
+  if (change->d_delta && std::abs(*change->d_delta) > 1e-9)
+    ui::figure(ui::format("%+.1f", *change->d_delta) + eps, *change->d_delta < 0 ? kGood : kBad);
+  else if (!eps.empty())
+    ui::figure((change->d_delta ? "0" : "n/a") + eps, kDim);
+}
+
 // One level's row of the table; true when its label was clicked.
 bool level_row(const Snapshot& s, int i, int shown, const RunChanges& changes) {
   const bool gt = s.ground_truth.has_value();
@@ -96,8 +112,7 @@ bool level_row(const Snapshot& s, int i, int shown, const RunChanges& changes) {
   else
     ImGui::TextColored(kDim, l.pose.valid ? "n/a" : "invalid");  // n/a: no clouds to score on
   ImGui::TableNextColumn();
-  if (changes.comparable && change && change->d_delta && std::abs(*change->d_delta) > 1e-9)
-    ImGui::TextColored(*change->d_delta < 0 ? kGood : kBad, "%+.1f", *change->d_delta);
+  delta_cell(changes, change);
   if (gt) {
     ImGui::TableNextColumn();
     if (l.error) ImGui::Text("%.2f", l.error->translation);
@@ -122,6 +137,40 @@ bool level_row(const Snapshot& s, int i, int shown, const RunChanges& changes) {
   return clicked;
 }
 
+// Under the selected level's row, when refinement moved its pose: the refined pose, its D and
+// errors (what the verdict, copy and exports give), labelled; the row above is the candidate.
+void refined_row(const Snapshot& s) {
+  const RefinementResult& r = s.refinement;
+  if (!r.applied || s.selected < 0) return;
+  ImGui::TableNextRow();
+  ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg1, IM_COL32(40, 70, 110, 140));
+  ImGui::TableNextColumn();
+  ui::figure("  refined", kRefined);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(
+        "The selected level's pose after refinement (ICP on the clouds): the pose the verdict, "
+        "copy and exports give. The row above is the candidate before refinement.");
+  for (int c = 0; c < 5; ++c) ImGui::TableNextColumn();  // eps, verts, edges, clique -> D
+  ui::figure(ui::format("%.1f", r.score_after));
+  ImGui::TableNextColumn();  // ΔD
+  if (s.ground_truth.has_value()) {
+    ImGui::TableNextColumn();
+    if (s.selected_error) ui::figure(ui::format("%.2f", s.selected_error->translation));
+    ImGui::TableNextColumn();
+    if (s.selected_error) ui::figure(ui::format("%.2f", s.selected_error->rotation_deg));
+    ImGui::TableNextColumn();
+    if (s.selected_error)
+      ui::figure(s.selected_error->success ? "yes" : "no",
+                 s.selected_error->success ? kGood : kBad);
+  }
+  ImGui::TableNextColumn();
+  const Transform& T = r.T_after;
+  ui::figure(ui::format("%7s %6s %6s", fixed(T(0, 3), 2).c_str(), fixed(T(1, 3), 2).c_str(),
+                        fixed(T(2, 3), 2).c_str()));
+  ImGui::TableNextColumn();
+  ui::figure(fixed(yaw_pitch_roll_deg(T.block<3, 3>(0, 0)).x(), 2));
+}
+
 // One row per level; returns the level clicked, or -1.
 int levels_table(const Snapshot& s, int shown, const RunChanges& changes) {
   int clicked = -1;
@@ -129,8 +178,8 @@ int levels_table(const Snapshot& s, int shown, const RunChanges& changes) {
   const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_Borders |
                                 ImGuiTableFlags_ScrollX | ImGuiTableFlags_SizingFixedFit;
   const int columns = gt ? 12 : 9;
-  const float table_h =
-      ImGui::GetTextLineHeightWithSpacing() * (static_cast<float>(s.levels.size()) + 2.4f);
+  const float rows = static_cast<float>(s.levels.size()) + (s.refinement.applied ? 1.0f : 0.0f);
+  const float table_h = ImGui::GetTextLineHeightWithSpacing() * (rows + 2.4f);
   if (!ImGui::BeginTable("pyramid", columns, flags, ImVec2(0, table_h))) return -1;
   ImGui::TableSetupScrollFreeze(1, 1);
   // A difference TRIM's thresholds are lengths; a ratio's have no unit.
@@ -147,8 +196,10 @@ int levels_table(const Snapshot& s, int shown, const RunChanges& changes) {
   ImGui::TableSetupColumn("t (x, y, z) [m]");
   ImGui::TableSetupColumn("yaw [\xc2\xb0]");
   ImGui::TableHeadersRow();
-  for (int i = 0; i < static_cast<int>(s.levels.size()); ++i)
+  for (int i = 0; i < static_cast<int>(s.levels.size()); ++i) {
     if (level_row(s, i, shown, changes)) clicked = i;
+    if (i == s.selected) refined_row(s);
+  }
   ImGui::EndTable();
   return clicked;
 }
@@ -177,11 +228,7 @@ void level_details(const Snapshot& s, int shown) {
   if (gt) {
     ImGui::Spacing();
     if (s.selected_error)
-      ui::figure(ui::format("selected: %s (%.2f m, %.2f\xc2\xb0)%s",
-                            s.selected_error->success ? "SUCCESS" : "FAILURE",
-                            s.selected_error->translation, s.selected_error->rotation_deg,
-                            s.refinement.applied ? " after refinement" : ""),
-                 s.selected_error->success ? kGood : kBad, true);
+      ui::figure(selected_text(s), s.selected_error->success ? kGood : kBad, true);
     else
       ui::figure("selected: none", kBad);
     ui::figure_dim(ui::format("upper bound (any pose right): %s", s.upper_bound ? "yes" : "no"));

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "panels/panels.hpp"
+#include "widgets/timings.hpp"
 #include "widgets/widgets.hpp"
 
 namespace pagor::studio {
@@ -56,7 +57,7 @@ std::string run_stages_text(const Snapshot& s) {
                                  : stage_name(stage);
     list += (list.empty() ? "" : ", ") + name;
   }
-  std::string text = ui::format("last run %.0f ms: ", total) +
+  std::string text = ui::timing("last run %.0f ms: ", total) +
                      (ran.empty() ? "nothing to recompute" : ran);
   if (!skipped.empty()) text += "; skipped without clouds: " + skipped;
   return text;
@@ -75,7 +76,7 @@ void status_bar(const WorkerStatus& status, const Snapshot* snapshot, const Mess
       for (int i = 0; i < kStageCount; ++i) {
         const Stage stage = static_cast<Stage>(i);
         const auto k = static_cast<std::size_t>(i);
-        ImGui::Text("%-18s %8.1f ms%s", stage_name(stage), s.stage_ms[k],
+        ImGui::Text("%-18s %8s%s", stage_name(stage), ui::timing("%.1f ms", s.stage_ms[k]).c_str(),
                     !s.source && needs_clouds(stage) ? " (skipped: no clouds)"
                     : s.stage_ran[k]                 ? ""
                                                      : " (cached)");
@@ -86,7 +87,7 @@ void status_bar(const WorkerStatus& status, const Snapshot* snapshot, const Mess
     ImGui::TextDisabled("no data open");
   }
   ImGui::SameLine();
-  ImGui::TextDisabled("| frame %.1f ms", frame_ms);
+  ImGui::TextDisabled("%s", ui::timing("| frame %.1f ms", frame_ms).c_str());
   if (snapshot && !snapshot->warnings.empty()) {
     ImGui::SameLine();
     ImGui::TextColored(kWarningColor, "| %zu warnings", snapshot->warnings.size());

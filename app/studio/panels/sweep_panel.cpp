@@ -11,6 +11,7 @@
 #include "pagor/sets/sweep.hpp"
 #include "panels/plot_panel.hpp"
 #include "widgets/bench_plots.hpp"
+#include "widgets/timings.hpp"
 #include "widgets/widgets.hpp"
 
 namespace pagor::studio {
@@ -179,7 +180,7 @@ void settings_table(AppState& state, const SweepResult& r, StudioActions& action
     ImGui::TableNextColumn();
     ui::figure(rate_text(m.precision()));
     ImGui::TableNextColumn();
-    ui::figure(ui::format("%.0f", m.mean_total_ms));
+    ui::figure(ui::timing("%.0f", m.mean_total_ms));
     ImGui::TableNextColumn();
     if (ui::small_button(("apply##sweep" + std::to_string(k)).c_str(),
                          "Set this setting's swept values in the session's parameters; every "
@@ -216,6 +217,10 @@ void run_controls(AppState& state, BenchWorker& bench, const BenchStatus& st,
     }
   }
   if (st.sweeping) {
+    ImGui::SameLine();
+    if (ui::button("cancel sweep##sweep", ImVec2(0, 0),
+                   "Stop the sweep after the run in progress; its partial results are dropped."))
+      bench.cancel();
     ImGui::SameLine();
     char text[64];
     std::snprintf(text, sizeof(text), "%d / %d runs", st.sweep_done, st.sweep_total);

@@ -130,6 +130,34 @@ void BenchWorker::set_config(const Config& config) {
   changed_.notify_all();
 }
 
+void BenchWorker::cancel() {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (status_.finished != status_.generation) cancelled_generation_ = status_.generation;
+    sweep_cancelled_ = status_.sweeping && !pending_sweep_;
+    cancel_ = true;
+    if (pending_sweep_) {  // queued behind the pass: never started
+      pending_sweep_.reset();
+      status_.sweeping = false;
+      status_.sweep_error = "the sweep was cancelled before it started";
+    }
+  }
+  changed_.notify_all();
+}
+
+void BenchWorker::rerun() {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!rerunnable_) return;
+    for (BenchRow& r : rows_) r.current = false;
+    status_.done = 0;
+    status_.error.clear();
+    ++status_.generation;
+    cancel_ = true;
+  }
+  changed_.notify_all();
+}
+
 void BenchWorker::set_budget(std::size_t bytes) {
   std::lock_guard<std::mutex> lock(mutex_);
   status_.budget_bytes = bytes;
@@ -220,7 +248,8 @@ void BenchWorker::loop() {
       }
       gen = handled = status_.generation;
       config = config_;
-      cancel_ = false;
+      cancel_ = cancelled_generation_ == gen;  // cancelled before it began: stops at once
+      status_.cancelled = false;
       if (pending_set_) {
         set_ = std::move(*pending_set_);
         pending_set_.reset();
@@ -264,6 +293,12 @@ void BenchWorker::loop() {
       status_.finished = gen;
       status_.busy = false;
       status_.pass_ms = ms_since(t0);
+    } else if (!complete && status_.generation == gen && cancelled_generation_ == gen) {
+      status_.busy = false;
+      status_.cancelled = true;
+      status_.pass_ms = ms_since(t0);
+      status_.error = "cancelled after " + std::to_string(status_.done) + " of " +
+                      std::to_string(status_.total) + " pairs";
     }
     changed_.notify_all();
   }
@@ -296,6 +331,8 @@ void BenchWorker::run_pending_sweep() {
     settings = std::move(*pending_sweep_);
     pending_sweep_.reset();
     cancel_ = false;
+    sweep_cancelled_ = false;
+    status_.cancelled = false;
     result->base = sweep_base_;
     result->set = status_.set_generation;
   }
@@ -309,7 +346,12 @@ void BenchWorker::run_pending_sweep() {
         },
         &cancel_);
   } catch (const Cancelled&) {
-    error = "the sweep was cancelled by a parameter change";
+    std::lock_guard<std::mutex> lock(mutex_);
+    error = sweep_cancelled_
+                ? "the sweep was cancelled after " + std::to_string(status_.sweep_done) + " of " +
+                      std::to_string(status_.sweep_total) + " runs"
+                : "the sweep was cancelled by a parameter change";
+    status_.cancelled = sweep_cancelled_;
     result.reset();
   } catch (const std::exception& e) {
     error = reason(e);

@@ -69,6 +69,7 @@ struct BenchStatus {
   bool sweeping = false;                ///< a sweep is queued or running
   int sweep_done = 0, sweep_total = 0;  ///< (pair, setting) runs of the sweep
   std::string sweep_error;              ///< why the last sweep stopped
+  bool cancelled = false;  ///< the last pass or sweep was stopped by cancel() before its end
 };
 
 class BenchWorker {
@@ -93,6 +94,13 @@ class BenchWorker {
   std::shared_ptr<const SweepRecord> sweep_result() const;
   /// Drops every pair (the view is closed).
   void close();
+  /// Stops the pass in progress and the sweep queued or running, between pairs (a stage in
+  /// progress ends first). Rows evaluated keep their outcomes; the status says `cancelled`, and
+  /// how far the pass got, until the next pass or sweep.
+  void cancel();
+  /// Evaluates the open set again with the current parameters (after a cancel: the pairs kept in
+  /// the caches re-run only what they miss). Nothing when the set cannot re-run.
+  void rerun();
 
   std::vector<BenchRow> rows() const;
   BenchStatus status() const;
@@ -133,6 +141,8 @@ class BenchWorker {
   std::shared_ptr<const SweepRecord> sweep_result_;
   BenchStatus status_;
   std::atomic<bool> cancel_{false};
+  std::uint64_t cancelled_generation_ = 0;  // the pass cancel() stopped (or will, not yet begun)
+  bool sweep_cancelled_ = false;            // cancel() stopped the running sweep
   bool stop_ = false;
   std::thread thread_;
 };

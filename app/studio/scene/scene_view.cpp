@@ -69,6 +69,13 @@ bool SceneView::init(const Gl& gl, std::string& error) {
     gl.VertexAttribPointer(1, 4, GL_UNSIGNED_BYTE, GL_TRUE, kFloatsPerVertex * sizeof(float),
                            reinterpret_cast<void*>(3 * sizeof(float)));
   }
+  for (Buffer* b : {&source_, &target_, &contribution_}) {  // thinned: strides set at draw
+    gl.GenVertexArrays(1, &b->thin_vao);
+    gl.BindVertexArray(b->thin_vao);
+    gl.BindBuffer(GL_ARRAY_BUFFER, b->vbo);
+    gl.EnableVertexAttribArray(0);
+    gl.EnableVertexAttribArray(1);
+  }
   gl.BindVertexArray(0);
   return true;
 }
@@ -79,6 +86,7 @@ void SceneView::shutdown() {
                     &keypoints_tgt_, &contribution_}) {
     gl_->DeleteBuffers(1, &b->vbo);
     gl_->DeleteVertexArrays(1, &b->vao);
+    if (b->thin_vao) gl_->DeleteVertexArrays(1, &b->thin_vao);
   }
   gl_->DeleteFramebuffers(1, &fbo_);
   gl_->DeleteTextures(1, &color_texture_);
@@ -92,6 +100,7 @@ void SceneView::upload(Buffer& b, const std::vector<float>& v) {
   gl_->BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(v.size() * sizeof(float)), v.data(),
                   GL_STATIC_DRAW);
   b.count = static_cast<GLsizei>(v.size() / kFloatsPerVertex);
+  ++content_version_;
 }
 
 void SceneView::update_clouds(const Snapshot& s, const ViewState& view, const Transform& pose) {
@@ -254,7 +263,7 @@ void SceneView::resize(int width, int height) {
 }
 
 void SceneView::draw(const Buffer& b, GLenum mode, const Eigen::Matrix4f& mvp, float size,
-                     bool round, const Rgba* uniform_color) {
+                     bool round, const Rgba* uniform_color, int stride) {
   if (b.count == 0) return;
   const Gl& gl = *gl_;
   gl.UniformMatrix4fv(u_mvp_, 1, GL_FALSE, mvp.data());
@@ -264,17 +273,61 @@ void SceneView::draw(const Buffer& b, GLenum mode, const Eigen::Matrix4f& mvp, f
   if (uniform_color)
     gl.Uniform4f(u_color_, (*uniform_color)[0] / 255.0f, (*uniform_color)[1] / 255.0f,
                  (*uniform_color)[2] / 255.0f, (*uniform_color)[3] / 255.0f);
-  gl.BindVertexArray(b.vao);
-  gl.DrawArrays(mode, 0, b.count);
+  if (stride <= 1 || !b.thin_vao) {
+    gl.BindVertexArray(b.vao);
+    gl.DrawArrays(mode, 0, b.count);
+    return;
+  }
+  // Every stride-th vertex: the same buffer read with a longer step.
+  const GLsizei step = static_cast<GLsizei>(stride * kFloatsPerVertex * sizeof(float));
+  gl.BindVertexArray(b.thin_vao);
+  gl.BindBuffer(GL_ARRAY_BUFFER, b.vbo);
+  gl.VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, step, nullptr);
+  gl.VertexAttribPointer(1, 4, GL_UNSIGNED_BYTE, GL_TRUE, step,
+                         reinterpret_cast<void*>(3 * sizeof(float)));
+  gl.DrawArrays(mode, 0, (b.count + stride - 1) / stride);
+}
+
+std::vector<double> SceneView::render_key(int width, int height, const Eigen::Matrix4f& vp,
+                                          const ViewState& view, const Transform& pose,
+                                          bool thin) const {
+  std::vector<double> k = {double(width), double(height), double(view.color),
+                           double(view.layers.target), double(view.layers.source),
+                           double(view.layers.landmarks), view.point_size, view.landmark_size,
+                           double(shown_contribution(view)), double(content_version_),
+                           double(thin)};
+  k.insert(k.end(), vp.data(), vp.data() + 16);
+  k.insert(k.end(), pose.data(), pose.data() + 16);
+  k.insert(k.end(), contribution_pose_.data(), contribution_pose_.data() + 16);
+  return k;
 }
 
 void SceneView::render(int width, int height, const Camera& camera, const ViewState& view,
                        const Transform& pose) {
   if (width <= 0 || height <= 0) return;
+  const Eigen::Matrix4f vp = camera.projection(static_cast<float>(width) / height) * camera.view();
+  // The camera moved since the last picture: thinned clouds, whole again when it stops.
+  const long long points = static_cast<long long>(source_.count) + target_.count;
+  const bool moving = !last_key_.empty() && vp != last_vp_;
+  const int stride =
+      moving && points > kMovingPointBudget
+          ? static_cast<int>((points + kMovingPointBudget - 1) / kMovingPointBudget)
+          : 1;
+  std::vector<double> key = render_key(width, height, vp, view, pose, stride > 1);
+  last_vp_ = vp;
+  if (key == last_key_ && fbo_) return;  // the texture holds this picture
+  last_key_ = std::move(key);
+  ++renders_;
+  if (stride > 1) ++thinned_renders_;
   resize(width, height);
+  draw_scene(vp, view, pose, stride);
+}
+
+void SceneView::draw_scene(const Eigen::Matrix4f& vp, const ViewState& view, const Transform& pose,
+                           int stride) {
   const Gl& gl = *gl_;
   gl.BindFramebuffer(GL_FRAMEBUFFER, fbo_);
-  gl.Viewport(0, 0, width, height);
+  gl.Viewport(0, 0, fb_width_, fb_height_);
   const auto& bg = Palette::background;
   gl.ClearColor(bg[0] / 255.0f, bg[1] / 255.0f, bg[2] / 255.0f, 1.0f);
   gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -285,7 +338,6 @@ void SceneView::render(int width, int height, const Camera& camera, const ViewSt
   gl.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   gl.UseProgram(program_);
 
-  const Eigen::Matrix4f vp = camera.projection(static_cast<float>(width) / height) * camera.view();
   const Eigen::Matrix4f source_mvp = vp * pose.cast<float>();
   const bool by_cloud = view.color == ColorMode::by_cloud;
   const bool residual = view.color == ColorMode::residual;
@@ -293,13 +345,14 @@ void SceneView::render(int width, int height, const Camera& camera, const ViewSt
     draw(target_, GL_POINTS, vp, view.point_size, false,
          by_cloud   ? &Palette::target
          : residual ? &Palette::plain
-                    : nullptr);
+                    : nullptr,
+         stride);
   if (view.layers.source && shown_contribution(view) != Contribution::off)
     draw(contribution_, GL_POINTS, vp * contribution_pose_.cast<float>(), view.point_size + 1.0f,
-         false, nullptr);
+         false, nullptr, stride);
   else if (view.layers.source)
     draw(source_, GL_POINTS, source_mvp, view.point_size, false,
-         by_cloud ? &Palette::source : nullptr);
+         by_cloud ? &Palette::source : nullptr, stride);
   // Landmarks on top of the clouds (lines are drawn over everything by the overlay).
   gl.DepthMask(GL_FALSE);
   gl.Disable(GL_DEPTH_TEST);

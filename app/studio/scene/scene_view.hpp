@@ -51,13 +51,21 @@ class SceneView {
 
   /// Brings GPU buffers up to date with a snapshot and the view state; cheap when nothing changed.
   void update(const Snapshot& snapshot, const ViewState& view, const Transform& source_pose);
-  /// Draws into the offscreen framebuffer of width x height pixels.
+  /// Draws into the offscreen framebuffer of width x height pixels. Nothing is drawn when nothing
+  /// it draws changed since the last call (the texture holds it); while the camera moves, the
+  /// dense clouds are drawn thinned to about kMovingPointBudget points, and whole again at the
+  /// first frame it stands still (a still picture is always the whole clouds).
   void render(int width, int height, const Camera& camera, const ViewState& view,
               const Transform& source_pose);
   /// The colour texture of the last render (for ImGui::Image).
   GLuint texture() const { return color_texture_; }
   /// Cloud uploads so far (a test of "no re-upload per frame").
   int cloud_uploads() const { return cloud_uploads_; }
+  /// Renders that drew (not served from the last picture), and those drawn thinned.
+  int renders() const { return renders_; }
+  int thinned_renders() const { return thinned_renders_; }
+  /// Dense points drawn per frame while the camera moves (about; both clouds).
+  static constexpr int kMovingPointBudget = 60000;
   const ClassColors& class_colors() const { return class_colors_; }
   /// The classes the class colouring draws (for the legend; from the clouds' labels).
   const std::vector<DrawnClass>& drawn_classes() const { return drawn_; }
@@ -70,10 +78,16 @@ class SceneView {
   struct Buffer {
     GLuint vao = 0, vbo = 0;
     GLsizei count = 0;
+    GLuint thin_vao = 0;  ///< the same points, every `stride`-th (the clouds only)
   };
   void upload(Buffer& b, const std::vector<float>& interleaved);
   void draw(const Buffer& b, GLenum mode, const Eigen::Matrix4f& mvp, float size, bool round,
-            const Rgba* uniform_color);
+            const Rgba* uniform_color, int stride = 1);
+  /// Everything a render depends on; equal keys draw equal pictures.
+  std::vector<double> render_key(int width, int height, const Eigen::Matrix4f& vp,
+                                 const ViewState& view, const Transform& pose, bool thin) const;
+  void draw_scene(const Eigen::Matrix4f& vp, const ViewState& view, const Transform& pose,
+                  int stride);
   void resize(int width, int height);
   /// The verification points coloured by their contribution to D (ViewState::diagnosis).
   void update_contribution(const Snapshot& s, const ViewState& view);
@@ -98,6 +112,10 @@ class SceneView {
   std::uint64_t overlay_request_ = 0;
   std::string overlay_key_;
   int cloud_uploads_ = 0;
+  std::uint64_t content_version_ = 0;  // counts uploads: a render key part
+  std::vector<double> last_key_;
+  Eigen::Matrix4f last_vp_ = Eigen::Matrix4f::Zero();
+  int renders_ = 0, thinned_renders_ = 0;
 };
 
 }  // namespace pagor::studio

@@ -46,6 +46,24 @@ bool RunChanges::any() const {
   return false;
 }
 
+namespace {
+
+bool has_epsilon(const Snapshot& s, double epsilon) {
+  for (const LevelView& l : s.levels)
+    if (l.epsilon == epsilon) return true;
+  return false;
+}
+
+// The level at `i` before, when the runs have as many levels and its ε is gone from the new run
+// while the new level's ε is new: the user edited that level's ε (not inserted one).
+const LevelView* edited_level(const Snapshot& before, const Snapshot& after, std::size_t i) {
+  if (before.levels.size() != after.levels.size() || i >= before.levels.size()) return nullptr;
+  const LevelView& b = before.levels[i];
+  return has_epsilon(after, b.epsilon) ? nullptr : &b;
+}
+
+}  // namespace
+
 RunChanges compare_runs(const Snapshot& before, const Snapshot& after) {
   RunChanges c;
   c.comparable = before.data_generation == after.data_generation;
@@ -64,6 +82,8 @@ RunChanges compare_runs(const Snapshot& before, const Snapshot& after) {
     const LevelView* match = nullptr;
     for (const LevelView& b : before.levels)
       if (b.epsilon == a.epsilon) match = &b;
+    if (!match) match = edited_level(before, after, i);
+    if (match && match->epsilon != a.epsilon) l.epsilon_before = match->epsilon;
     if (!match) {
       l.added = true;
     } else {

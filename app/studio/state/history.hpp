@@ -44,7 +44,10 @@ struct LevelChange {
   std::optional<double> d_delta;  ///< D after - D before [m] (both valid)
   bool validity_flipped = false;  ///< became valid or invalid
   bool success_flipped = false;   ///< success against ground truth changed
-  bool added = false;             ///< no level with this ε before
+  bool added = false;             ///< no level with this ε before, nor one edited into it
+  /// The ε of the level at the same place before, when this level's ε was edited (the runs have
+  /// as many levels, and the old ε is gone): compared with it.
+  std::optional<double> epsilon_before;
 };
 
 /// What changed between two runs.

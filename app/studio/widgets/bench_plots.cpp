@@ -1,5 +1,7 @@
 #include "widgets/bench_plots.hpp"
 
+#include "widgets/timings.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -264,11 +266,11 @@ std::string summary_text(const BenchmarkSummary& s) {
   char line[320];
   std::snprintf(line, sizeof(line),
                 "success %d/%d (%s), upper bound %d/%d (%s); verdict: %d accepted (%d without "
-                "truth), precision %s, recall %s; mean time %.0f ms per pair",
+                "truth), precision %s, recall %s; mean time %s per pair",
                 s.successes, s.with_truth, rate_text(s.success_rate()).c_str(), s.upper_bound,
                 s.with_truth, rate_text(s.upper_bound_rate()).c_str(), s.accepted_total(),
                 s.accepted_unjudged, rate_text(s.precision()).c_str(),
-                rate_text(s.recall()).c_str(), s.mean_total_ms);
+                rate_text(s.recall()).c_str(), ui::timing("%.0f ms", s.mean_total_ms).c_str());
   // Pairs that failed (unreadable files, data the stages refused) are in no rate: say how many,
   // so that "0/0 (n/a)" over a set of failed pairs cannot read as a set without truth.
   if (s.skipped > 0)

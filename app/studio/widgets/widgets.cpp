@@ -1,5 +1,7 @@
 #include "widgets/widgets.hpp"
 
+#include "widgets/widget_record.hpp"
+
 #include "widgets/number_format.hpp"
 
 #include <imgui_internal.h>
@@ -14,14 +16,15 @@
 #include <unordered_map>
 
 namespace pagor::studio::ui {
-namespace {
 
-WidgetRecord& record_last(WidgetKind kind, const char* label, ImGuiID id, float frame_w = -1) {
+WidgetRecord& record_last(WidgetKind kind, const char* label, ImGuiID id, float frame_w) {
   WidgetRecord& r =
       registry().add(kind, label, id, ImGui::GetItemRectMin(), ImGui::GetItemRectMax());
   r.frame_w = frame_w >= 0 ? frame_w : r.max.x - r.min.x;
   return r;
 }
+
+namespace {
 
 void maybe_tip(const char* tip) {
   if (tip) tooltip(tip);
@@ -380,40 +383,6 @@ bool figure(const std::string& text, ImVec4 color, bool wrap) {
 
 bool figure_dim(const std::string& text) {
   return figure(text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
-}
-
-bool input_path(const char* label, std::string* path, const char* tip) {
-  const ImGuiID id = ImGui::GetID(label);
-  const float frame_w = ImGui::CalcItemWidth();
-  const bool r = ImGui::InputText(label, path);
-  WidgetRecord& rec = record_last(WidgetKind::input_text, label, id, frame_w);
-  rec.text = *path;
-  // Not being edited and too long for the frame: draw its end over the start, so that the file
-  // name shows ("...dir/file.pcd"); a click edits the whole path underneath.
-  const ImGuiStyle& style = ImGui::GetStyle();
-  const float room = frame_w - 2 * style.FramePadding.x;
-  if (!ImGui::IsItemActive() && ImGui::CalcTextSize(path->c_str()).x > room) {
-    std::size_t start = 0;
-    while (start < path->size() &&
-           ImGui::CalcTextSize(("..." + path->substr(start)).c_str()).x > room)
-      ++start;
-    const std::string tail = "..." + path->substr(start);
-    rec.text = tail;  // what the field shows
-    const ImVec2 a = ImGui::GetItemRectMin();
-    const ImVec2 b(a.x + frame_w, ImGui::GetItemRectMax().y);
-    ImDrawList* dl = ImGui::GetWindowDrawList();
-    // Opaque: the frame's colour is translucent, and the start of the path must not show through.
-    const ImVec4 w = style.Colors[ImGuiCol_WindowBg];
-    const ImVec4 f =
-        style.Colors[ImGui::IsItemHovered() ? ImGuiCol_FrameBgHovered : ImGuiCol_FrameBg];
-    const ImVec4 bg(w.x + (f.x - w.x) * f.w, w.y + (f.y - w.y) * f.w, w.z + (f.z - w.z) * f.w,
-                    1.0f);
-    dl->AddRectFilled(a, b, ImGui::GetColorU32(bg), style.FrameRounding);
-    dl->AddText(ImVec2(a.x + style.FramePadding.x, a.y + style.FramePadding.y),
-                ImGui::GetColorU32(ImGuiCol_Text), tail.c_str());
-  }
-  if (tip) tooltip((std::string(tip) + (path->empty() ? "" : "\n" + *path)).c_str());
-  return r;
 }
 
 bool input_double(const char* label, double* v, double lo, double hi, const char* fmt,

@@ -45,6 +45,7 @@ struct WidgetRecord {
   /// preview (the current choice)
   std::string text;
   bool enabled = true;   ///< false when drawn disabled
+  bool warned = false;   ///< drawn as a warning (a path field naming no file)
   float lo = 0, hi = 0;  ///< slider / input range (0, 0 when none)
   float frame_w = 0;     ///< width of the frame (sliders, fields: without the label) [px]
 };
@@ -139,9 +140,11 @@ bool figure(const std::string& text, ImVec4 color = ImVec4(0, 0, 0, 0), bool wra
 /// The same, disabled-looking (grey).
 bool figure_dim(const std::string& text);
 
-/// A path field that shows the end of a long path (the file name) while it is not being edited;
-/// editing shows and edits the whole path as input_text does.
-bool input_path(const char* label, std::string* path, const char* tip = nullptr);
+/// A path field. While it is not being edited, a path too long for it shows its start and its end
+/// (the file name) around "..."; editing shows and edits the whole path as input_text does.
+/// `found` false (the caller looked: the path names nothing) draws it in the warning colour and
+/// says so in the tooltip, so that a path spliced by a stray edit cannot pass for its old self.
+bool input_path(const char* label, std::string* path, const char* tip = nullptr, bool found = true);
 /// A number typed in a field, clamped to [lo, hi]; true when it changed (on Enter, or when the
 /// field is left after an edit).
 bool input_double(const char* label, double* v, double lo, double hi, const char* fmt = "%.6g",

@@ -1,0 +1,118 @@
+// Cancelling the benchmark view's pass and its sweeps: between pairs, with the rows done kept, a
+// resume that finishes the set, and the worker usable afterwards; the buttons, driven.
+
+#include <catch2/catch.hpp>
+#include <chrono>
+#include <fstream>
+#include <thread>
+
+#include "runners/bench_worker.hpp"
+#include "studio_test_util.hpp"
+#include "ui_driver.hpp"
+
+using namespace pagor;
+using namespace pagor::test;
+
+namespace {
+
+// semreg-dev pairs 03 to 06 as a manifest in `tmp`.
+std::string manifest(const TempDir& tmp) {
+  const std::string d = shared_data() + "/semreg-dev/";
+  const std::string path = tmp.file("pairs.txt");
+  std::ofstream out(path);
+  for (const char* n : {"03", "04", "05", "06"})
+    out << d << n << "/source.pcd " << d << n << "/target.pcd gt=" << d << n
+        << "/T_target_source.txt name=" << n << "\n";
+  return path;
+}
+
+Config semreg_config() {
+  return load_config(PAGOR_SOURCE_DIR "/bench/manifests/semreg-dev.json");
+}
+
+// Waits (up to 10 min) until `done` holds for the worker's status.
+template <class Done>
+studio::BenchStatus wait_for(const studio::BenchWorker& w, Done done) {
+  for (int i = 0; i < 6000; ++i) {
+    const studio::BenchStatus st = w.status();
+    if (done(st)) return st;
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  FAIL("the benchmark worker did not get there in 10 minutes");
+  return {};
+}
+
+}  // namespace
+
+TEST_CASE("benchmark view: a cancelled pass stops between pairs, and resume finishes it") {
+  TempDir tmp;
+  const PairSet set = read_pair_manifest(manifest(tmp));
+  studio::BenchWorker worker;
+  worker.open(set, semreg_config());
+  worker.cancel();  // before its first pair: none runs
+  const studio::BenchStatus st =
+      wait_for(worker, [](const studio::BenchStatus& s) { return s.cancelled && !s.busy; });
+  CHECK(st.done == 0);
+  CHECK(st.total == 4);
+  CHECK(st.error == "cancelled after 0 of 4 pairs");
+  CHECK(st.finished != st.generation);
+  for (const studio::BenchRow& r : worker.rows()) CHECK_FALSE(r.current);
+  worker.rerun();
+  REQUIRE(worker.wait_idle(600));
+  CHECK(worker.status().done == 4);
+  CHECK_FALSE(worker.status().cancelled);
+  CHECK(worker.status().error.empty());
+}
+
+TEST_CASE("benchmark view: a cancelled sweep leaves no result, and the next sweep runs") {
+  TempDir tmp;
+  const PairSet set = read_pair_manifest(manifest(tmp));
+  studio::BenchWorker worker;
+  worker.open(set, semreg_config());
+  REQUIRE(worker.wait_idle(600));
+  SweepGrid grid;
+  grid.add("verification.mu", {0.5, 1.0, 2.0});
+  const auto settings = sweep_settings(semreg_config(), grid);
+  worker.sweep(settings, semreg_config());
+  worker.cancel();
+  const studio::BenchStatus st =
+      wait_for(worker, [](const studio::BenchStatus& s) { return !s.sweeping; });
+  CHECK_FALSE(worker.sweep_result());
+  CHECK(st.sweep_error.rfind("the sweep was cancelled", 0) == 0);
+  CHECK(st.sweep_done < st.sweep_total);
+  // The worker goes on: the same sweep again completes with a result for every setting.
+  worker.sweep(settings, semreg_config());
+  wait_for(worker, [&](const studio::BenchStatus& s) {
+    return !s.sweeping && worker.sweep_result() != nullptr;
+  });
+  REQUIRE(worker.sweep_result());
+  CHECK(worker.sweep_result()->result.settings.size() == 3);
+  CHECK(worker.status().sweep_error.empty());
+}
+
+TEST_CASE("benchmark view: the cancel and resume buttons, driven") {
+  TempDir tmp;
+  studio::AppState s = files_state(tmp);
+  s.config = semreg_config();
+  s.bench.path = manifest(tmp);
+  UiDriver d(s);
+  d.settle();
+  REQUIRE(d.click_widget("benchmark view...", "Pagor Studio"));
+  d.frames(2);
+  REQUIRE(d.click_widget("open and run##bench", "Benchmark"));
+  d.frame();
+  REQUIRE(d.find("cancel##bench", "Benchmark"));  // four pairs take seconds
+  REQUIRE(d.click_widget("cancel##bench", "Benchmark"));
+  wait_for(d.studio().bench(), [](const studio::BenchStatus& st) { return !st.busy; });
+  d.frames(2);
+  const studio::BenchStatus st = d.studio().bench().status();
+  CHECK(st.cancelled);
+  CHECK(st.done < st.total);
+  CHECK_FALSE(d.find("cancel##bench", "Benchmark"));
+  CHECK_FALSE(d.texts("cancelled after", "Benchmark").empty());  // the reason, shown
+  REQUIRE(d.click_widget("resume##bench", "Benchmark"));
+  for (int i = 0; i < 2400 && !d.studio().bench().wait_idle(0.05); ++i) d.frame();
+  d.frames(2);
+  CHECK(d.studio().bench().status().done == 4);
+  CHECK_FALSE(d.find("resume##bench", "Benchmark"));
+}
