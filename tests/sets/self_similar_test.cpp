@@ -173,10 +173,12 @@ TEST_CASE("self-similar set: no wrong pose accepted", "[.][self-similar-report]"
     const std::optional<PoseError> e = pipeline.selected_error();
     const bool right = e && e->success;
     const Acceptance& a = pipeline.acceptance();
-    std::printf("%-28s %8.2f %8.1f %5s %-8s ambiguity %.3f %s%s%s\n", s.name.c_str(),
+    const bool rival_right = !a.alternative.description.empty() &&
+                             pose_error(a.alternative.T_target_source, s.T_target_source).success;
+    std::printf("%-28s %8.2f %8.1f %5s %-8s ambiguity %.3f%s %s%s%s\n", s.name.c_str(),
                 e ? e->translation : -1.0, e ? e->rotation_deg : -1.0, right ? "yes" : "no",
-                a.accepted ? "ACCEPT" : "reject", a.ambiguity, a.alternative.description.c_str(),
-                a.reason.empty() ? "" : " | ", a.reason.c_str());
+                a.accepted ? "ACCEPT" : "reject", a.ambiguity, rival_right ? " (rival right)" : "",
+                a.alternative.description.c_str(), a.reason.empty() ? "" : " | ", a.reason.c_str());
     const std::string variant = std::string(self_similar_kind_name(p.kind)) +
                                 (p.distinct_objects ? " +objects" : "") +
                                 (p.labelled ? " labelled" : " xyz");

@@ -7,6 +7,7 @@
 #include "pagor/sets/self_similar.hpp"
 #include "pagor/sets/synthetic.hpp"
 #include "pagor/verify/acceptance.hpp"
+#include "pagor/verify/diagnosis.hpp"
 
 using namespace pagor;
 
@@ -273,4 +274,42 @@ TEST_CASE("a large max_ambiguity turns the test off") {
   CHECK(a.alternative.description.empty());
   REQUIRE_FALSE(a.tests.empty());
   CHECK_FALSE(a.tests.back().applies);
+}
+
+TEST_CASE("the diagnosis says when the ambiguity's rival is right and the selected pose is not") {
+  // Facades with a car, a sign and a bench, seed 1: the pipeline selects the street turned 180
+  // degrees (measured: 4.7 m, 180 deg off); the verdict's rival is the truth, which aligns the
+  // objects the selection leaves off.
+  SelfSimilarParams sp;
+  sp.kind = SelfSimilarKind::facades;
+  sp.seed = 1;
+  sp.distinct_objects = true;
+  const SelfSimilarScene s = make_self_similar_scene(sp);
+  Pipeline p;
+  p.set_input(s.source, s.target);
+  p.set_ground_truth(s.T_target_source);
+  p.run();
+  REQUIRE(p.selected_error());
+  REQUIRE_FALSE(p.selected_error()->success);
+  const Acceptance& a = p.acceptance();
+  INFO(a.reason);
+  CHECK_FALSE(a.accepted);
+  CHECK_THAT(a.reason, Catch::StartsWith("ambiguous: "));
+  CHECK(a.ambiguity > 2.0);
+  CHECK(pose_error(a.alternative.T_target_source, s.T_target_source).success);
+  const std::optional<Diagnosis> d = diagnose(p);
+  REQUIRE(d);
+  CHECK(d->alternative_right);
+  CHECK_THAT(d->explanation, Catch::Contains("the ambiguity's alternative, " +
+                                             a.alternative.description + ", is right"));
+  // A right selection never reports its rival as right.
+  const SelfSimilarScene hall = self_similar(SelfSimilarKind::symmetric_hall, true);
+  Pipeline q;
+  q.set_input(hall.source, hall.target);
+  q.set_ground_truth(hall.T_target_source);
+  q.run();
+  REQUIRE(q.selected_error());
+  CHECK(q.selected_error()->success);
+  CHECK(q.acceptance().accepted);
+  CHECK_FALSE(diagnose(q)->alternative_right);
 }
