@@ -74,7 +74,7 @@ def bench(args: argparse.Namespace, parser: argparse.ArgumentParser) -> int:
             parser.error(f"--out {args.out} is an input of the run")
     pairs = (sets.KittiPairs(args.kitti_root, args.pairs, args.sequence) if args.kitti_root
              else args.manifest)
-    spec, text = sets._spec(pairs), sets.config_json(args.config)
+    spec, text = sets._spec(pairs, args.scheduler is not None), sets.config_json(args.config)
     names = sets.pair_keys(spec, text)
     journal = Journal(args.out, args.resume)
     try:

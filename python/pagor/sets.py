@@ -84,7 +84,7 @@ def _manifest_line(pair: Any, k: int) -> str:
             continue
         value = fields[key]
         if key in ("source", "target", "gt", "source_labels", "target_labels"):
-            value = os.path.abspath(os.fspath(value))  # the workers know no working directory
+            value = _absolute(value)  # the manifest is written elsewhere
         if key == "overlap" and isinstance(value, bool):
             value = "yes" if value else "no"
         quoted = _quote(value, f"{what}.{key}")
@@ -92,15 +92,26 @@ def _manifest_line(pair: Any, k: int) -> str:
     return " ".join(words)
 
 
-def _spec(pairs: Any) -> Spec:
+def _absolute(path: Any) -> str:
+    """A path from the working directory, `..` kept: the names in the rows stay those of the
+    files as given (os.path.abspath would rewrite them)."""
+    text = os.fsdecode(os.fspath(path))
+    return text if os.path.isabs(text) else os.path.join(os.getcwd(), text)
+
+
+def _spec(pairs: Any, remote: bool = False) -> Spec:
+    """What the extension is told the set is. Paths stay as given on this machine (the rows then
+    name the files as `pagor bench` run here would); for `remote` workers, which know no working
+    directory, they are made absolute. A list's pairs are always absolute (their manifest is
+    written elsewhere)."""
+    where = _absolute if remote else (lambda p: os.fsdecode(os.fspath(p)))
     if isinstance(pairs, KittiPairs):
-        return ("kitti", os.path.abspath(pairs.root), str(pairs.sequence),
-                os.path.abspath(pairs.pairs))
+        return ("kitti", where(pairs.root), str(pairs.sequence), where(pairs.pairs))
     if isinstance(pairs, (str, bytes, os.PathLike)):
         path = os.fsdecode(os.fspath(pairs))
         if not os.path.exists(path):
             raise FileNotFoundError(2, "pairs: no such manifest", path)
-        return ("manifest", os.path.abspath(path))
+        return ("manifest", where(path))
     if isinstance(pairs, Sequence) and not isinstance(pairs, (str, bytes)):
         if not pairs:
             raise ValueError("pairs: an empty list")
@@ -243,7 +254,7 @@ def iter_rows(pairs: Any, config: Any = None, *, jobs: Optional[int] = None,
     """The row dicts of run_shard, each pair once, as they finish (any order): what run_pairs
     and ``python3 -m pagor bench`` are made of. `skip`: set indices not to run (taken from an
     earlier run)."""
-    spec, text = _spec_text or (_spec(pairs), config_json(config))
+    spec, text = _spec_text or (_spec(pairs, client is not None), config_json(config))
     names = pair_keys(spec, text)
     indices = [i for i in range(len(names)) if not skip or i not in skip]
     jobs = _jobs(jobs)
@@ -289,6 +300,9 @@ def run_pairs(pairs: Any, config: Any = None, *, jobs: Optional[int] = None, cli
         KittiPairs(root, pairs_file, sequence), or a list of pairs, each (source, target[, gt])
         or a dict with 'source', 'target' and the manifest's keys (gt, source_labels,
         target_labels, scheme, name, overlap); a pair's name is then its line number, 1 up.
+        The rows name the files as the tool run here would; a list's relative paths, and with a
+        client a relative manifest path, are taken from the working directory (made absolute,
+        `..` kept), so those rows name the files by absolute paths.
     config: None (the default), a dict with the JSON configuration's keys, or a JSON file's path
         (as ``--config``).
     jobs: pairs at once on this machine, each on a thread of its own (None: 1; 'auto': the
@@ -308,7 +322,7 @@ def run_pairs(pairs: Any, config: Any = None, *, jobs: Optional[int] = None, cli
     import json
     import warnings
 
-    spec, text = _spec(pairs), config_json(config)
+    spec, text = _spec(pairs, client is not None), config_json(config)
     lines: Dict[int, str] = {}
     out = Rows()
     out.failed = {}

@@ -108,3 +108,16 @@ def test_the_lock_and_bad_input_name_what_is_wrong(tmp_path, manifest):
         pagor.run_pairs([(tmp_path / "nope.pcd", tmp_path / "nope.pcd")])
     with pytest.raises(pagor.Error, match="graph.bogus"):
         pagor.run_pairs(manifest, {"graph": {"bogus": 1}})
+
+
+def test_a_relative_manifest_gives_the_tools_lines_from_the_same_directory(
+        tmp_path, monkeypatch, reference):
+    """The shared semreg-dev manifest, named relative to the source tree as in the README: its
+    pairs' paths are relative to it, and the rows name them as the tool does."""
+    from conftest import SOURCE_DIR
+    monkeypatch.chdir(SOURCE_DIR)
+    manifest = "bench/manifests/semreg-dev.txt"
+    rows = pagor.run_pairs(manifest, "bench/manifests/semreg-dev.json", jobs=2, progress=False)
+    tool = cli_rows(manifest, tmp_path / "cli.jsonl")
+    assert len(rows) == 15 and rows[0]["source"].endswith("semreg-dev/03/source.pcd")
+    assert [untimed(r, build=True) for r in rows] == [untimed(r, build=True) for r in tool]
