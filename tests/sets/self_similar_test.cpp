@@ -31,9 +31,11 @@ double aligned(const SelfSimilarScene& s, const Transform& T, int label, float c
   const std::vector<float> d = verifier.distances(T, close);
   std::size_t near = 0, counted = 0;
   for (std::size_t i = 0; i < d.size(); ++i) {
-    if (label >= 0 && (s.source.labels.empty() || s.source.labels[i] != static_cast<std::uint32_t>(label)))
+    if (label >= 0 &&
+        (s.source.labels.empty() || s.source.labels[i] != static_cast<std::uint32_t>(label)))
       continue;
-    const Eigen::Vector3d q = T.block<3, 3>(0, 0) * s.source.points[i].cast<double>() + T.block<3, 1>(0, 3);
+    const Eigen::Vector3d q =
+        T.block<3, 3>(0, 0) * s.source.points[i].cast<double>() + T.block<3, 1>(0, 3);
     if (q.head<2>().norm() > kSeen) continue;
     ++counted;
     near += d[i] <= close;
@@ -57,8 +59,7 @@ SelfSimilarParams params(SelfSimilarKind kind, std::uint64_t seed, bool objects,
 }
 
 const SelfSimilarKind kKinds[] = {SelfSimilarKind::corridor, SelfSimilarKind::facades,
-                                  SelfSimilarKind::sliding_street,
-                                  SelfSimilarKind::symmetric_hall};
+                                  SelfSimilarKind::sliding_street, SelfSimilarKind::symmetric_hall};
 
 }  // namespace
 

@@ -147,7 +147,8 @@ TEST_CASE("a pose that aligns only the ground of a sloped street is not trusted"
 namespace {
 
 // Judges `T` as the only candidate of a self-similar scene, with the given thresholds.
-Acceptance judge_pose(const SelfSimilarScene& s, const Transform& T, const AcceptanceParams& params) {
+Acceptance judge_pose(const SelfSimilarScene& s, const Transform& T,
+                      const AcceptanceParams& params) {
   const Config c = default_config();
   const Verifier verifier(s.source, s.target, c.verification.voxel_size);
   std::vector<PoseEstimate> candidates(1);
@@ -229,8 +230,9 @@ TEST_CASE("a pose a period off is ambiguous, naming the alternative and how far 
   }
   VerificationResult v;
   v.selected = 0;
-  v.scores = {verifier.score(off, c.verification.mu, ScoreKind::truncated, 1, &v.selected_distances),
-              verifier.score(s.T_target_source, c.verification.mu, ScoreKind::truncated)};
+  v.scores = {
+      verifier.score(off, c.verification.mu, ScoreKind::truncated, 1, &v.selected_distances),
+      verifier.score(s.T_target_source, c.verification.mu, ScoreKind::truncated)};
   v.distance_bound = static_cast<float>(c.verification.mu);
   AcceptanceParams only_levels = ambiguity_only();
   only_levels.ambiguity_range = 0;  // no shifts searched: the candidates and the half turn

@@ -49,7 +49,8 @@ void add_box(World& w, const Eigen::Vector2d& c, const Eigen::Vector3d& size, do
       w.add(c.x() + h.x(), c.y() + v, z0 + z, label);
     }
   for (double u = -h.x(); u <= h.x(); u += spacing)
-    for (double v = -h.y(); v <= h.y(); v += spacing) w.add(c.x() + u, c.y() + v, z0 + size.z(), label);
+    for (double v = -h.y(); v <= h.y(); v += spacing)
+      w.add(c.x() + u, c.y() + v, z0 + size.z(), label);
 }
 
 // A vertical wall from (x0, y0) to (x1, y1), `height` high.
@@ -174,7 +175,8 @@ Layout symmetric_hall(const SelfSimilarParams& p, std::mt19937_64& rng) {
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   Layout l;
   const Eigen::Vector2d corners[4] = {{-15, -10}, {15, -10}, {15, 10}, {-15, 10}};
-  for (int k = 0; k < 4; ++k) add_wall(l.world, corners[k], corners[(k + 1) % 4], 5.0, 2 * p.spacing);
+  for (int k = 0; k < 4; ++k)
+    add_wall(l.world, corners[k], corners[(k + 1) % 4], 5.0, 2 * p.spacing);
   add_floor(l.world, {-15, -10}, {15, 10}, 4 * p.spacing);
   for (double x : {-7.5, 0.0, 7.5})
     for (double y : {-5.0, 5.0}) add_cylinder(l.world, {x, y}, 0.3, 5.0, p.spacing, kPole);
@@ -228,7 +230,8 @@ std::vector<SyntheticObject> add_distinct_objects(Layout& l, const SelfSimilarPa
     o.class_name = names[k];
     o.label = labels[k];
     o.centroid_world = Eigen::Vector3d::Zero();
-    for (std::size_t i = first; i < l.world.points.size(); ++i) o.centroid_world += l.world.points[i];
+    for (std::size_t i = first; i < l.world.points.size(); ++i)
+      o.centroid_world += l.world.points[i];
     o.centroid_world /= static_cast<double>(l.world.points.size() - first);
     const Eigen::Vector3d cw(c.x(), c.y(), 0);
     o.in_source = (cw - l.T_world_source.block<3, 1>(0, 3)).head<2>().norm() <= l.range;
@@ -262,10 +265,14 @@ PointCloud observe(const World& w, const Transform& T_world_sensor, double range
 
 const char* self_similar_kind_name(SelfSimilarKind kind) {
   switch (kind) {
-    case SelfSimilarKind::corridor: return "corridor";
-    case SelfSimilarKind::facades: return "facades";
-    case SelfSimilarKind::sliding_street: return "sliding-street";
-    case SelfSimilarKind::symmetric_hall: return "symmetric-hall";
+    case SelfSimilarKind::corridor:
+      return "corridor";
+    case SelfSimilarKind::facades:
+      return "facades";
+    case SelfSimilarKind::sliding_street:
+      return "sliding-street";
+    case SelfSimilarKind::symmetric_hall:
+      return "symmetric-hall";
   }
   return "?";
 }
@@ -274,10 +281,18 @@ SelfSimilarScene make_self_similar_scene(const SelfSimilarParams& params) {
   std::mt19937_64 rng(params.seed);
   Layout l;
   switch (params.kind) {
-    case SelfSimilarKind::corridor: l = corridor(params, rng); break;
-    case SelfSimilarKind::facades: l = facades(params, rng); break;
-    case SelfSimilarKind::sliding_street: l = sliding_street(params, rng); break;
-    case SelfSimilarKind::symmetric_hall: l = symmetric_hall(params, rng); break;
+    case SelfSimilarKind::corridor:
+      l = corridor(params, rng);
+      break;
+    case SelfSimilarKind::facades:
+      l = facades(params, rng);
+      break;
+    case SelfSimilarKind::sliding_street:
+      l = sliding_street(params, rng);
+      break;
+    case SelfSimilarKind::symmetric_hall:
+      l = symmetric_hall(params, rng);
+      break;
   }
   SelfSimilarScene scene;
   if (params.distinct_objects) scene.objects = add_distinct_objects(l, params, rng);

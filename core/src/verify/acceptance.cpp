@@ -81,7 +81,6 @@ double margin_of(const std::vector<PoseEstimate>& candidates, const Verification
   return std::isfinite(best_other) && full > 0 ? (best_other - v.scores[sel]) / full : 1.0;
 }
 
-
 AcceptanceTest make_test(const char* name, double value, double threshold, bool at_most,
                          const char* description) {
   AcceptanceTest t;
@@ -145,9 +144,9 @@ void judge_ambiguity(Acceptance& a, const Verifier& verifier,
   const std::vector<char> target_counts = structure_points(verifier.target_points(), params);
   in.target_counts = &target_counts;
   // A flat target (every point counted: a floor plan, a floor projection) shows all there is.
-  in.target_complete = !target_counts.empty() &&
-                       std::all_of(target_counts.begin(), target_counts.end(),
-                                   [](char c) { return c != 0; });
+  in.target_complete =
+      !target_counts.empty() &&
+      std::all_of(target_counts.begin(), target_counts.end(), [](char c) { return c != 0; });
   in.T_selected = candidates[sel].T_target_source;
   in.mu = mu;
   in.inlier_distance = params.inlier_distance;
@@ -212,8 +211,8 @@ Acceptance judge_selection(const Verifier& verifier, const std::vector<PoseEstim
   // The ambiguity is searched only for a pose every other test trusts (it costs a few dozen
   // searches of the points).
   if (a.reason.empty() && params.max_ambiguity < kAmbiguityOff)
-    judge_ambiguity(a, verifier, candidates, verification, counts, verification_params.mu,
-                    distinct, params);
+    judge_ambiguity(a, verifier, candidates, verification, counts, verification_params.mu, distinct,
+                    params);
   a.accepted = a.reason.empty();
   return a;
 }

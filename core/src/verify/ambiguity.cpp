@@ -261,7 +261,7 @@ class Comparison {
   Footprint footprint_;
   float r_;
   std::vector<float> d_sel_;
-  std::vector<char> seen_;  // counted, and put where the target looked by the selected pose
+  std::vector<char> seen_;   // counted, and put where the target looked by the selected pose
   std::size_t aligned_ = 0;  // of those, aligned by the selected pose
 };
 
@@ -290,7 +290,7 @@ Transform climb(const Comparison& cmp, Transform T, double& e, double step) {
     for (int moves = 0, better = 1; better && moves < 4; ++moves) {
       better = 0;
       for (const Eigen::Vector2d& dir : {Eigen::Vector2d(1, 0), Eigen::Vector2d(-1, 0),
-                                        Eigen::Vector2d(0, 1), Eigen::Vector2d(0, -1)}) {
+                                         Eigen::Vector2d(0, 1), Eigen::Vector2d(0, -1)}) {
         const Transform next = moved(T, step * dir);
         const double en = cmp.ratio(next);
         if (en > e) {
@@ -317,8 +317,7 @@ AcceptanceAlternative find_best_alternative(const AmbiguityInput& in,
     if (best.description.empty() || ratio > best.ratio) best = {T, std::move(description), ratio};
   };
   for (std::size_t i = 0; i < candidates.size(); ++i)
-    if (distinct(candidates[i]))
-      offer(candidates[i], cmp.ratio(candidates[i]), names[i]);
+    if (distinct(candidates[i])) offer(candidates[i], cmp.ratio(candidates[i]), names[i]);
 
   // Repetitions: correlation peaks of the pose and of its half turn.
   std::vector<Peak> peaks;
@@ -327,9 +326,9 @@ AcceptanceAlternative find_best_alternative(const AmbiguityInput& in,
                 peaks);
   const Transform turned = half_turn(in.T_selected, cmp.aligned_centre());
   profile_peaks(*in.verifier, *in.counts, turned, occ, in.search_range, separation, true, peaks);
-  peaks.erase(std::remove_if(peaks.begin(), peaks.end(),
-                             [&](const Peak& p) { return !distinct(p.T); }),
-              peaks.end());
+  peaks.erase(
+      std::remove_if(peaks.begin(), peaks.end(), [&](const Peak& p) { return !distinct(p.T); }),
+      peaks.end());
   std::sort(peaks.begin(), peaks.end(),
             [](const Peak& a, const Peak& b) { return a.agreement > b.agreement; });
   if (peaks.size() > kPeaksScored) peaks.resize(kPeaksScored);

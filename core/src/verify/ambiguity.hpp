@@ -29,7 +29,7 @@ namespace pagor {
 /// What the search needs: the clouds, the points counted, the selection and what is distinct.
 struct AmbiguityInput {
   const Verifier* verifier = nullptr;
-  const std::vector<char>* counts = nullptr;  ///< per downsampled source point: counted
+  const std::vector<char>* counts = nullptr;         ///< per downsampled source point: counted
   const std::vector<char>* target_counts = nullptr;  ///< per downsampled target point: structure
   /// the target shows all there is (a floor plan): every point is where it looked; otherwise only
   /// the horizontal cells that hold target points (a scan sees its surroundings up to a range)
@@ -39,10 +39,10 @@ struct AmbiguityInput {
   /// 2 inlier_distance;
   /// null: searched here
   const std::vector<float>* selected_distances = nullptr;
-  double mu = 1.0;                  ///< D's truncation [m]: the correlation's grid is mu / 2
-  double inlier_distance = 0.5;     ///< a point counts as aligned within this [m]
-  EvaluationParams distinct;        ///< a pose within this of the selected one is the same answer
-  double search_range = 40.0;       ///< furthest shift searched along an axis [m]
+  double mu = 1.0;               ///< D's truncation [m]: the correlation's grid is mu / 2
+  double inlier_distance = 0.5;  ///< a point counts as aligned within this [m]
+  EvaluationParams distinct;     ///< a pose within this of the selected one is the same answer
+  double search_range = 40.0;    ///< furthest shift searched along an axis [m]
 };
 
 /// The best distinct alternative among `candidates` (the other levels', described by `names`) and

@@ -333,8 +333,8 @@ Diagnosis diagnose(const DiagnosisInput& in, const Transform& T_gt, const Diagno
       !(d.selected_error && d.selected_error->success) &&
       pose_error(in.acceptance->alternative.T_target_source, T_gt, in.config->evaluation).success) {
     d.alternative_right = true;
-    d.explanation += "; the ambiguity's alternative, " + in.acceptance->alternative.description +
-                     ", is right";
+    d.explanation +=
+        "; the ambiguity's alternative, " + in.acceptance->alternative.description + ", is right";
   }
   explain_origins(in, d);
   d.time_ms =

@@ -103,12 +103,15 @@ struct AcceptanceParams {
 
 /// One test of the verdict, for display: "overlap 0.31 >= 0.24".
 struct AcceptanceTest {
-  std::string name;         ///< "overlap", "inliers", "sharpness", "margin", "minimal support", "ambiguity"
-  double value = 0.0;       ///< the measure
-  double threshold = 0.0;   ///< what it is compared with
-  bool at_most = false;     ///< passes when value <= threshold (ambiguity), else value >= threshold
-  bool passed = false;      ///< whether the test passed (also true when it does not apply)
-  bool applies = true;      ///< false: not taken (minimal support with redundant inliers; off)
+  /// "overlap", "inliers", "sharpness", "margin", "minimal support" or "ambiguity"
+  std::string name;
+  double value = 0.0;      ///< the measure
+  double threshold = 0.0;  ///< what it is compared with
+  bool at_most = false;    ///< passes when value <= threshold (ambiguity), else value >= threshold
+  bool passed = false;     ///< whether the test passed (also true when it does not apply)
+  /// false: not taken (minimal support when the inliers are more than the minimum; ambiguity when
+  /// an earlier test failed or max_ambiguity turns it off)
+  bool applies = true;
   std::string unit;         ///< "" for fractions and counts
   std::string description;  ///< what the measure is, one line
 };
