@@ -15,6 +15,7 @@
 #include "scene/scene_view.hpp"
 #include "studio_test_util.hpp"
 #include "ui_driver.hpp"
+#include "widgets/number_format.hpp"
 #include "widgets/plot.hpp"
 
 using namespace pagor;
@@ -197,7 +198,7 @@ TEST_CASE("5: the levels' D gap and the acceptance margin are named apart, each 
           !studio::same_pose(l.pose.T_target_source, best.pose.T_target_source))
         runner = std::min(runner, l.score);
     if (std::isfinite(runner))
-      CHECK(gaps[0].find(studio::ui::format("%.0f m", runner - m->best)) != std::string::npos);
+      CHECK(gaps[0].find(studio::with_unit(runner - m->best, "m")) != std::string::npos);
   }
 }
 

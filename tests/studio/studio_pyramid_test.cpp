@@ -49,8 +49,8 @@ TEST_CASE("the D gap is to the best level with another pose; levels with the sam
     const auto s = levels_snapshot(
         {level(0.1, 100, A), level(0.2, 100, A), level(0.3, 150, B), level(0.4, 0, A, false)});
     CHECK(studio::level_gap_text(s) ==
-          "D gap to the runner-up pose: 50 m (L0 100 m, L2 150 m); L1 found the same pose as L0 "
-          "(same D)");
+          "D gap to the runner-up pose: 50 m (L0 100.0 m, L2 150.0 m); L1 found the same pose as "
+          "L0 (same D)");
   }
   SECTION("every valid level found the same pose") {
     const auto s = levels_snapshot({level(0.1, 80, A), level(0.2, 80, A), level(0.3, 80, A)});
@@ -58,9 +58,14 @@ TEST_CASE("the D gap is to the best level with another pose; levels with the sam
           "D gap to the runner-up pose: n/a (every valid level found the same pose); L1, L2 found "
           "the same pose as L0 (same D)");
   }
+  SECTION("a gap under a metre is not rounded to 0 m") {
+    const auto s = levels_snapshot({level(0.1, 199.3, A), level(0.2, 199.8, B)});
+    CHECK(studio::level_gap_text(s) ==
+          "D gap to the runner-up pose: 0.5 m (L0 199.3 m, L1 199.8 m)");
+  }
   SECTION("all poses differ: the gap to the second-lowest D, as before") {
     const auto s = levels_snapshot({level(0.1, 120, A), level(0.2, 90, B)});
-    CHECK(studio::level_gap_text(s) == "D gap to the runner-up pose: 30 m (L1 90 m, L0 120 m)");
+    CHECK(studio::level_gap_text(s) == "D gap to the runner-up pose: 30 m (L1 90.0 m, L0 120.0 m)");
   }
   CHECK(studio::same_pose(A, moved(1.0 + 0.5 * studio::kSamePoseTranslation, 0.1)));
   CHECK_FALSE(studio::same_pose(A, moved(1.0 + 2 * studio::kSamePoseTranslation, 0.1)));

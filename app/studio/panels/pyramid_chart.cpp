@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "widgets/number_format.hpp"
 #include "widgets/widgets.hpp"
 
 namespace pagor::studio {
@@ -89,8 +90,9 @@ std::string level_gap_text(const Snapshot& s) {
   std::string t = "D gap to the runner-up pose: n/a (every valid level found the same pose)";
   if (runner >= 0) {
     const double d = s.levels[static_cast<std::size_t>(runner)].score;
-    t = ui::format("D gap to the runner-up pose: %.0f m (L%d %.0f m, L%d %.0f m)", d - m->best,
-                   m->best_level, m->best, runner, d);
+    // Three significant digits: a gap of half a metre is not "0 m".
+    t = "D gap to the runner-up pose: " + with_unit(d - m->best, "m") +
+        ui::format(" (L%d %.1f m, L%d %.1f m)", m->best_level, m->best, runner, d);
   }
   if (!same.empty())
     t += "; " + same + " found the same pose as L" + std::to_string(m->best_level) + " (same D)";
