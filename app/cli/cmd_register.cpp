@@ -28,6 +28,9 @@ std::vector<Option> register_options() {
   for (Option& c : config_options_for()) o.push_back(std::move(c));
   o.push_back({"json", 1, "OUT", "write the result as JSON (schema pagor.register/1)"});
   o.push_back(threads_option());
+  o.push_back({"verbose", 0, "",
+               "list every warning (by default the benign ones, such as a class with a few points "
+               "but no landmark, are summed up in one line)"});
   o.push_back({"correspondences", 1, "FILE",
                "register these correspondences (px py pz qx qy qz [weight [inlier 0/1]] per "
                "line) instead of extracting landmarks; clouds, if given, only verify"});
@@ -60,12 +63,14 @@ int run_register(const Args& args) {
   pipeline.set_input(std::move(pair.source.cloud), std::move(pair.target.cloud));
   pipeline.set_ground_truth(pair.T_target_source_gt);
   with_config_origin(args, [&] { pipeline.run(); });
+  std::vector<std::string> warnings;
   for (std::string w : pipeline.warnings()) {  // name the file a cloud's warning is about
     for (const auto& [side, name] :
          {std::pair{"source: ", pair.source_name}, std::pair{"target: ", pair.target_name}})
       if (w.rfind(side, 0) == 0) w = name + ": " + w.substr(std::string(side).size());
-    warn(w);
+    warnings.push_back(std::move(w));
   }
+  warn_all(warnings, args.has("verbose"));
   RegistrationContext context;
   context.source_name = pair.source_name;
   context.target_name = pair.target_name;

@@ -43,7 +43,7 @@ int run_register_correspondences(const Args& args, Config config) {
     pipeline.set_ground_truth(read_transform_file(args.get("ground-truth")));
   }
   with_config_origin(args, [&] { pipeline.run(); });
-  for (const std::string& w : pipeline.warnings()) warn(w);
+  warn_all(pipeline.warnings(), args.has("verbose"));
   RegistrationContext context;
   context.source_name = source_name;
   context.target_name = target_name;

@@ -83,6 +83,9 @@ std::string acceptance_tests_text(const Registration& registration);
 
 /// Prints a warning line on stderr.
 void warn(const std::string& message);
+/// Prints warnings: each one that may change what the result means on its own line; the benign
+/// ones (a class with a few points but no landmark) in one summary line unless `verbose`.
+void warn_all(const std::vector<std::string>& warnings, bool verbose);
 
 /// How a cloud's labels were read, in words: "semantickitti-learning (detected; 3.2 nats a point
 /// over semantickitti-train)", "none (no labels)", "semantickitti (configured; does not fit)".

@@ -83,6 +83,21 @@ void warn(const std::string& message) {
   std::cerr << "pagor: warning: " << message << "\n";
 }
 
+void warn_all(const std::vector<std::string>& warnings, bool verbose) {
+  std::vector<std::string> benign;
+  for (const std::string& w : warnings) {
+    if (!verbose && w.find(" points but no landmark") != std::string::npos)
+      benign.push_back(w.substr(0, w.find(" points but no landmark")));
+    else
+      warn(w);
+  }
+  if (benign.empty()) return;
+  std::string list;
+  for (const std::string& b : benign) list += (list.empty() ? "" : "; ") + b;
+  std::cerr << "pagor: note: " << benign.size() << (benign.size() == 1 ? " class has" : " classes have")
+            << " points but no landmark (" << list << " points); --verbose for the details\n";
+}
+
 void write_text_file(const std::string& path, const std::string& text) {
   write_file_atomic(path, text);
 }

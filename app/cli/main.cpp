@@ -30,7 +30,8 @@ const std::vector<Command>& commands() {
 namespace {
 
 void print_usage() {
-  std::cout << "usage: pagor <command> [options]     (pagor <command> --help for its options)\n\n"
+  std::cout << "usage: pagor <command> [options]     (pagor <command> --help for its options;\n"
+               "                                      pagor --version)\n\n"
                "commands:\n";
   for (const auto& c : commands()) {
     std::string name = c.name;
@@ -43,6 +44,10 @@ int dispatch(int argc, char** argv) {
   if (argc < 2 || std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h") {
     print_usage();
     return argc < 2 ? 2 : 0;
+  }
+  if (std::string(argv[1]) == "--version") {
+    std::cout << "pagor " << PAGOR_VERSION << "\n";
+    return 0;
   }
   const std::string name = argv[1];
   for (const auto& c : commands()) {

@@ -138,8 +138,13 @@ void print_verdict(const Registration& r) {
     return;
   }
   if (r.selected_level < 0) return;
-  std::printf("verdict: %s (%s)%s%s\n", a.accepted ? "ACCEPTED" : "REJECTED",
-              acceptance_tests_text(r).c_str(), a.accepted ? "" : ": ", a.reason.c_str());
+  std::printf("verdict: %s%s%s\n", a.accepted ? "ACCEPTED" : "REJECTED", a.accepted ? "" : ": ",
+              a.reason.c_str());
+  std::printf("  tests: %s (aligned: within %.2f m)\n", acceptance_tests_text(r).c_str(),
+              r.config.acceptance.inlier_distance);
+  if (!a.alternative.description.empty())
+    std::printf("  best distinct alternative: %s, %.2f times as well supported\n",
+                a.alternative.description.c_str(), a.alternative.ratio);
 }
 
 void print_ground_truth(const Registration& r) {
@@ -196,15 +201,12 @@ void print_times(const Registration& r) {
 }  // namespace
 
 std::string acceptance_tests_text(const Registration& r) {
-  const Acceptance& a = r.acceptance;
-  const AcceptanceParams& t = r.config.acceptance;
-  char buf[256];
-  std::snprintf(buf, sizeof(buf),
-                "aligned %.0f %% of points within %.2f m (min %.0f %%), %d inliers (min %d), "
-                "sharpness %.2f (min %.2f), D margin %.3f (min %.3f)",
-                100.0 * a.overlap, t.inlier_distance, 100.0 * t.min_overlap, a.inliers,
-                t.min_inliers, a.sharpness, t.min_sharpness, a.margin, t.min_margin);
-  return buf;
+  std::string text;
+  for (const AcceptanceTest& t : r.acceptance.tests) {
+    if (!t.applies) continue;
+    text += (text.empty() ? "" : ", ") + test_text(t);
+  }
+  return text;
 }
 
 void report_registration(const Args& args, const Pipeline& pipeline,

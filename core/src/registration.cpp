@@ -1,6 +1,7 @@
 #include "pagor/registration.hpp"
 
 #include <cmath>
+#include <cstdio>
 
 #include "pagor/errors.hpp"
 #include "pagor/io/clouds.hpp"
@@ -81,6 +82,16 @@ void add_matches_file(const Pipeline& p, const MatchesFileInfo& file, Registrati
 
 }  // namespace
 
+std::string test_text(const AcceptanceTest& t) {
+  if (!t.applies) return t.name + ": not taken";
+  const bool count = t.name == "inliers";
+  char buf[160];
+  std::snprintf(buf, sizeof(buf), count ? "%s %.0f (at %s %.0f%s%s)" : "%s %.3g (at %s %.3g%s%s)",
+                t.name.c_str(), t.value, t.at_most ? "most" : "least", t.threshold,
+                t.unit.empty() ? "" : " ", t.unit.c_str());
+  return std::string(buf) + (t.passed ? "" : ": FAILED");
+}
+
 const char* to_string(SelectedBy by) {
   return by == SelectedBy::score_D ? "score_D" : "without_clouds";
 }
@@ -97,6 +108,8 @@ Registration make_registration(const Pipeline& p, const RegistrationContext& con
   r.selected_by = p.has_clouds() ? SelectedBy::score_D : SelectedBy::without_clouds;
   for (std::size_t l = 0; l < p.cliques().size(); ++l) r.levels.push_back(level_summary(p, l));
   r.acceptance = p.acceptance();
+  if (!r.acceptance.alternative.description.empty())
+    r.acceptance.alternative.T_target_source = in_files(r.acceptance.alternative.T_target_source);
   r.refinement = p.refinement();
   r.pose_model_configured = p.config().gnc.model;
   r.pose_model_used = p.gnc_params().model;

@@ -119,9 +119,27 @@ json ground_truth_json(const Registration& r) {
 
 json acceptance_json(const Registration& r) {
   const Acceptance& a = r.acceptance;
-  return {{"accepted", a.accepted}, {"verified", a.verified}, {"overlap", a.overlap},
-          {"inliers", a.inliers},   {"margin", a.margin},     {"sharpness", a.sharpness},
-          {"reason", a.reason}};
+  json tests = json::array();
+  for (const AcceptanceTest& t : a.tests)
+    tests.push_back({{"name", t.name},
+                     {"value", finite_or_null(t.value)},
+                     {"threshold", finite_or_null(t.threshold)},
+                     {"comparison", t.at_most ? "<=" : ">="},
+                     {"passed", t.passed},
+                     {"applies", t.applies},
+                     {"unit", t.unit},
+                     {"description", t.description}});
+  json alternative = nullptr;
+  if (!a.alternative.description.empty())
+    alternative = {{"description", a.alternative.description},
+                   {"ratio", finite_or_null(a.alternative.ratio)},
+                   {"T_target_source", matrix_json(a.alternative.T_target_source)}};
+  return {{"accepted", a.accepted},   {"verified", a.verified},
+          {"overlap", a.overlap},     {"inliers", a.inliers},
+          {"margin", a.margin},       {"sharpness", a.sharpness},
+          {"ambiguity", a.ambiguity}, {"alternative", alternative},
+          {"tests", tests},           {"reason", a.reason},
+          {"wrong_pose_accepted", r.accepted_wrong()}};
 }
 
 json correspondences_json(const Registration& r) {

@@ -236,8 +236,30 @@ class Result:
     @property
     def acceptance(self) -> Dict[str, Any]:
         """The verdict's numbers: accepted, verified, overlap, inliers, margin, sharpness,
-        reason (why it was rejected, or that there was nothing to verify on)."""
+        ambiguity, alternative, tests, reason (why it was rejected, or that there was nothing to
+        verify on), wrong_pose_accepted (accepted while the ground truth calls it wrong)."""
         return self._report["acceptance"]
+
+    @property
+    def acceptance_tests(self) -> List[Dict[str, Any]]:
+        """Every test of the verdict with its value and threshold, in the order the reason is
+        chosen: dicts with name, value, threshold, comparison (">=" or "<="), passed, applies,
+        unit, description. Empty when nothing was judged."""
+        return self._report["acceptance"].get("tests", [])
+
+    @property
+    def alternative(self) -> Optional[Dict[str, Any]]:
+        """The best distinct pose that explains the clouds about as well as the selected one
+        (description, ratio, T_target_source as a 4 x 4 array), or None."""
+        alt = self._report["acceptance"].get("alternative")
+        if alt is None:
+            return None
+        return {**alt, "T_target_source": _transform(alt["T_target_source"])}
+
+    @property
+    def wrong_pose_accepted(self) -> bool:
+        """Accepted although the ground truth calls the pose wrong (False without a truth)."""
+        return bool(self._report["acceptance"].get("wrong_pose_accepted", False))
 
     @property
     def ground_truth(self) -> Optional[Dict[str, Any]]:

@@ -190,3 +190,16 @@ def test_fused_correspondences_carry_their_origin_and_class(scene):
         assert (f.origin[clique] == name).sum() == origin[name]["selected_clique"]
     assert set(f.class_name[f.origin == "matcher"]) == {""}
     assert (f.class_index[f.origin == "matcher"] == -1).all()
+
+
+def test_every_acceptance_test_is_shown_with_its_value_and_threshold(result):
+    tests = {t["name"]: t for t in result.acceptance_tests}
+    assert {"overlap", "inliers", "sharpness", "margin", "ambiguity"} <= set(tests)
+    accept = pagor.default_config()["acceptance"]
+    assert tests["overlap"]["threshold"] == accept["min_overlap"]
+    assert tests["overlap"]["comparison"] == ">="
+    assert tests["ambiguity"]["threshold"] == accept["max_ambiguity"]
+    assert tests["ambiguity"]["comparison"] == "<="
+    assert tests["overlap"]["value"] == pytest.approx(result.acceptance["overlap"])
+    assert all(t["passed"] for t in tests.values() if t["applies"])  # the scene is accepted
+    assert result.accepted and not result.wrong_pose_accepted

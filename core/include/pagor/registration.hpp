@@ -83,7 +83,9 @@ struct Registration {
   int selected_level = -1;  ///< index into `levels`; -1 when none
   SelectedBy selected_by = SelectedBy::score_D;
   std::vector<LevelSummary> levels;
-  Acceptance acceptance;        ///< the verdict: trust the selected pose or not, and why
+  /// The verdict: trust the selected pose or not, and why (each test with its value and threshold;
+  /// the best distinct alternative, its pose in the frames of the points as given).
+  Acceptance acceptance;
   RefinementResult refinement;  ///< what refinement did (its poses in the clouds' own frames)
   PoseModel pose_model_configured = PoseModel::se3, pose_model_used = PoseModel::se3;
   /// With the pose model `automatic` and clouds: the ground planes that decided it.
@@ -122,6 +124,11 @@ struct Registration {
   /// cannot afford.
   bool accepted_wrong() const { return accepted() && error && !error->success; }
 };
+
+/// One acceptance test as a person reads it: "overlap 0.41 (at least 0.24)", "ambiguity 0.97 (at
+/// most 0.85): FAILED", "minimal support: not taken". What the CLI, the studio and the Python
+/// module show.
+std::string test_text(const AcceptanceTest& test);
 
 /// Options of the one-call functions; every field has a sensible default.
 struct RegisterOptions {

@@ -10,7 +10,11 @@
 ///                     correspondences file's inlier flags precision, recall, true_inliers
 ///   selected_by       "score_D" (verified on the clouds) or "without_clouds" (level_selection.hpp)
 ///   acceptance        accepted, verified (false: no clouds to verify on), overlap, inliers,
-///                     margin, sharpness, reason (see acceptance.hpp)
+///                     margin, sharpness, ambiguity, alternative (null, or the best distinct
+///                     pose: description, ratio, T_target_source), tests[] (name, value,
+///                     threshold, comparison ">=" or "<=", passed, applies, unit, description),
+///                     reason (see acceptance.hpp), and wrong_pose_accepted: accepted while the
+///                     ground truth calls the pose wrong
 ///   ground_truth      T_target_source, translation_error_m, rotation_error_deg, success,
 ///                     upper_bound: whether any level's candidate is right (null without truth)
 ///   correspondences   count, candidates, capped, per_class {name: count} (landmark ones),
