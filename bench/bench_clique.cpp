@@ -5,9 +5,9 @@
 
 #include "bench_sections.hpp"
 #include "bench_util.hpp"
+#include "pagor/eval/association_problem.hpp"
 #include "pagor/graph/pyramid_graph.hpp"
 #include "pagor/pipeline.hpp"
-#include "pagor/sets/association_problem.hpp"
 
 namespace pagor::bench {
 namespace {
@@ -54,9 +54,9 @@ void bench_clique(const Options& o) {
     CliqueResult e;
     const Timing te = measure([&] { e = exact_max_clique(g, 0, exact); }, 1, 0);
     const std::string exact_text =
-        e.optimal ? fmt(te.median(), 1) + " ms, " +
-                        (e.vertices.size() == r.a[0].vertices.size() ? "same" : "differs")
-                  : "budget hit";
+        e.proven ? fmt(te.median(), 1) + " ms, " +
+                       (e.vertices.size() == r.a[0].vertices.size() ? "same" : "differs")
+                 : "budget hit";
     row({std::to_string(c.size()), fmt(r.time_a.median(), 3) + " ms",
          fmt(r.time_b.median(), 3) + " ms", fmt(r.ratio()) + "x",
          std::to_string(gradient_steps(r.a)), std::to_string(gradient_steps(r.b)), agreement(r),
@@ -123,7 +123,7 @@ void bench_association(const Options& o) {
     std::vector<CliqueResult> e;
     const Timing te = measure([&] { e = solve_pyramid(g, exact); }, m >= 2000 ? 1 : 3, 0);
     bool optimal = true;
-    for (const auto& level : e) optimal = optimal && level.optimal;
+    for (const auto& level : e) optimal = optimal && level.proven;
     row({std::to_string(m), fmt(tg.median(), 1) + " ms", density, fmt(r.time_a.median(), 3) + " ms",
          fmt(r.time_b.median(), 3) + " ms", fmt(r.ratio()) + "x",
          fmt(te.median(), 1) + (optimal ? " ms" : " ms (budget)"), r.same_sizes() ? "yes" : "no"},

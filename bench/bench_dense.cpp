@@ -12,9 +12,9 @@
 #include "bench_sections.hpp"
 #include "bench_util.hpp"
 #include "pagor/config.hpp"
+#include "pagor/eval/association_problem.hpp"
+#include "pagor/eval/pair_set.hpp"
 #include "pagor/io/correspondence_file.hpp"
-#include "pagor/sets/association_problem.hpp"
-#include "pagor/sets/pair_set.hpp"
 #include "pagor/verify/evaluation.hpp"
 #include "pagor/verify/level_selection.hpp"
 
@@ -81,7 +81,7 @@ std::string sizes_true(const std::vector<CliqueResult>& cliques, const std::vect
     std::size_t hit = 0;
     for (int v : c.vertices) hit += inlier[static_cast<std::size_t>(v)] != 0;
     out += (out.empty() ? "" : ",") + std::to_string(c.vertices.size()) + "/" +
-           std::to_string(hit) + (c.optimal ? "" : "?") +
+           std::to_string(hit) + (c.proven ? "" : "?") +
            (c.start == CliqueStart::fallback ? "c" : "") +
            (c.budget == CliqueBudget::none    ? ""
             : c.budget == CliqueBudget::nodes ? "n"
@@ -205,8 +205,7 @@ void run_set(const std::vector<Problem>& problems, const Options& o) {
     }
     ratios[0].push_back(runs[1].clique / runs[0].clique);
     const std::vector<CliqueResult>& maxima = runs[2].cliques;  // the exact solver's
-    if (std::all_of(maxima.begin(), maxima.end(),
-                    [](const CliqueResult& c) { return c.optimal; })) {
+    if (std::all_of(maxima.begin(), maxima.end(), [](const CliqueResult& c) { return c.proven; })) {
       handed_in.push_back(handed_in_ratio(builder.graph(), maxima, o.reps));
       nested.push_back(nesting(maxima));
       std::printf(

@@ -13,9 +13,9 @@
 #include <string>
 #include <vector>
 
-#include "runners/bench_worker.hpp"
 #include "pagor/config.hpp"
-#include "pagor/sets/pair_set.hpp"
+#include "pagor/eval/pair_set.hpp"
+#include "runners/bench_worker.hpp"
 
 using namespace pagor;
 
@@ -49,8 +49,8 @@ int main(int argc, char** argv) {
   wk.open(kitti, ck);
   const double first = wait_all({&ws, &wk});
   std::printf("first pass (%zu + %zu pairs, from files): %.2f s; caches %.0f + %.0f MiB\n",
-              semreg.pairs.size(), kitti.pairs.size(), first,
-              ws.status().cache_bytes / 1048576.0, wk.status().cache_bytes / 1048576.0);
+              semreg.pairs.size(), kitti.pairs.size(), first, ws.status().cache_bytes / 1048576.0,
+              wk.status().cache_bytes / 1048576.0);
   std::vector<double> mu_s, eps_s;
   for (int r = 0; r < reps; ++r) {
     const double mu = r % 2 ? 1.0 : 0.7;

@@ -3,11 +3,13 @@
 # version file. After `cmake --install build --prefix P`, a project that sets
 # CMAKE_PREFIX_PATH=P writes
 #   find_package(pagor REQUIRED)
-#   target_link_libraries(app PRIVATE pagor::core)
-# and includes <pagor/pagor.hpp>; Eigen, PCL and nlohmann-json come with pagor::core.
+#   target_link_libraries(app PRIVATE pagor::core)      # + pagor::eval for the harness
+# and includes <pagor/pagor.hpp> (<pagor/eval/eval.hpp>); Eigen, PCL and nlohmann-json come with
+# pagor::core.
 #
 #   include/pagor/...              the public headers (core/include; never core/src)
-#   lib/libpagor_core.a            the library (static unless BUILD_SHARED_LIBS)
+#   lib/libpagor_core.a            the libraries (static unless BUILD_SHARED_LIBS), and
+#   lib/libpagor_eval.a            the evaluation harness
 #   lib/cmake/pagor/               pagorConfig.cmake, pagorConfigVersion.cmake, pagorTargets*.cmake
 #   bin/pagor, bin/pagor-studio    the tools (when built)
 # The Python module is installed by pip (pyproject.toml, setup.py), not here.
@@ -17,7 +19,7 @@ set(PAGOR_CMAKE_INSTALL_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/pagor)
 
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/core/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
         FILES_MATCHING PATTERN "*.hpp")
-install(TARGETS pagor_core EXPORT pagorTargets
+install(TARGETS pagor_core pagor_eval EXPORT pagorTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
         RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})

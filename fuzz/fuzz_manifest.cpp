@@ -11,9 +11,9 @@
 #include <string>
 
 #include "pagor/errors.hpp"
+#include "pagor/eval/benchmark.hpp"
+#include "pagor/eval/pair_set.hpp"
 #include "scratch.hpp"
-#include "pagor/sets/benchmark.hpp"
-#include "pagor/sets/pair_set.hpp"
 
 using pagor::fuzz::write_bytes;
 

@@ -11,13 +11,13 @@
 #include <nlohmann/json.hpp>
 
 #include "pagor/errors.hpp"
+#include "pagor/eval/association_problem.hpp"
+#include "pagor/eval/pair_set.hpp"
+#include "pagor/eval/synthetic.hpp"
 #include "pagor/io/clouds.hpp"
 #include "pagor/io/correspondence_file.hpp"
 #include "pagor/pipeline.hpp"
 #include "pagor/registration.hpp"
-#include "pagor/sets/association_problem.hpp"
-#include "pagor/sets/pair_set.hpp"
-#include "pagor/sets/synthetic.hpp"
 #include "pagor/verify/diagnosis.hpp"
 
 using namespace pagor;
@@ -105,8 +105,8 @@ TEST_CASE("the exact solver's proof, bound and budget reach the report") {
   p.run();
   for (const CliqueResult& c : p.cliques()) {
     CHECK(is_clique(p.graph(), c.level, c.vertices));
-    CHECK(c.optimal);  // a planted clique of 100 among random points: proven at once
-    CHECK(c.upper_bound == static_cast<int>(c.vertices.size()));
+    CHECK(c.proven);  // a planted clique of 100 among random points: proven at once
+    CHECK(c.clique_number_bound == static_cast<int>(c.vertices.size()));
     CHECK(c.budget == CliqueBudget::none);
   }
   std::string report = to_json(make_registration(p, {"matches", "matches"}));
@@ -120,8 +120,8 @@ TEST_CASE("the exact solver's proof, bound and budget reach the report") {
   int stopped = 0;
   for (const CliqueResult& c : p.cliques()) {
     CHECK(is_clique(p.graph(), c.level, c.vertices));
-    CHECK(c.upper_bound >= static_cast<int>(c.vertices.size()));
-    if (!c.optimal) {
+    CHECK(c.clique_number_bound >= static_cast<int>(c.vertices.size()));
+    if (!c.proven) {
       CHECK(c.budget == CliqueBudget::nodes);
       ++stopped;
     }
@@ -331,7 +331,8 @@ TEST_CASE("gedi-dev fused with the landmarks of the semreg-dev clouds") {
 }
 #endif
 
-TEST_CASE("a pair's time budget stops the clique search with the best cliques so far, and says so") {
+TEST_CASE(
+    "a pair's time budget stops the clique search with the best cliques so far, and says so") {
   // 3000 generated correspondences: building their graph alone takes longer than a 1 ms budget,
   // so every level of the clique search starts past the deadline.
   AssociationParams a;
@@ -353,7 +354,7 @@ TEST_CASE("a pair's time budget stops the clique search with the best cliques so
       const CliqueResult& c = p.cliques()[static_cast<std::size_t>(l)];
       CHECK(is_clique(p.graph(), l, c.vertices));
       CHECK_FALSE(c.vertices.empty());  // at least the lower bound
-      if (c.budget == CliqueBudget::time) CHECK_FALSE(c.optimal);
+      if (c.budget == CliqueBudget::time) CHECK_FALSE(c.proven);
       any_time |= c.budget == CliqueBudget::time;
     }
     CHECK(any_time);

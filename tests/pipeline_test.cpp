@@ -2,9 +2,9 @@
 #include <catch2/catch.hpp>
 
 #include "pagor/errors.hpp"
+#include "pagor/eval/synthetic.hpp"
 #include "pagor/pipeline.hpp"
 #include "pagor/registration.hpp"
-#include "pagor/sets/synthetic.hpp"
 
 using namespace pagor;
 

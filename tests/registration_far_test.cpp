@@ -8,9 +8,9 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "pagor/eval/benchmark.hpp"
+#include "pagor/eval/pair_set.hpp"
 #include "pagor/io/clouds.hpp"
-#include "pagor/sets/benchmark.hpp"
-#include "pagor/sets/pair_set.hpp"
 #include "support/test_util.hpp"
 
 using namespace pagor;

@@ -7,8 +7,8 @@
 #include <catch2/catch.hpp>
 #include <functional>
 
-#include "pagor/sets/benchmark.hpp"
-#include "pagor/sets/pair_set.hpp"
+#include "pagor/eval/benchmark.hpp"
+#include "pagor/eval/pair_set.hpp"
 #include "support/label_variants.hpp"
 
 using namespace pagor;

@@ -6,12 +6,12 @@
 #include <nlohmann/json.hpp>
 
 #include "pagor/errors.hpp"
+#include "pagor/eval/association_problem.hpp"
+#include "pagor/eval/synthetic.hpp"
 #include "pagor/io/clouds.hpp"
 #include "pagor/pipeline.hpp"
 #include "pagor/registration.hpp"
 #include "pagor/report.hpp"
-#include "pagor/sets/association_problem.hpp"
-#include "pagor/sets/synthetic.hpp"
 
 using namespace pagor;
 
@@ -60,7 +60,8 @@ TEST_CASE("the one call gives what the pipeline gives") {
   const Registration from_pipeline = make_registration(p);
   RegisterOptions options;
   options.ground_truth = scene.T_target_source;
-  const Registration one_call = register_clouds(scene.source, scene.target, default_config(), options);
+  const Registration one_call =
+      register_clouds(scene.source, scene.target, default_config(), options);
   REQUIRE(from_pipeline.T_target_source);
   REQUIRE(one_call.T_target_source);
   CHECK(max_difference(*from_pipeline.T_target_source, *one_call.T_target_source) < kSameTransform);
@@ -81,8 +82,7 @@ TEST_CASE("poses are in the frames of the points as given, origins included") {
   const Eigen::Vector3d target_origin(312010.0, 4215003.0, 21.0);
   scene.source.origin = source_origin;
   scene.target.origin = target_origin;
-  const Transform truth_files =
-      to_file_frames(scene.T_target_source, source_origin, target_origin);
+  const Transform truth_files = to_file_frames(scene.T_target_source, source_origin, target_origin);
   RegisterOptions options;
   options.ground_truth = truth_files;
   const Registration r = register_clouds(scene.source, scene.target, default_config(), options);

@@ -7,7 +7,7 @@
 
 #include "command.hpp"
 #include "pagor/errors.hpp"
-#include "pagor/sets/threshold_comparison.hpp"
+#include "pagor/eval/threshold_comparison.hpp"
 
 namespace pagor::cli {
 

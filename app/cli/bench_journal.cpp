@@ -4,10 +4,10 @@
 #include <filesystem>
 #include <sstream>
 
-#include "io/json_input.hpp"
 #include "pagor/errors.hpp"
+#include "pagor/eval/runner.hpp"
 #include "pagor/io/file_input.hpp"
-#include "pagor/sets/runner.hpp"
+#include "pagor/io/json_input.hpp"
 
 namespace pagor::cli {
 namespace {

@@ -16,8 +16,8 @@
 #include <vector>
 
 #include "common/args.hpp"
+#include "pagor/eval/file_lock.hpp"
 #include "pagor/io/atomic_file.hpp"
-#include "pagor/io/file_lock.hpp"
 
 namespace pagor::cli {
 

@@ -14,10 +14,10 @@
 #include "command.hpp"
 #include "common/outputs.hpp"
 #include "pagor/errors.hpp"
+#include "pagor/eval/benchmark.hpp"
+#include "pagor/eval/runner.hpp"
 #include "pagor/io/atomic_file.hpp"
 #include "pagor/io/file_input.hpp"
-#include "pagor/sets/benchmark.hpp"
-#include "pagor/sets/runner.hpp"
 
 namespace pagor::cli {
 namespace {
@@ -33,15 +33,20 @@ void print_row(const PairOutcome& o) {
   char time[16] = "resumed";
   if (o.timed) std::snprintf(time, sizeof(time), "%.1f", o.total_ms);
   const char* diagnosis = o.diagnosis.empty() ? "-" : o.diagnosis.c_str();
+  // The one outcome a loop-closing user cannot afford: marked, in red on a terminal.
+  const bool wrong = o.accepted && (o.negative || (o.has_ground_truth && !o.success));
+  const std::string mark = !wrong                   ? ""
+                           : isatty(fileno(stdout)) ? "  \033[1;31m<- WRONG POSE ACCEPTED\033[0m"
+                                                    : "  <- WRONG POSE ACCEPTED";
   if (o.error)
-    std::printf("%-14s %6d %10.2f %11.2f %8s %6s %8s %10s  %s\n", o.name.c_str(), o.selected_level,
-                o.error->translation, o.error->rotation_deg, truth, o.upper_bound ? "yes" : "no",
-                verdict, time, diagnosis);
+    std::printf("%-14s %6d %10.2f %11.2f %8s %6s %8s %10s  %s%s\n", o.name.c_str(),
+                o.selected_level, o.error->translation, o.error->rotation_deg, truth,
+                o.upper_bound ? "yes" : "no", verdict, time, diagnosis, mark.c_str());
   else
-    std::printf("%-14s %6s %10s %11s %8s %6s %8s %10s  %s\n", o.name.c_str(),
+    std::printf("%-14s %6s %10s %11s %8s %6s %8s %10s  %s%s\n", o.name.c_str(),
                 o.selected_level >= 0 ? std::to_string(o.selected_level).c_str() : "-", "-", "-",
                 truth, o.has_ground_truth ? (o.upper_bound ? "yes" : "no") : "-", verdict, time,
-                diagnosis);
+                diagnosis, mark.c_str());
   std::fflush(stdout);
 }
 

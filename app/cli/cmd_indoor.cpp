@@ -6,14 +6,15 @@
 
 #include "command.hpp"
 #include "pagor/errors.hpp"
-#include "pagor/indoor/indoor_synthetic.hpp"
+#include "pagor/eval/indoor_synthetic.hpp"
 
 namespace pagor::cli {
 
 std::vector<Option> indoor_options() {
-  std::vector<Option> o = {{"out", 1, "DIR", "directory to write the sequence into (created if needed)"},
-          {"scans", 1, "N", "number of scans along the trajectory (default 120)"},
-          {"seed", 1, "S", "seed of the building, trajectory and noise (default 1)"}};
+  std::vector<Option> o = {
+      {"out", 1, "DIR", "directory to write the sequence into (created if needed)"},
+      {"scans", 1, "N", "number of scans along the trajectory (default 120)"},
+      {"seed", 1, "S", "seed of the building, trajectory and noise (default 1)"}};
   for (Option& c : config_options_for("indoor")) o.push_back(std::move(c));
   return o;
 }

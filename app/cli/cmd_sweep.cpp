@@ -13,8 +13,8 @@
 #include "command.hpp"
 #include "common/outputs.hpp"
 #include "pagor/errors.hpp"
+#include "pagor/eval/sweep.hpp"
 #include "pagor/io/atomic_file.hpp"
-#include "pagor/sets/sweep.hpp"
 #ifdef PAGOR_CLI_PLOT
 #include "widgets/bench_plots.hpp"
 #include "widgets/plot_export.hpp"
@@ -47,8 +47,9 @@ SweepGrid grid_from_args(const Args& args, const Config& base) {
 void print_table(const SweepResult& r, const Config& base) {
   std::size_t w = 7;
   for (const auto& s : r.settings) w = std::max(w, s.setting.label.size());
-  std::printf("\n%-*s %14s %14s %9s %10s %14s %12s\n", static_cast<int>(w), "setting", "success",
-              "upper bound", "accepted", "precision", "mean time [ms]", "wall [ms]");
+  std::printf("\n%-*s %14s %14s %9s %10s %8s %6s %14s %12s\n", static_cast<int>(w), "setting",
+              "success", "upper bound", "accepted", "precision", "recall", "wrong",
+              "mean time [ms]", "wall [ms]");
   for (const auto& s : r.settings) {
     const BenchmarkSummary& m = s.summary;
     char succ[48], bound[48];
@@ -56,12 +57,14 @@ void print_table(const SweepResult& r, const Config& base) {
                   rate_text(m.success_rate()).c_str());
     std::snprintf(bound, sizeof(bound), "%d/%d %s", m.upper_bound, m.with_truth,
                   rate_text(m.upper_bound_rate()).c_str());
-    std::printf("%-*s %14s %14s %9d %10s %14.1f %12.1f\n", static_cast<int>(w),
+    std::printf("%-*s %14s %14s %9d %10s %8s %6d %14.1f %12.1f\n", static_cast<int>(w),
                 s.setting.label.c_str(), succ, bound, m.accepted, rate_text(m.precision()).c_str(),
-                m.mean_total_ms, s.wall_ms);
+                rate_text(m.recall()).c_str(), m.false_accepts, m.mean_total_ms, s.wall_ms);
   }
   std::printf(
-      "\nsuccess: %.1f m / %.1f deg; mean time: a whole run per pair with that setting; "
+      "\nsuccess: %.1f m / %.1f deg; precision: accepted pairs whose pose is right; recall: right "
+      "poses that were accepted; wrong: poses accepted although wrong (or negatives); mean time: a "
+      "whole run per pair with that setting; "
       "wall: this setting after the previous one's caches\n",
       base.evaluation.max_translation_error, base.evaluation.max_rotation_error);
   std::printf("stage runs over %d pairs x %zu settings:", r.pairs, r.settings.size());

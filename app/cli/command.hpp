@@ -9,10 +9,10 @@
 #include "common/args.hpp"
 #include "common/pair_args.hpp"
 #include "pagor/config.hpp"
+#include "pagor/eval/dataset.hpp"
+#include "pagor/eval/pair_set.hpp"
 #include "pagor/pipeline.hpp"
 #include "pagor/registration.hpp"
-#include "pagor/sets/dataset.hpp"
-#include "pagor/sets/pair_set.hpp"
 
 namespace pagor::cli {
 

@@ -5,9 +5,9 @@
 
 #include "command.hpp"
 #include "pagor/errors.hpp"
+#include "pagor/eval/synthetic.hpp"
 #include "pagor/io/atomic_file.hpp"
 #include "pagor/io/kitti.hpp"
-#include "pagor/sets/synthetic.hpp"
 
 namespace pagor::cli {
 
@@ -94,8 +94,9 @@ void warn_all(const std::vector<std::string>& warnings, bool verbose) {
   if (benign.empty()) return;
   std::string list;
   for (const std::string& b : benign) list += (list.empty() ? "" : "; ") + b;
-  std::cerr << "pagor: note: " << benign.size() << (benign.size() == 1 ? " class has" : " classes have")
-            << " points but no landmark (" << list << " points); --verbose for the details\n";
+  std::cerr << "pagor: note: " << benign.size()
+            << (benign.size() == 1 ? " class has" : " classes have") << " points but no landmark ("
+            << list << " points); --verbose for the details\n";
 }
 
 void write_text_file(const std::string& path, const std::string& text) {

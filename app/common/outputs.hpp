@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "common/args.hpp"
-#include "pagor/sets/pair_set.hpp"
+#include "pagor/eval/pair_set.hpp"
 
 namespace pagor::cli {
 

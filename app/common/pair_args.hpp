@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "common/args.hpp"
-#include "pagor/sets/dataset.hpp"
-#include "pagor/sets/pair_set.hpp"
+#include "pagor/eval/dataset.hpp"
+#include "pagor/eval/pair_set.hpp"
 
 namespace pagor::cli {
 

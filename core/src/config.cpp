@@ -80,6 +80,8 @@ static Config indoor_config() {
   c.refinement.enabled = false;   // not measured on scan-vs-plan pairs (planar points)
   c.evaluation.max_translation_error = 1.0;
   c.evaluation.max_rotation_error = 3.0;
+  c.acceptance.distinct_translation = 1.0;  // a column spacing's fraction, as the criterion
+  c.acceptance.distinct_rotation = 3.0;
   return c;
 }
 

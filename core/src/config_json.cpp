@@ -9,9 +9,9 @@
 #include <type_traits>
 #include <vector>
 
-#include "io/json_input.hpp"
 #include "pagor/config.hpp"
 #include "pagor/errors.hpp"
+#include "pagor/io/json_input.hpp"
 
 namespace pagor {
 namespace {

@@ -28,8 +28,8 @@ LevelSummary level_summary(const Pipeline& p, std::size_t l) {
   s.vertices = g.active_vertices(static_cast<int>(l));
   s.edges = g.edges_at_level[l];
   s.clique = c.vertices;
-  s.clique_proven = c.optimal;
-  s.clique_number_bound = c.upper_bound;
+  s.clique_proven = c.proven;
+  s.clique_number_bound = c.clique_number_bound;
   s.clique_budget = c.budget;
   s.clique_start = c.start;
   s.clique_time_ms = c.time_ms;

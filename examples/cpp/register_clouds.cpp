@@ -4,14 +4,16 @@
 
 // README: "Use it as a library" (C++)
 #include <cstdio>
+#include <pagor/eval/synthetic.hpp>  // the generated scene (pagor::eval)
 #include <pagor/pagor.hpp>
 
 /// Registers `source` to `target` (clouds from pagor::load_cloud(path, labels_path).cloud, or
 /// filled by you: points [m], optional labels) and prints the transform and the verdict.
-void register_clouds(pagor::PointCloud source, pagor::PointCloud target) {
+void register_and_print(pagor::PointCloud source, pagor::PointCloud target) {
   const pagor::Config config = pagor::default_config();  // or pagor::load_config("my.json")
   // Throws pagor::ConfigError, pagor::InputError.
-  const pagor::Registration r = pagor::register_clouds(std::move(source), std::move(target), config);
+  const pagor::Registration r =
+      pagor::register_clouds(std::move(source), std::move(target), config);
   if (r.T_target_source) {
     const pagor::Transform& T = *r.T_target_source;
     std::printf("T_target_source (level %d):\n", r.selected_level);
@@ -34,9 +36,9 @@ int main(int argc, char** argv) {
   try {
     if (argc == 1) {
       pagor::SyntheticScene scene = pagor::make_synthetic_scene();
-      register_clouds(std::move(scene.source), std::move(scene.target));
+      register_and_print(std::move(scene.source), std::move(scene.target));
     } else {
-      register_clouds(pagor::load_cloud(argv[1], argc == 5 ? argv[3] : "").cloud,
+      register_and_print(pagor::load_cloud(argv[1], argc == 5 ? argv[3] : "").cloud,
                       pagor::load_cloud(argv[2], argc == 5 ? argv[4] : "").cloud);
     }
   } catch (const pagor::Error& e) {  // unreadable files, invalid parameters

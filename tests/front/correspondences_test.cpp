@@ -2,9 +2,9 @@
 #include <catch2/catch.hpp>
 
 #include "pagor/config.hpp"
+#include "pagor/eval/synthetic.hpp"
 #include "pagor/front/correspondences.hpp"
 #include "pagor/front/landmarks.hpp"
-#include "pagor/sets/synthetic.hpp"
 
 using namespace pagor;
 

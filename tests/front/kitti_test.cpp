@@ -6,10 +6,10 @@
 
 #include "pagor/config.hpp"
 #include "pagor/errors.hpp"
-#include "pagor/io/kitti.hpp"
 #include "pagor/front/landmarks.hpp"
-#include "pagor/util/voxel_grid.hpp"
+#include "pagor/io/kitti.hpp"
 #include "support/test_util.hpp"
+#include "util/voxel_grid.hpp"
 
 using namespace pagor;
 

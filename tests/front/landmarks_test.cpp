@@ -3,8 +3,8 @@
 
 #include "pagor/config.hpp"
 #include "pagor/errors.hpp"
+#include "pagor/eval/synthetic.hpp"
 #include "pagor/front/landmarks.hpp"
-#include "pagor/sets/synthetic.hpp"
 
 using namespace pagor;
 

@@ -16,14 +16,14 @@
 #include <random>
 #include <set>
 
+#include "front/point_features.hpp"
 #include "pagor/config.hpp"
 #include "pagor/front/correspondences.hpp"
-#include "pagor/util/kdtree.hpp"
-#include "pagor/io/kitti.hpp"
 #include "pagor/front/landmarks.hpp"
-#include "pagor/util/voxel_grid.hpp"
-#include "front/point_features.hpp"
+#include "pagor/io/kitti.hpp"
+#include "pagor/util/kdtree.hpp"
 #include "support/test_util.hpp"
+#include "util/voxel_grid.hpp"
 
 using namespace pagor;
 

@@ -86,7 +86,7 @@ TEST_CASE("the relaxation agrees with the exact solver on small random graphs") 
       cp.prune = prune;
       const PyramidGraph g = random_graph(60, 0.15, 9 + static_cast<int>(seed % 5), seed);
       const CliqueResult exact = exact_max_clique(g, 0, cp);
-      REQUIRE(exact.optimal);
+      REQUIRE(exact.proven);
       const CliqueResult relaxed = solve_clipper(g, 0, {}, cp);
       CHECK(is_clique(g, 0, relaxed.vertices));
       CHECK(relaxed.vertices == exact.vertices);
@@ -273,10 +273,10 @@ TEST_CASE("a level whose lower bound is proven maximum skips the relaxation") {
         CHECK(is_clique(g, static_cast<int>(l), proven[l].vertices));
         // The bound proves the level's clique maximum at once: no gradient step, and a clique as
         // large as the exact solver's (and never smaller than the relaxation's).
-        CHECK(proven[l].optimal);
+        CHECK(proven[l].proven);
         CHECK(proven[l].gradient_steps == 0);
         CHECK(proven[l].vertices.size() == exact.vertices.size());
-        CHECK(proven[l].upper_bound == static_cast<int>(exact.vertices.size()));
+        CHECK(proven[l].clique_number_bound == static_cast<int>(exact.vertices.size()));
         CHECK(proven[l].vertices.size() >= relaxed[l].vertices.size());
         relaxed_steps += relaxed[l].gradient_steps;
       }

@@ -131,10 +131,11 @@ TEST_CASE("the exact solver agrees with brute force on small graphs") {
     const PyramidGraph g = random_graph(n, p, static_cast<int>(seed % 4), seed);
     INFO("seed " << seed << ", n " << n << ", p " << p);
     const CliqueResult r = exact_max_clique(g, 0, cp);
-    CHECK(r.optimal);
+    CHECK(r.proven);
     CHECK(is_clique(g, 0, r.vertices));
     CHECK(r.vertices.size() == test::brute_force_clique(g));
-    CHECK(r.upper_bound == static_cast<int>(r.vertices.size()));  // proven: the bound is met
+    CHECK(r.clique_number_bound ==
+          static_cast<int>(r.vertices.size()));  // proven: the bound is met
     CHECK(r.budget == CliqueBudget::none);
   }
 }
@@ -148,7 +149,7 @@ TEST_CASE("the exact solver agrees with plain branch and bound on larger graphs"
     const PyramidGraph g = random_graph(n, p, 5 + static_cast<int>(seed % 7) * 3, seed);
     INFO("seed " << seed << ", n " << n << ", p " << p);
     const CliqueResult r = exact_max_clique(g, 0, cp);
-    CHECK(r.optimal);
+    CHECK(r.proven);
     CHECK(is_clique(g, 0, r.vertices));
     CHECK(r.vertices.size() == test::plain_max_clique(g, 0));
   }
@@ -166,7 +167,7 @@ TEST_CASE("the exact solver agrees with plain branch and bound on association pr
     for (int l = 0; l < g.levels(); ++l) {
       INFO("seed " << seed << ", level " << l);
       const CliqueResult r = exact_max_clique(g, l, cp);
-      CHECK(r.optimal);
+      CHECK(r.proven);
       CHECK(is_clique(g, l, r.vertices));
       CHECK(r.vertices.size() == test::plain_max_clique(g, l));
     }
@@ -231,10 +232,10 @@ TEST_CASE("the exact solver finds the clique number of near-complete graphs") {
     const auto [g, omega] = near_complete(seed, 8 + static_cast<int>(seed % 5) * 6);
     INFO("seed " << seed << ", " << g.vertices << " vertices, clique number " << omega);
     const CliqueResult r = exact_max_clique(g, 0, cp);
-    CHECK(r.optimal);
+    CHECK(r.proven);
     CHECK(is_clique(g, 0, r.vertices));
     CHECK(static_cast<int>(r.vertices.size()) == omega);
-    CHECK(r.upper_bound == omega);
+    CHECK(r.clique_number_bound == omega);
   }
 }
 
@@ -243,11 +244,11 @@ TEST_CASE("the exact solver stops at its node budget and says so") {
   cp.exact_max_nodes = 5;
   const PyramidGraph g = random_graph(200, 0.5, 0, 1);
   const CliqueResult r = exact_max_clique(g, 0, cp);
-  CHECK_FALSE(r.optimal);
+  CHECK_FALSE(r.proven);
   CHECK(r.budget == CliqueBudget::nodes);
   CHECK(is_clique(g, 0, r.vertices));
   CHECK_FALSE(r.vertices.empty());
-  CHECK(r.upper_bound >= static_cast<int>(r.vertices.size()));
+  CHECK(r.clique_number_bound >= static_cast<int>(r.vertices.size()));
 }
 
 TEST_CASE("an interrupted exact search returns a bound no smaller than the maximum clique") {
@@ -261,9 +262,9 @@ TEST_CASE("an interrupted exact search returns a bound no smaller than the maxim
       const CliqueResult r = exact_max_clique(g, 0, cp);
       CHECK(is_clique(g, 0, r.vertices));
       CHECK(static_cast<int>(r.vertices.size()) <= omega);
-      CHECK(r.upper_bound >= omega);
-      if (r.optimal) CHECK(static_cast<int>(r.vertices.size()) == omega);
-      CHECK(r.budget == (r.optimal ? CliqueBudget::none : CliqueBudget::nodes));
+      CHECK(r.clique_number_bound >= omega);
+      if (r.proven) CHECK(static_cast<int>(r.vertices.size()) == omega);
+      CHECK(r.budget == (r.proven ? CliqueBudget::none : CliqueBudget::nodes));
     }
   }
 }
@@ -275,15 +276,15 @@ TEST_CASE("the exact solver stops at its time budget and says so") {
   cp.exact_time_budget_ms = 1;
   const PyramidGraph g = random_graph(400, 0.75, 0, 7);
   const CliqueResult r = exact_max_clique(g, 0, cp);
-  CHECK_FALSE(r.optimal);
+  CHECK_FALSE(r.proven);
   CHECK(r.budget == CliqueBudget::time);
   CHECK(is_clique(g, 0, r.vertices));
-  CHECK(r.upper_bound >= static_cast<int>(r.vertices.size()));
+  CHECK(r.clique_number_bound >= static_cast<int>(r.vertices.size()));
   // Over a pyramid the budget is shared: every level says which budget stopped it.
   cp.solver = CliqueSolver::exact;
   for (const CliqueResult& level : solve_pyramid(g, cp)) {
     CHECK(is_clique(g, level.level, level.vertices));
-    CHECK(level.budget == (level.optimal ? CliqueBudget::none : CliqueBudget::time));
+    CHECK(level.budget == (level.proven ? CliqueBudget::none : CliqueBudget::time));
   }
 }
 
@@ -291,11 +292,11 @@ TEST_CASE("the exact solver on graphs without vertices or edges") {
   CliqueParams cp;
   const PyramidGraph empty = test::graph_from_lists({});
   CHECK(exact_max_clique(empty, 0, cp).vertices.empty());
-  CHECK(exact_max_clique(empty, 0, cp).optimal);
+  CHECK(exact_max_clique(empty, 0, cp).proven);
   const PyramidGraph lonely = random_graph(4, 0.0, 0, 1);
   const CliqueResult r = exact_max_clique(lonely, 0, cp);
   CHECK(r.vertices.size() == 1);
-  CHECK(r.optimal);
+  CHECK(r.proven);
 }
 
 TEST_CASE(
@@ -308,7 +309,7 @@ TEST_CASE(
     const PyramidGraph g = random_graph(n, p, static_cast<int>(seed % 3) * 5, seed);
     INFO("seed " << seed << ", n " << n << ", p " << p);
     const CliqueResult r = exact_max_clique(g, 0, cp);
-    CHECK(r.optimal);
+    CHECK(r.proven);
     CHECK(is_clique(g, 0, r.vertices));
     CHECK(r.vertices.size() == test::plain_max_clique(g, 0));
   }
@@ -320,7 +321,7 @@ TEST_CASE(
     const PyramidGraph g = build_pyramid_graph(c, gp);
     INFO("association, seed " << seed);
     const CliqueResult r = exact_max_clique(g, 0, cp);
-    CHECK(r.optimal);
+    CHECK(r.proven);
     CHECK(is_clique(g, 0, r.vertices));
     CHECK(r.vertices.size() == test::plain_max_clique(g, 0));
   }

@@ -5,9 +5,9 @@
 #include <random>
 
 #include "pagor/config.hpp"
+#include "pagor/eval/indoor_synthetic.hpp"
 #include "pagor/indoor/column_detector.hpp"
 #include "pagor/indoor/floor_projection.hpp"
-#include "pagor/indoor/indoor_synthetic.hpp"
 
 using namespace pagor;
 

@@ -6,8 +6,8 @@
 #include <fstream>
 
 #include "pagor/errors.hpp"
+#include "pagor/eval/dataset.hpp"
 #include "pagor/indoor/floor_plan.hpp"
-#include "pagor/sets/dataset.hpp"
 #include "support/test_util.hpp"
 
 using namespace pagor;

@@ -10,9 +10,9 @@
 #include <fstream>
 
 #include "pagor/errors.hpp"
+#include "pagor/eval/file_lock.hpp"
 #include "pagor/io/atomic_file.hpp"
 #include "pagor/io/file_input.hpp"
-#include "pagor/io/file_lock.hpp"
 #include "support/test_util.hpp"
 
 using namespace pagor;

@@ -5,9 +5,9 @@
 #include <limits>
 #include <string>
 
-#include "io/json_input.hpp"
 #include "pagor/config.hpp"
 #include "pagor/errors.hpp"
+#include "pagor/io/json_input.hpp"
 
 using namespace pagor;
 using nlohmann::json;

@@ -3,8 +3,8 @@
 #include <Eigen/Geometry>
 #include <catch2/catch.hpp>
 
+#include "pagor/eval/synthetic.hpp"
 #include "pagor/pose/gravity.hpp"
-#include "pagor/sets/synthetic.hpp"
 
 using namespace pagor;
 

@@ -1,8 +1,8 @@
 #include <Eigen/Geometry>
 #include <catch2/catch.hpp>
 
+#include "pagor/eval/synthetic.hpp"
 #include "pagor/pipeline.hpp"
-#include "pagor/sets/synthetic.hpp"
 #include "pagor/verify/evaluation.hpp"
 #include "pagor/verify/refinement.hpp"
 

@@ -123,3 +123,17 @@ def test_the_open3d_example_aligns_two_open3d_clouds(tmp_path):
     truth = np.loadtxt(pair / "T_target_source.txt")
     assert np.linalg.norm(T[:3, 3] - truth[:3, 3]) < 2.0
     assert aligned.stat().st_size > 0
+
+
+def test_the_readme_is_a_quickstart_and_every_link_of_the_docs_resolves():
+    readme = SOURCE_DIR / "README.md"
+    assert len(readme.read_text().splitlines()) <= 250, "the README is a quickstart: the rest in docs/"
+    pages = [readme, *sorted((SOURCE_DIR / "docs").glob("*.md"))]
+    for page in pages:
+        text = page.read_text()
+        for target in re.findall(r"\]\(([^)#\s]+)(?:#[^)]*)?\)", text):
+            if re.match(r"[a-z]+:", target):
+                continue  # another site
+            assert (page.parent / target).exists(), f"{page.name} links to {target}, which is not there"
+        for path, block in re.findall(r"<!-- snippet: (\S+) -->\n```\w*\n(.*?)\n```", text, re.S):
+            assert block == snippet(SOURCE_DIR / path), f"{page.name}'s {path} differs from the file"

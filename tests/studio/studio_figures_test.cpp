@@ -7,8 +7,8 @@
 #include <fstream>
 #include <map>
 
+#include "pagor/eval/benchmark.hpp"
 #include "pagor/io/kitti.hpp"
-#include "pagor/sets/benchmark.hpp"
 #include "pagor/verify/diagnosis.hpp"
 #include "panels/exports.hpp"
 #include "panels/pyramid_chart.hpp"
@@ -162,7 +162,8 @@ TEST_CASE("4: a pose refinement rescues is a success within the upper bound, and
   studio::AppState s = kitti_state(tmp);
   s.data.source_frame = 0;
   s.data.target_frame = 20;
-  s.config.evaluation.max_translation_error = 1.34;  // every candidate misses (1.35 m..), the refined not
+  s.config.evaluation.max_translation_error =
+      1.34;  // every candidate misses (1.35 m..), the refined not
   UiDriver d(s, 1400, 900);
   d.settle();
   const auto snap = d.studio().worker().snapshot();

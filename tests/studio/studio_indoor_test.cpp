@@ -6,8 +6,8 @@
 #include <catch2/catch.hpp>
 #include <fstream>
 
+#include "pagor/eval/indoor_synthetic.hpp"
 #include "pagor/indoor/floor_projection.hpp"
-#include "pagor/indoor/indoor_synthetic.hpp"
 #include "pagor/io/clouds.hpp"
 #include "runners/bench_worker.hpp"
 #include "runners/worker.hpp"

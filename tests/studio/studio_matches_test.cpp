@@ -5,8 +5,8 @@
 
 #include <imgui.h>
 
-#include <catch2/catch.hpp>
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -63,8 +63,8 @@ void check_same(const studio::Snapshot& s, const Pipeline& p) {
   for (std::size_t l = 0; l < s.levels.size(); ++l) {
     CHECK(s.levels[l].clique == p.cliques()[l].vertices);
     // How each level's search ended, as the CLI reports it (proven, bound, budget, start).
-    CHECK(s.levels[l].clique_proven == p.cliques()[l].optimal);
-    CHECK(s.levels[l].clique_upper_bound == p.cliques()[l].upper_bound);
+    CHECK(s.levels[l].clique_proven == p.cliques()[l].proven);
+    CHECK(s.levels[l].clique_upper_bound == p.cliques()[l].clique_number_bound);
     CHECK(s.levels[l].clique_budget == p.cliques()[l].budget);
     CHECK(s.levels[l].clique_start == p.cliques()[l].start);
     CHECK(s.levels[l].pose.T_target_source.isApprox(p.poses()[l].T_target_source, 1e-12));
@@ -238,9 +238,10 @@ TEST_CASE("an epsilon or mu change on gedi-dev 03 re-runs on the worker (latency
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     const auto& t = d.studio().worker().snapshot()->stage_ms;
     const auto at = [&](Stage st) { return t[static_cast<std::size_t>(st)]; };
-    std::printf("gedi-dev 03, %s: new snapshot after %.1f ms (graph %.1f, clique %.1f, gnc %.1f "
-                "ms)\n",
-                what, ms, at(Stage::graph), at(Stage::clique), at(Stage::gnc));
+    std::printf(
+        "gedi-dev 03, %s: new snapshot after %.1f ms (graph %.1f, clique %.1f, gnc %.1f "
+        "ms)\n",
+        what, ms, at(Stage::graph), at(Stage::clique), at(Stage::gnc));
     d.frames(1);
   };
   const auto before = d.studio().worker().snapshot();
@@ -316,7 +317,8 @@ TEST_CASE("diagnosis of a correspondences file without clouds: no D, the rule na
   // The pyramid names the same rule.
   d.state().view.diagnosis.panel = false;
   d.frames(2);
-  CHECK_FALSE(d.texts("* selected: lowest S = sum of min(residual, noise bound)", "Pyramid").empty());
+  CHECK_FALSE(
+      d.texts("* selected: lowest S = sum of min(residual, noise bound)", "Pyramid").empty());
   // The status bar lists what ran; the stages with nothing to do without clouds apart.
   const std::string stages = studio::run_stages_text(*snap);
   const std::string ran = stages.substr(0, stages.find(';'));

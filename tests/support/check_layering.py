@@ -2,7 +2,7 @@
 """Checks that the sources include only what their layer may see.
 
 The core's folders are layers in the order of the pipeline (util, io, front, graph, pose, verify,
-indoor, sets); the top-level config gathers the stages' parameters, the pipeline runs them and the
+indoor, eval); the top-level config gathers the stages' parameters, the pipeline runs them and the
 report writes their result. A file may include its own layer and the layers below it, never above:
 a stage does not know the configuration document, the pipeline or the sets that run it. The
 studio's folders are layers too (render, widgets, runners, state, scene, panels, then the studio).
@@ -27,7 +27,9 @@ LAYERS = [
     # The diagnosis judges a whole pipeline run against the ground truth.
     ("core/include/pagor/verify/diagnosis.hpp", 10), ("core/src/verify/diagnosis.cpp", 10),
     ("core/include/pagor/report.hpp", 11), ("core/src/report.cpp", 11),
-    ("core/include/pagor/sets/", 12), ("core/src/sets/", 12),
+    ("core/include/pagor/registration.hpp", 11), ("core/src/registration.cpp", 11),
+    # pagor::eval: the harness and the generators, on top of the core.
+    ("core/include/pagor/eval/", 12), ("core/src/eval/", 12),
     ("core/include/pagor/pagor.hpp", 13),
     # the studio
     ("app/studio/render/", 20),

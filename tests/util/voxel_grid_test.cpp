@@ -10,8 +10,8 @@
 #include <set>
 
 #include "pagor/errors.hpp"
-#include "pagor/util/voxel_grid.hpp"
 #include "util/random_draw.hpp"
+#include "util/voxel_grid.hpp"
 
 using namespace pagor;
 
@@ -37,7 +37,8 @@ TEST_CASE("voxel downsampling is the same 300 km from the origin") {
   const Eigen::Vector3f offset(300000.0f, -250000.0f, 1000.0f);
   for (int i = 0; i < 5000; ++i) {
     const Eigen::Vector3f p =
-        (draw3(u, rng).cast<float>().cwiseQuotient(Eigen::Vector3f(1, 1, 8)) * 32).array().round() / 32;
+        (draw3(u, rng).cast<float>().cwiseQuotient(Eigen::Vector3f(1, 1, 8)) * 32).array().round() /
+        32;
     near.push_back(p);
     far.push_back(p + offset);
   }
@@ -97,7 +98,8 @@ TEST_CASE("voxel downsampling equals a straightforward map-based reference") {
       const auto idx = [&](int a) {
         return static_cast<long long>(std::floor(p[a] * static_cast<float>(1.0 / voxel)));
       };
-      const auto [it, inserted] = id.insert({{idx(0), idx(1), idx(2)}, static_cast<int>(sums.size())});
+      const auto [it, inserted] =
+          id.insert({{idx(0), idx(1), idx(2)}, static_cast<int>(sums.size())});
       if (inserted) sums.emplace_back(Eigen::Vector3d::Zero()), counts.push_back(0);
       sums[static_cast<std::size_t>(it->second)] += p.cast<double>();
       ++counts[static_cast<std::size_t>(it->second)];

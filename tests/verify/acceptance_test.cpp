@@ -2,10 +2,10 @@
 
 #include <cstdio>
 
+#include "pagor/eval/self_similar.hpp"
+#include "pagor/eval/synthetic.hpp"
 #include "pagor/front/landmarks.hpp"
 #include "pagor/pipeline.hpp"
-#include "pagor/sets/self_similar.hpp"
-#include "pagor/sets/synthetic.hpp"
 #include "pagor/verify/acceptance.hpp"
 #include "pagor/verify/diagnosis.hpp"
 
@@ -69,7 +69,7 @@ TEST_CASE("a true pair is accepted, two scenes that share nothing are rejected")
       fresh.scores[sel] = p->refinement().score_after;
     }
     const Acceptance again = judge_selection(*p->verifier(), candidates, fresh, c.verification,
-                                             c.evaluation, c.acceptance, c.gnc.model);
+                                             c.acceptance, c.gnc.model);
     CHECK(again.overlap == p->acceptance().overlap);
     CHECK(again.margin == p->acceptance().margin);
     CHECK(again.accepted == p->acceptance().accepted);
@@ -103,7 +103,7 @@ TEST_CASE("no valid candidate is never accepted") {
   std::vector<PoseEstimate> candidates(2);  // both invalid
   VerificationResult none;
   none.scores.assign(2, HUGE_VAL);
-  const Acceptance a = judge_selection(verifier, candidates, none, {}, {}, {}, PoseModel::se3);
+  const Acceptance a = judge_selection(verifier, candidates, none, {}, {}, PoseModel::se3);
   CHECK_FALSE(a.accepted);
   CHECK(a.reason == "no valid candidate");
 }
@@ -136,8 +136,8 @@ TEST_CASE("a pose that aligns only the ground of a sloped street is not trusted"
   v.selected = 0;
   v.scores = {verifier.score(Transform::Identity(), 1.0, ScoreKind::truncated)};
   const Config c = default_config();
-  const Acceptance a = judge_selection(verifier, candidates, v, c.verification, c.evaluation,
-                                       c.acceptance, c.gnc.model);
+  const Acceptance a =
+      judge_selection(verifier, candidates, v, c.verification, c.acceptance, c.gnc.model);
   INFO("overlap " << a.overlap << ": " << a.reason);
   CHECK(a.overlap < 0.05);  // of the boards, none aligned
   CHECK_FALSE(a.accepted);
@@ -159,8 +159,7 @@ Acceptance judge_pose(const SelfSimilarScene& s, const Transform& T,
   v.selected = 0;
   v.scores = {verifier.score(T, c.verification.mu, ScoreKind::truncated, 1, &v.selected_distances)};
   v.distance_bound = static_cast<float>(c.verification.mu);
-  return judge_selection(verifier, candidates, v, c.verification, c.evaluation, params,
-                         PoseModel::se3);
+  return judge_selection(verifier, candidates, v, c.verification, params, PoseModel::se3);
 }
 
 SelfSimilarScene self_similar(SelfSimilarKind kind, bool objects) {
@@ -237,8 +236,8 @@ TEST_CASE("a pose a period off is ambiguous, naming the alternative and how far 
   AcceptanceParams only_levels = ambiguity_only();
   only_levels.ambiguity_range = 0;  // no shifts searched: the candidates and the half turn
   only_levels.min_margin = -1;
-  const Acceptance b = judge_selection(verifier, candidates, v, c.verification, c.evaluation,
-                                       only_levels, PoseModel::se3);
+  const Acceptance b =
+      judge_selection(verifier, candidates, v, c.verification, only_levels, PoseModel::se3);
   INFO(b.reason);
   CHECK_FALSE(b.accepted);
   CHECK(b.ambiguity > 2.0);

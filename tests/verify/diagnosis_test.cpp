@@ -7,8 +7,8 @@
 #include <nlohmann/json.hpp>
 #include <random>
 
+#include "pagor/eval/synthetic.hpp"
 #include "pagor/pipeline.hpp"
-#include "pagor/sets/synthetic.hpp"
 #include "pagor/verify/diagnosis.hpp"
 #include "util/random_draw.hpp"
 

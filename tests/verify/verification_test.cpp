@@ -6,7 +6,7 @@
 #include <thread>
 
 #include "pagor/errors.hpp"
-#include "pagor/sets/synthetic.hpp"
+#include "pagor/eval/synthetic.hpp"
 #include "pagor/verify/verification.hpp"
 #include "util/random_draw.hpp"
 
@@ -207,7 +207,7 @@ TEST_CASE("one verifier searched from several threads at once, with growing boun
   // that still search an older grid must see it intact (run under ThreadSanitizer too).
   const SyntheticScene scene = make_synthetic_scene();
   const Transform T = perturbed(scene.T_target_source, 0.3, 1.0);
-  const std::vector<float> bounds = {0.3f, 1.0f,   2.5f,  0.5f,
+  const std::vector<float> bounds = {0.3f, 1.0f,  2.5f,    0.5f,
                                      4.0f, 40.0f, 1000.0f, std::numeric_limits<float>::infinity()};
   std::vector<std::vector<float>> expected;
   {

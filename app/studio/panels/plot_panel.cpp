@@ -4,8 +4,8 @@
 #include <filesystem>
 
 #include "pagor/errors.hpp"
+#include "pagor/eval/sweep.hpp"
 #include "pagor/io/atomic_file.hpp"
-#include "pagor/sets/sweep.hpp"
 #include "widgets/bench_plots.hpp"
 #include "widgets/plot_export.hpp"
 #include "widgets/widgets.hpp"

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "pagor/registration.hpp"
 #include "widgets/number_format.hpp"
 #include "widgets/widgets.hpp"
 
@@ -99,16 +100,35 @@ std::string level_gap_text(const Snapshot& s) {
   return t;
 }
 
+// Whether the verdict trusted a pose that the loaded ground truth calls wrong.
+bool accepted_wrong(const Snapshot& s) {
+  return s.acceptance.accepted && s.selected_error && !s.selected_error->success;
+}
+
+// The verdict with every test it took, each with its value and threshold (test_text, as the CLI
+// prints them); the margin as a share of mu times the points.
 std::string acceptance_text(const Snapshot& s) {
   const Acceptance& a = s.acceptance;
   const AcceptanceParams& p = s.config.acceptance;
   if (!a.verified) return "not verified: " + a.reason;
-  std::string t = ui::format(
-      "%s: %.0f %% of structure within %.2f m, %d inliers, acceptance margin %.0f %% of "
-      "\xce\xbc\xc2\xb7points (needs %.0f %%)",
-      a.accepted ? "ACCEPTED" : "REJECTED", 100.0 * a.overlap, p.inlier_distance, a.inliers,
-      100.0 * a.margin, 100.0 * p.min_margin);
+  std::string t = accepted_wrong(s) ? "ACCEPTED, BUT THE GROUND TRUTH CALLS THE POSE WRONG"
+                  : a.accepted      ? "ACCEPTED"
+                                    : "REJECTED";
+  std::string tests;
+  for (const AcceptanceTest& x : a.tests) {
+    if (!x.applies) continue;
+    tests += tests.empty() ? "" : ", ";
+    if (x.name == "margin")
+      tests += ui::format("acceptance margin %.0f %% of \xce\xbc\xc2\xb7points (needs %.0f %%)%s",
+                          100.0 * a.margin, 100.0 * p.min_margin, x.passed ? "" : ": FAILED");
+    else
+      tests += test_text(x);
+  }
+  t += ": " + tests + ui::format(" (aligned: within %.2f m)", p.inlier_distance);
   if (!a.accepted) t += "; " + a.reason;
+  if (!a.alternative.description.empty())
+    t += ui::format("; best distinct alternative: %s (%.2f times as well supported)",
+                    a.alternative.description.c_str(), a.alternative.ratio);
   return t;
 }
 
@@ -167,8 +187,9 @@ void bar_chart(const Snapshot& s, int shown, const RunChanges& changes) {
   ImGui::Dummy(ImVec2(width, height + label_h));
   ui::figure(level_gap_text(s), ImGui::GetStyle().Colors[ImGuiCol_TextDisabled], true);
   if (s.selected >= 0) {  // the verdict a loop-closure user acts on; wrapped in a narrow column
-    ui::figure(acceptance_text(s),
-               !s.acceptance.verified ? kDim : s.acceptance.accepted ? kGood : kBad, true);
+    const Acceptance& a = s.acceptance;
+    const ImVec4 color = accepted_wrong(s) ? kBad : !a.verified ? kDim : a.accepted ? kGood : kBad;
+    ui::figure(acceptance_text(s), color, true);
     ImGui::PushTextWrapPos(0.0f);
     refinement_lines(s);
     ImGui::PopTextWrapPos();

@@ -8,7 +8,7 @@
 #include <cmath>
 
 #include "pagor/errors.hpp"
-#include "pagor/sets/sweep.hpp"
+#include "pagor/eval/sweep.hpp"
 #include "panels/plot_panel.hpp"
 #include "widgets/bench_plots.hpp"
 #include "widgets/timings.hpp"
@@ -157,12 +157,13 @@ void flip_view(AppState& state, const SweepResult& r, const PairSet& set, Studio
 void settings_table(AppState& state, const SweepResult& r, StudioActions& actions) {
   // The figures' columns as wide as their text; the setting (two parameters' values in a 2-D
   // sweep) takes the rest and wraps, so the last column is never cut.
-  if (!ImGui::BeginTable("##sweep_rows", 6,
-                         ImGuiTableFlags_RowBg | ImGuiTableFlags_Borders |
-                             ImGuiTableFlags_SizingFixedFit))
+  if (!ImGui::BeginTable(
+          "##sweep_rows", 8,
+          ImGuiTableFlags_RowBg | ImGuiTableFlags_Borders | ImGuiTableFlags_SizingFixedFit))
     return;
   ImGui::TableSetupColumn("setting", ImGuiTableColumnFlags_WidthStretch);
-  for (const char* c : {"success", "upper bound", "verdict precision", "mean time [ms]", ""})
+  for (const char* c : {"success", "upper bound", "verdict precision", "verdict recall",
+                        "wrong accepted", "mean time [ms]", ""})
     ImGui::TableSetupColumn(c, ImGuiTableColumnFlags_WidthFixed);
   ImGui::TableHeadersRow();
   for (std::size_t k = 0; k < r.settings.size(); ++k) {
@@ -179,6 +180,11 @@ void settings_table(AppState& state, const SweepResult& r, StudioActions& action
                           rate_text(m.upper_bound_rate()).c_str()));
     ImGui::TableNextColumn();
     ui::figure(rate_text(m.precision()));
+    ImGui::TableNextColumn();
+    ui::figure(rate_text(m.recall()));
+    ImGui::TableNextColumn();
+    // The one outcome a loop-closing user cannot afford, in red when it happened.
+    ui::figure(std::to_string(m.false_accepts), m.false_accepts > 0 ? kRed : ImVec4(0, 0, 0, 0));
     ImGui::TableNextColumn();
     ui::figure(ui::timing("%.0f", m.mean_total_ms));
     ImGui::TableNextColumn();

@@ -15,10 +15,10 @@
 #include <thread>
 #include <vector>
 
+#include "pagor/eval/benchmark.hpp"
+#include "pagor/eval/runner.hpp"
+#include "pagor/eval/sweep.hpp"
 #include "pagor/indoor/floor_plan.hpp"
-#include "pagor/sets/benchmark.hpp"
-#include "pagor/sets/runner.hpp"
-#include "pagor/sets/sweep.hpp"
 
 namespace pagor::studio {
 

@@ -6,9 +6,9 @@
 #include <nlohmann/json.hpp>
 
 #include "pagor/errors.hpp"
-#include "pagor/io/correspondence_file.hpp"
-#include "pagor/sets/pair_set.hpp"
+#include "pagor/eval/pair_set.hpp"
 #include "pagor/io/clouds.hpp"
+#include "pagor/io/correspondence_file.hpp"
 #include "pagor/registration.hpp"
 
 namespace pagor::studio {

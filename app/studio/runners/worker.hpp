@@ -14,8 +14,8 @@
 #include <thread>
 #include <vector>
 
+#include "pagor/eval/dataset.hpp"
 #include "pagor/pipeline.hpp"
-#include "pagor/sets/dataset.hpp"
 #include "pagor/util/kdtree.hpp"
 #include "pagor/verify/diagnosis.hpp"
 
@@ -25,7 +25,7 @@ namespace pagor::studio {
 struct LevelView {
   double epsilon = 0;
   std::size_t vertices = 0, edges = 0;
-  std::vector<int> clique;  ///< correspondence indices
+  std::vector<int> clique;     ///< correspondence indices
   bool clique_proven = false;  ///< the clique is proven maximum on its level
   int clique_upper_bound = 0;  ///< bound on the level's clique number the search reached
   CliqueBudget clique_budget = CliqueBudget::none;  ///< which budget cut the search short
@@ -144,7 +144,7 @@ class Worker {
   std::shared_ptr<const std::vector<DetectedColumn>> scan_columns_;
   std::string description_, source_name_, target_name_;
   std::shared_ptr<const KdTree3f> target_index_;
-  std::string matches_file_;       ///< the correspondences file registered (empty: none)
+  std::string matches_file_;        ///< the correspondences file registered (empty: none)
   std::vector<char> inlier_flags_;  ///< its ground-truth flags (empty without)
   bool matches_weighted_ = false;   ///< it has a weight column
   std::uint64_t data_generation_ = 0;

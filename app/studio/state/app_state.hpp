@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "pagor/config.hpp"
-#include "pagor/sets/dataset.hpp"
-#include "pagor/sets/pair_set.hpp"
+#include "pagor/eval/dataset.hpp"
+#include "pagor/eval/pair_set.hpp"
 #include "state/camera.hpp"
 #include "state/message.hpp"
 
@@ -122,18 +122,18 @@ struct Pick {
 
 /// What a file dialog opens the chosen file as.
 enum class FilePurpose {
-  any,            ///< by its kind: a cloud, labels, a config, a session, a manifest, ...
-  source_cloud,   ///< files mode's source cloud
-  target_cloud,   ///< files mode's target cloud
-  source_labels,  ///< files mode's source .label file
-  target_labels,  ///< files mode's target .label file
-  ground_truth,   ///< files mode's 4x4 T_target_source
+  any,              ///< by its kind: a cloud, labels, a config, a session, a manifest, ...
+  source_cloud,     ///< files mode's source cloud
+  target_cloud,     ///< files mode's target cloud
+  source_labels,    ///< files mode's source .label file
+  target_labels,    ///< files mode's target .label file
+  ground_truth,     ///< files mode's 4x4 T_target_source
   correspondences,  ///< files mode's matcher correspondences (px py pz qx qy qz [w [inlier]])
-  pairs,          ///< a pairs file or manifest to step through
-  config,         ///< a configuration JSON
-  session,        ///< a session JSON
-  bench,          ///< the benchmark view's set or results file
-  kitti_root,     ///< a KITTI root directory
+  pairs,            ///< a pairs file or manifest to step through
+  config,           ///< a configuration JSON
+  session,          ///< a session JSON
+  bench,            ///< the benchmark view's set or results file
+  kitti_root,       ///< a KITTI root directory
 };
 
 /// The studio's own file browser (panels/file_dialog.cpp).
@@ -146,7 +146,7 @@ struct FileDialogState {
   /// The listing shown, read once per directory, filter and purpose (`listed` names them).
   std::vector<std::pair<std::string, bool>> listing;  ///< (name, is a directory)
   std::string listed;
-  bool truncated = false;  ///< the directory holds more than the listing shows
+  bool truncated = false;     ///< the directory holds more than the listing shows
   std::string listing_error;  ///< why the directory could not be listed (empty: it was)
 };
 

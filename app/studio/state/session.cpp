@@ -3,10 +3,10 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
-#include "io/json_input.hpp"
 #include "pagor/errors.hpp"
 #include "pagor/io/atomic_file.hpp"
 #include "pagor/io/file_input.hpp"
+#include "pagor/io/json_input.hpp"
 #include "pagor/io/kitti.hpp"
 #include "render/headless.hpp"
 #include "state/app_state.hpp"

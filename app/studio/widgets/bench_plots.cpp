@@ -31,12 +31,18 @@ Plot percent_plot(PlotKind kind, const char* value_label) {
 
 Plot sweep_success_plot(const SweepResult& result) {
   Plot p = percent_plot(PlotKind::bars, "pairs with ground truth");
-  p.title = "Sweep: success per setting";
-  p.series = {{"success", {}, {}}, {"upper bound", {}, {}}};
+  p.title = "Sweep: success and verdict per setting";
+  // Precision beside recall: a setting that buys precision with recall shows it at a glance.
+  p.series = {{"success", {}, {}},
+              {"upper bound", {}, {}},
+              {"verdict precision", {}, {}},
+              {"verdict recall", {}, {}}};
   for (const SweepSettingResult& r : result.settings) {
     p.categories.push_back(r.setting.label);
     p.series[0].y.push_back(percent(r.summary.success_rate()));
     p.series[1].y.push_back(percent(r.summary.upper_bound_rate()));
+    p.series[2].y.push_back(percent(r.summary.precision()));
+    p.series[3].y.push_back(percent(r.summary.recall()));
   }
   return p;
 }
@@ -104,14 +110,21 @@ Plot sweep_line_plot(const SweepResult& result) {
   const SweepAxes a = sweep_axes(result);
   if (a.x < 0) return p;
   set_axis(p, result, a.x);
-  if (a.series < 0) p.series = {{"success", {}, {}}, {"upper bound", {}, {}}};
+  if (a.series < 0)
+    p.series = {{"success", {}, {}},
+                {"upper bound", {}, {}},
+                {"verdict precision", {}, {}},
+                {"verdict recall", {}, {}}};
   for (const SweepSettingResult& r : result.settings) {
     const double x = x_of(r, a.x);
     if (a.series < 0) {
-      p.series[0].x.push_back(x);
-      p.series[1].x.push_back(x);
-      p.series[0].y.push_back(percent(r.summary.success_rate()));
-      p.series[1].y.push_back(percent(r.summary.upper_bound_rate()));
+      const BenchmarkSummary& s = r.summary;
+      const double y[] = {percent(s.success_rate()), percent(s.upper_bound_rate()),
+                          percent(s.precision()), percent(s.recall())};
+      for (std::size_t i = 0; i < p.series.size(); ++i) {
+        p.series[i].x.push_back(x);
+        p.series[i].y.push_back(y[i]);
+      }
       continue;
     }
     // Two dimensions: a success series per value of the outer one.

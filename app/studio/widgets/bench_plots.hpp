@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
+#include "pagor/eval/benchmark.hpp"
+#include "pagor/eval/sweep.hpp"
 #include "pagor/indoor/floor_plan.hpp"
-#include "pagor/sets/benchmark.hpp"
-#include "pagor/sets/sweep.hpp"
 #include "widgets/plot.hpp"
 
 namespace pagor::studio {

@@ -8,8 +8,8 @@
 
 #include "front/point_features.hpp"
 #include "pagor/errors.hpp"
-#include "pagor/util/voxel_grid.hpp"
 #include "pagor/util/work_budget.hpp"
+#include "util/voxel_grid.hpp"
 
 namespace pagor {
 namespace {

@@ -11,7 +11,7 @@
 #include <limits>
 #include <numeric>
 
-#include "pagor/util/voxel_grid.hpp"
+#include "util/voxel_grid.hpp"
 
 namespace pagor::detail {
 namespace {

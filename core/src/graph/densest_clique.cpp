@@ -120,8 +120,8 @@ bool proven_without_relaxation(const PyramidGraph& g, int level, const CliquePar
   if (!optimal) return false;
   r.level = level;
   r.vertices = std::move(lower);
-  r.optimal = true;
-  r.upper_bound = bound;
+  r.proven = true;
+  r.clique_number_bound = bound;
   r.start = known_clique.empty() ? CliqueStart::cold : CliqueStart::warm;
   r.penalty = d0;  // no relaxation ran: the next warm level starts from the same penalty
   r.u = indicator(g.vertices, r.vertices);  // the next level's start
@@ -160,8 +160,8 @@ CliqueResult relax_level(const PyramidGraph& g, int level, const std::vector<dou
     // indicator vector.
     r.vertices = keep;
     r.u = indicator(g.vertices, keep);
-    r.optimal = true;
-    r.upper_bound = static_cast<int>(keep.size());
+    r.proven = true;
+    r.clique_number_bound = static_cast<int>(keep.size());
     return r;
   }
   detail::set_weights(sub, g, level);
@@ -215,16 +215,16 @@ CliqueResult solve_level(const PyramidGraph& g, int level, const std::vector<dou
   // whose core number is below its size; a greedy colouring may prove it maximum at once). Unless
   // that proves the clique maximum, the level is also solved from the cold start, exactly as the
   // independent solver does, and the larger clique is kept: the cascade never loses to it.
-  if (warm && !r.optimal) {
+  if (warm && !r.proven) {
     bool late = false;
     r.vertices = detail::larger_clique(g, level, std::move(r.vertices), p.cascade_check_nodes,
-                                       r.optimal, &r.upper_bound, deadline, &late);
+                                       r.proven, &r.clique_number_bound, deadline, &late);
     // 0 nodes: the colouring's proof only
-    if (!r.optimal && (late || r.budget == CliqueBudget::time))
+    if (!r.proven && (late || r.budget == CliqueBudget::time))
       r.budget = CliqueBudget::time;
-    else if (!r.optimal && p.cascade_check_nodes > 0)
+    else if (!r.proven && p.cascade_check_nodes > 0)
       r.budget = CliqueBudget::nodes;
-    if (!r.optimal && p.cascade_fallback && r.budget != CliqueBudget::time) {
+    if (!r.proven && p.cascade_fallback && r.budget != CliqueBudget::time) {
       CliqueResult cold =
           relax_level(g, level, random_start(g.vertices, p.seed), p, {}, 0.0, deadline);
       if (cold.budget == CliqueBudget::time) r.budget = CliqueBudget::time;
@@ -238,7 +238,7 @@ CliqueResult solve_level(const PyramidGraph& g, int level, const std::vector<dou
       }
     }
   }
-  if (r.optimal) r.budget = CliqueBudget::none;  // proven maximum: no budget cost it anything
+  if (r.proven) r.budget = CliqueBudget::none;  // proven maximum: no budget cost it anything
   r.time_ms = ms_since(t0);
   return r;
 }

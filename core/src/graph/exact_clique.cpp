@@ -408,16 +408,16 @@ CliqueResult detail::exact_level(const PyramidGraph& g, int level, const CliqueP
   const auto t0 = std::chrono::steady_clock::now();
   CliqueResult r;
   r.level = level;
-  r.optimal = true;
+  r.proven = true;
   if (g.vertices > 0) {
     const detail::LevelCsr csr = detail::level_csr(g, level);
     const detail::CoreDecomposition cd = detail::core_decomposition(csr);
     detail::Marks marks(g.vertices);
     std::vector<int> start = detail::greedy_clique(csr, cd.core, p.greedy_starts * 8, marks);
     if (seed.size() > start.size() && detail::is_clique(csr, seed, marks)) start = seed;
-    r.vertices = search_from(csr, cd, std::move(start), budget, r.optimal, r.upper_bound);
+    r.vertices = search_from(csr, cd, std::move(start), budget, r.proven, r.clique_number_bound);
   }
-  r.budget = r.optimal            ? CliqueBudget::none
+  r.budget = r.proven             ? CliqueBudget::none
              : budget.out_of_time ? CliqueBudget::time
                                   : CliqueBudget::nodes;
   r.time_ms =

@@ -5,11 +5,11 @@
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
-#include "io/json_input.hpp"
 #include "pagor/errors.hpp"
 #include "pagor/io/atomic_file.hpp"
 #include "pagor/io/clouds.hpp"
 #include "pagor/io/file_input.hpp"
+#include "pagor/io/json_input.hpp"
 
 namespace pagor {
 namespace {

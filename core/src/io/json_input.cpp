@@ -1,4 +1,4 @@
-#include "io/json_input.hpp"
+#include "pagor/io/json_input.hpp"
 
 #include <cmath>
 

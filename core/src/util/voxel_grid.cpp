@@ -1,4 +1,4 @@
-#include "pagor/util/voxel_grid.hpp"
+#include "util/voxel_grid.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -17,7 +17,7 @@ namespace {
 // Open-addressing tables of packed cell keys (voxel downsampling and RadiusGrid): an empty slot,
 // and the slot a key's probe starts from.
 constexpr std::uint64_t kEmpty = ~std::uint64_t(0);  // packed keys use 63 bits
-constexpr float kMaxCells = 1048576.0f;  // 2^20 cells per axis, keys of 3 x 21 bits
+constexpr float kMaxCells = 1048576.0f;              // 2^20 cells per axis, keys of 3 x 21 bits
 // A RadiusGrid's box up to this many cells per point is dense (a bit per cell: 32 bytes per
 // point at most).
 constexpr std::uint64_t kDenseCellsPerPoint = 256;
@@ -282,28 +282,32 @@ RadiusGrid::RadiusGrid(const std::vector<Eigen::Vector3f>& points, double cell)
 std::pair<int, float> RadiusGrid::nearest(const Eigen::Vector3f& q, float radius,
                                           int exclude) const {
   std::pair<int, float> best{-1, radius * radius};
-  for_cells_near(q, [&] { return best.second; }, [&](int begin, int end) {
-    for (int i = begin; i < end; ++i) {
-      const float d2 = (sorted_[static_cast<std::size_t>(i)] - q).squaredNorm();
-      if (d2 < best.second && index_[static_cast<std::size_t>(i)] != exclude)
-        best = {index_[static_cast<std::size_t>(i)], d2};
-    }
-  });
+  for_cells_near(
+      q, [&] { return best.second; },
+      [&](int begin, int end) {
+        for (int i = begin; i < end; ++i) {
+          const float d2 = (sorted_[static_cast<std::size_t>(i)] - q).squaredNorm();
+          if (d2 < best.second && index_[static_cast<std::size_t>(i)] != exclude)
+            best = {index_[static_cast<std::size_t>(i)], d2};
+        }
+      });
   return best;
 }
 
 void RadiusGrid::within(const Eigen::Vector3f& q, float radius, std::vector<int>& index,
                         std::vector<float>& distance_sq) const {
   const float r2 = radius * radius;
-  for_cells_near(q, [r2] { return r2; }, [&](int begin, int end) {
-    for (int i = begin; i < end; ++i) {
-      const float d2 = (sorted_[static_cast<std::size_t>(i)] - q).squaredNorm();
-      if (d2 < r2) {
-        index.push_back(index_[static_cast<std::size_t>(i)]);
-        distance_sq.push_back(d2);
-      }
-    }
-  });
+  for_cells_near(
+      q, [r2] { return r2; },
+      [&](int begin, int end) {
+        for (int i = begin; i < end; ++i) {
+          const float d2 = (sorted_[static_cast<std::size_t>(i)] - q).squaredNorm();
+          if (d2 < r2) {
+            index.push_back(index_[static_cast<std::size_t>(i)]);
+            distance_sq.push_back(d2);
+          }
+        }
+      });
 }
 
 }  // namespace pagor

@@ -49,7 +49,7 @@ double overlap_of(const std::vector<float>& dist, const std::vector<char>& count
   return counted ? static_cast<double>(close) / static_cast<double>(counted) : 0.0;
 }
 
-// The same pose moved by the success criterion's translation along each horizontal axis: a true
+// The same pose moved by distinct_translation along each horizontal axis: a true
 // alignment loses most of its overlap, one that aligns only what slides along itself (a facade, a
 // hedge, the road) or what matches anything (vegetation) keeps it.
 double sharpness_of(const Verifier& verifier, const Transform& T, const std::vector<char>& counts,
@@ -183,8 +183,8 @@ void judge_ambiguity(Acceptance& a, const Verifier& verifier,
 Acceptance judge_selection(const Verifier& verifier, const std::vector<PoseEstimate>& candidates,
                            const VerificationResult& verification,
                            const VerificationParams& verification_params,
-                           const EvaluationParams& distinct, const AcceptanceParams& params,
-                           PoseModel model) {
+                           const AcceptanceParams& params, PoseModel model) {
+  const EvaluationParams distinct = params.distinct();  // what counts as another answer
   Acceptance a;
   if (verification.selected < 0) {
     a.reason = "no valid candidate";

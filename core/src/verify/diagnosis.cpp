@@ -120,7 +120,7 @@ void diagnose_levels(const DiagnosisInput& in, const Transform& T_gt, const Diag
     if (!true_items.empty() && level < true_graph.levels()) {
       const CliqueResult best = exact_max_clique(true_graph, level, exact);
       ld.consistent_true = best.vertices.size();
-      ld.consistent_exact = best.optimal;
+      ld.consistent_exact = best.proven;
     }
     const auto& clique = (*in.cliques)[l].vertices;
     ld.clique_size = clique.size();
@@ -372,26 +372,25 @@ nlohmann::json finite_or_null(double x) {
 }
 
 nlohmann::json level_json(const LevelDiagnosis& l) {
-  nlohmann::json j = {{"epsilon", l.epsilon},
-                      {"vertices", l.vertices},
-                      {"true_vertices", l.true_vertices},
-                      {"consistent_true", l.consistent_true},
-                      {"consistent_exact", l.consistent_exact},
-                      {"clique_size", l.clique_size},
-                      {"clique_true", l.clique_true},
-                      {"precision", l.precision},
-                      {"recall", l.recall},
-                      {"pose_valid", l.pose_valid},
-                      {"gnc_inliers", l.gnc_inliers},
-                      {"gnc_true_inliers", l.gnc_true_inliers},
-                      {"score_D", finite_or_null(l.score)},
-                      {"origin",
-                       {{"landmark",
-                         {{"clique", l.clique_origin.landmark},
-                          {"clique_true", l.clique_true_origin.landmark}}},
-                        {"matcher",
-                         {{"clique", l.clique_origin.matcher},
-                          {"clique_true", l.clique_true_origin.matcher}}}}}};
+  nlohmann::json j = {
+      {"epsilon", l.epsilon},
+      {"vertices", l.vertices},
+      {"true_vertices", l.true_vertices},
+      {"consistent_true", l.consistent_true},
+      {"consistent_exact", l.consistent_exact},
+      {"clique_size", l.clique_size},
+      {"clique_true", l.clique_true},
+      {"precision", l.precision},
+      {"recall", l.recall},
+      {"pose_valid", l.pose_valid},
+      {"gnc_inliers", l.gnc_inliers},
+      {"gnc_true_inliers", l.gnc_true_inliers},
+      {"score_D", finite_or_null(l.score)},
+      {"origin",
+       {{"landmark",
+         {{"clique", l.clique_origin.landmark}, {"clique_true", l.clique_true_origin.landmark}}},
+        {"matcher",
+         {{"clique", l.clique_origin.matcher}, {"clique_true", l.clique_true_origin.matcher}}}}}};
   if (l.error) {
     j["translation_error_m"] = l.error->translation;
     j["rotation_error_deg"] = l.error->rotation_deg;
@@ -435,6 +434,7 @@ std::string diagnosis_json(const Diagnosis& d, int indent) {
         {"candidates_D", candidates},
         {"selected", d.selected >= 0 ? json(d.selected) : json()},
         {"score_misled", d.score_misled}}},
+      {"alternative_right", d.alternative_right},
       {"time_ms", d.time_ms}};
   return out.dump(indent, ' ', false, json::error_handler_t::replace);
 }

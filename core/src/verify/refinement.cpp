@@ -9,8 +9,8 @@
 #include <cstdio>
 
 #include "pagor/pose/gnc.hpp"
-#include "pagor/util/voxel_grid.hpp"
 #include "pagor/util/work_budget.hpp"
+#include "util/voxel_grid.hpp"
 
 namespace pagor {
 namespace {

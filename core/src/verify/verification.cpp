@@ -9,7 +9,7 @@
 
 #include "pagor/errors.hpp"
 #include "pagor/util/kdtree.hpp"
-#include "pagor/util/voxel_grid.hpp"
+#include "util/voxel_grid.hpp"
 
 namespace pagor {
 

@@ -5,8 +5,8 @@
 
 #include "io/cloud_frame.hpp"
 #include "pagor/errors.hpp"
+#include "pagor/eval/pair_set.hpp"
 #include "pagor/io/correspondence_file.hpp"
-#include "pagor/sets/pair_set.hpp"
 
 namespace pagor::python {
 namespace {

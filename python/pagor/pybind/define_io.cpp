@@ -4,8 +4,8 @@
 
 #include "arrays.hpp"
 #include "bindings.hpp"
+#include "pagor/eval/synthetic.hpp"
 #include "pagor/io/clouds.hpp"
-#include "pagor/sets/synthetic.hpp"
 
 namespace pagor::python {
 namespace {

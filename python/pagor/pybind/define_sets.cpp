@@ -11,11 +11,11 @@
 #include "bindings.hpp"
 #include "json_objects.hpp"
 #include "pagor/errors.hpp"
+#include "pagor/eval/file_lock.hpp"
+#include "pagor/eval/pair_set.hpp"
+#include "pagor/eval/runner.hpp"
 #include "pagor/io/atomic_file.hpp"
 #include "pagor/io/file_input.hpp"
-#include "pagor/io/file_lock.hpp"
-#include "pagor/sets/pair_set.hpp"
-#include "pagor/sets/runner.hpp"
 
 namespace pagor::python {
 namespace {

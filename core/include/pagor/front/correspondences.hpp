@@ -13,16 +13,13 @@ namespace pagor {
 
 /// Correspondence generation.
 struct CorrespondenceParams {
-  int max_correspondences = 1500;  ///< cap on the total; the most promising are kept; 0 = no cap
-  bool fpfh_mutual = true;         ///< fpfh classes: keep only mutual nearest descriptors
-  int fpfh_max_per_class = 300;    ///< fpfh classes: at most this many matches (best first)
-  /// fpfh classes: keep a match only when its descriptor distance is at most this fraction of the
-  /// distance to the second nearest (Lowe's ratio test); 1: no test
+  // Each field's meaning, unit and valid range: fields() below (docs/config.md).
+  int max_correspondences = 1500;
+  bool fpfh_mutual = true;
+  int fpfh_max_per_class = 300;
   double fpfh_ratio = 1.0;
-  double shape_scale = 0.5;  ///< ranking of cluster pairs: extents differing by this much [m]
-                             ///< score e^-1
-  /// with a matcher's correspondences (Pipeline::set_matches) and clouds: use the landmark
-  /// correspondences too, both in one pyramid (false: the matcher's replace them)
+  double shape_scale = 0.5;
+  ///< score e^-1
   bool fuse_matches = false;
 
   template <class V>

@@ -27,15 +27,16 @@ inline const auto& enum_entries(LandmarkMethod) {
 
 /// Landmark extraction for one semantic class.
 struct ClassParams {
-  std::string name;                                 ///< class name in the label scheme
-  LandmarkMethod method = LandmarkMethod::cluster;  ///< clusters, or FPFH keypoints
-  double voxel_size = 0.2;         ///< downsampling voxel before clustering or FPFH [m]; 0 = none
-  double cluster_tolerance = 0.5;  ///< cluster: max gap between points of one cluster [m]
-  int min_points = 10;             ///< cluster: smallest cluster kept [voxels]
-  int max_points = 5000;           ///< cluster: largest cluster kept [voxels]
-  double normal_radius = 1.0;      ///< fpfh: radius of the normal estimate [m]
-  double feature_radius = 2.5;     ///< fpfh: radius of the FPFH descriptor [m]
-  int max_keypoints = 1500;        ///< fpfh: descriptors at no more than this many voxels
+  // Each field's meaning, unit and valid range: fields() below (docs/config.md).
+  std::string name;
+  LandmarkMethod method = LandmarkMethod::cluster;
+  double voxel_size = 0.2;
+  double cluster_tolerance = 0.5;
+  int min_points = 10;
+  int max_points = 5000;
+  double normal_radius = 1.0;
+  double feature_radius = 2.5;
+  int max_keypoints = 1500;
 
   template <class V>
   static void fields(V&& v) {
@@ -90,24 +91,25 @@ ClassParams default_structure_keypoints();
 
 /// Class-agnostic landmarks for class-poor scenes and for clouds without labels.
 struct FallbackParams {
-  FallbackMode mode = FallbackMode::automatic;  ///< when to add class-agnostic landmarks
-  /// automatic: a cloud with fewer cluster landmarks (cars, trunks, poles, ...) than this is
-  /// class-poor. Measured on semreg-dev, where every scene has 0-11.
+  // Each field's meaning, unit and valid range: fields() below (docs/config.md).
+  FallbackMode mode = FallbackMode::automatic;
+  // automatic: a cloud with fewer cluster landmarks (cars, trunks, poles, ...) than this is
+  // class-poor. Measured on semreg-dev, where every scene has 0-11.
   int class_poor_below = 15;
   /// Classes that count as ground and are left out (ignored when the scheme lacks them).
   std::vector<std::string> ground_classes{"road", "parking", "sidewalk", "other-ground", "terrain"};
-  double ground_height = 0.4;  ///< unlabelled: thickness of the removed ground layer [m]
-  double ground_cell = 2.0;    ///< unlabelled: grid of the ground surface (ground.hpp) [m]
-  double ground_slope = 0.3;   ///< unlabelled: steepest rise of the ground surface [m per m]
-  ClassParams keypoints = default_structure_keypoints();  ///< the class-agnostic FPFH class
-  /// A cloud whose labels are not used: descriptors at no more than this many keypoints (they are
-  /// all the evidence there is). Measured on semreg-dev without labels: 9/10 at 1500 and 2000,
-  /// 9/10 with one right pose rejected at 1000; with labels, 1500 loses a pair (08).
+  double ground_height = 0.4;
+  double ground_cell = 2.0;
+  double ground_slope = 0.3;
+  ClassParams keypoints = default_structure_keypoints();
+  // A cloud whose labels are not used: descriptors at no more than this many keypoints (they are
+  // all the evidence there is). Measured on semreg-dev without labels: 9/10 at 1500 and 2000,
+  // 9/10 with one right pose rejected at 1000; with labels, 1500 loses a pair (08).
   int unlabelled_keypoints = 1500;
-  /// A pair of which a cloud's labels are not used: the keypoints are matched one way (each source
-  /// keypoint's nearest target descriptor), at most this many; 0: as with labels (mutual nearest,
-  /// correspondences.fpfh_max_per_class). Without labels, mutual matching keeps 3-34 true of
-  /// 50-110 matches on semreg-dev, one way 18-123 of 650-1300, which the pyramid sorts out.
+  // A pair of which a cloud's labels are not used: the keypoints are matched one way (each source
+  // keypoint's nearest target descriptor), at most this many; 0: as with labels (mutual nearest,
+  // correspondences.fpfh_max_per_class). Without labels, mutual matching keeps 3-34 true of
+  // 50-110 matches on semreg-dev, one way 18-123 of 650-1300, which the pyramid sorts out.
   int unlabelled_matches = 1500;
 
   template <class V>
@@ -154,16 +156,12 @@ struct FallbackParams {
 
 /// Landmark extraction, one entry per class.
 struct LandmarkParams {
-  /// Defaults: car, trunk, pole, traffic-sign (clusters); building (fpfh).
+  // Each field's meaning, unit and valid range: fields() below (docs/config.md).
   std::vector<ClassParams> classes;
-  /// Estimate each cloud's point spacing s and keep every class's parameters physical on it:
-  /// voxels never finer than s, cluster tolerances at least `tolerance_spacings` * s, and
-  /// minimum/maximum cluster sizes (counted in voxels of the configured size) rescaled to the
-  /// coarser voxel, so a downsampled cloud gives the landmarks of the full-resolution one.
   bool adapt_to_spacing = true;
-  double tolerance_spacings = 2.5;  ///< least cluster tolerance, in point spacings
-  int min_cluster_voxels = 3;       ///< rescaled minimum sizes never drop below this [voxels]
-  FallbackParams fallback;          ///< class-agnostic landmarks
+  double tolerance_spacings = 2.5;
+  int min_cluster_voxels = 3;
+  FallbackParams fallback;
 
   template <class V>
   static void fields(V&& v) {

@@ -65,54 +65,30 @@ inline const auto& enum_entries(CliqueBudget) {
 
 /// The densest-clique solver (CLIPPER relaxation) and the exact search.
 struct CliqueParams {
-  CliqueSolver solver = CliqueSolver::cascaded;  ///< solver
-  /// Relaxation on the k-core that can hold a clique at least as large as a greedy one (with
-  /// k = greedy size - 1), and never return less than the greedy clique. Off: the plain relaxation
-  /// on every vertex.
+  // Each field's meaning, unit and valid range: fields() below (docs/config.md).
+  CliqueSolver solver = CliqueSolver::cascaded;
   bool prune = true;
-  /// Binary affinity: before the relaxation, a bounded exact search (cascade_check_nodes) from the
-  /// lower bound (the previous level's clique grown, or greedy cliques on a cold level; on a dense
-  /// level first a colouring seeded by that clique); when it proves that clique maximum, the
-  /// relaxation is skipped: it could not return a larger one. Off: the relaxation always runs (the
-  /// paper's Alg. 1).
   bool prove_first = true;
-  /// prove_first applies to levels with at least this many edges: on smaller graphs the
-  /// relaxation costs well under a millisecond, and its choice among equal-size cliques is kept
   long prove_first_min_edges = 3000;
-  double tol_u = 1e-8;              ///< inner loop stops when |u_new - u| < tol_u
-  double tol_F = 1e-9;              ///< inner loop stops when the objective changes less
-  int max_inner_iterations = 200;   ///< gradient steps for one penalty d
-  int max_outer_iterations = 1000;  ///< penalty increases
-  double beta = 0.25;               ///< backtracking step reduction, in (0, 1)
-  int max_line_search = 99;         ///< backtracking steps per gradient step
-  double eps = 1e-9;                ///< numerical zero
-  double support_tol = 1e-6;        ///< entries below this fraction of the largest count as zero
-  std::uint64_t seed = 42;          ///< seed of the initial vector
-  double warm_start_mix = 0.05;     ///< cascaded: weight of the random start added to a warm start
-  /// cascaded: a warm-started level begins with this fraction of the previous level's final
-  /// penalty d (1: continue where the previous level stopped; 0: from d = 0).
+  double tol_u = 1e-8;
+  double tol_F = 1e-9;
+  int max_inner_iterations = 200;
+  int max_outer_iterations = 1000;
+  double beta = 0.25;
+  int max_line_search = 99;
+  double eps = 1e-9;
+  double support_tol = 1e-6;
+  std::uint64_t seed = 42;
+  double warm_start_mix = 0.05;
   double warm_start_penalty = 1.0;
-  long exact_max_nodes = 20000000;  ///< exact: branch-and-bound node budget (all levels)
-  /// exact: wall-time budget of the whole pyramid [ms]; a level may use what the levels before it
-  /// left of their share; 0: none
+  long exact_max_nodes = 20000000;
   double exact_time_budget_ms = 1000.0;
-  /// greedy cliques grown from the highest cores for the lower bound (prove_first's search on a
-  /// warm level starts from the previous level's clique grown instead; the relaxation still grows
-  /// them)
   int greedy_starts = 4;
-  int max_swaps = 64;  ///< improving swaps (one member out, two in) tried on the rounded clique
-  /// Wall time one registration may take up to the end of its clique step, counted from the start
-  /// of the run [ms]; the clique search gets what the stages before it left, and when it runs out
-  /// each unfinished level keeps the best clique found so far (budget "time"); 0: none
+  int max_swaps = 64;
   double pair_time_budget_ms = 10000.0;
-  /// cascaded: a warm-started level whose clique its check (a colouring, then the search of
-  /// cascade_check_nodes) does not prove maximum is also solved from the cold start (as the
-  /// independent solver does); the larger clique is kept
   bool cascade_fallback = true;
-  /// cascaded: node budget of the exact search for a larger clique that ends each warm-started
-  /// level (a warm start can settle in a worse local optimum than a cold one); 0: no search
   long cascade_check_nodes = 200000;
-  double max_step = 1e6;  ///< largest gradient step tried; beyond it a step only renormalises
+  double max_step = 1e6;
 
   template <class V>
   static void fields(V&& v) {
@@ -210,10 +186,10 @@ struct CliqueResult {
   double penalty = 0.0;       ///< final penalty d
   /// whether the clique is proven maximum on its level: the exact solver's search, or a cascaded
   /// level's search for a larger clique, finished within its budget
-  bool optimal = false;
+  bool proven = false;
   /// an upper bound on the level's clique number that the search reached (the clique's size when
   /// proven; 0 when no bound was computed)
-  int upper_bound = 0;
+  int clique_number_bound = 0;
   CliqueBudget budget = CliqueBudget::none;  ///< which budget cut a search short
   CliqueStart start = CliqueStart::cold;     ///< how the level's search started
   double time_ms = 0.0;                      ///< wall time [ms]
@@ -242,8 +218,8 @@ std::vector<double> random_start(int size, std::uint64_t seed);
 /// order), each solved by branch and bound on bitsets with greedy-colouring bounds, or, when it is
 /// near-complete, as a maximum independent set of its sparse complement. Anytime: when the node
 /// budget (`params.exact_max_nodes`) or the time budget (`params.exact_time_budget_ms`) runs out
-/// it returns the best clique so far with `optimal = false`, the bound reached in `upper_bound`
-/// and the budget in `budget`.
+/// it returns the best clique so far with `proven = false`, the bound reached in
+/// `clique_number_bound` and the budget in `budget`.
 CliqueResult exact_max_clique(const PyramidGraph& graph, int level, const CliqueParams& params);
 
 /// One clique per level, in level order, with the solver `params.solver` selects. After

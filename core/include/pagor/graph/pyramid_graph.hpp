@@ -32,12 +32,13 @@ inline const auto& enum_entries(AffinityKind) {
 
 /// The pyramid of consistency graphs.
 struct GraphParams {
-  TrimKind trim = TrimKind::ratio;  ///< TRIM kind
+  // Each field's meaning, unit and valid range: fields() below (docs/config.md).
+  TrimKind trim = TrimKind::ratio;
   std::vector<double> thresholds{0.02, 0.04, 0.08,
-                                 0.16};          ///< epsilon_1 < ... < epsilon_k [TRIM unit]
-  AffinityKind affinity = AffinityKind::binary;  ///< edge weights
-  double sigma_ratio = 0.5;  ///< gaussian: sigma as a fraction of the level's epsilon
-  double min_length = 0.5;   ///< pairs of landmarks closer than this are never consistent [m]
+                                 0.16};  ///< epsilon_1 < ... < epsilon_k [TRIM unit]
+  AffinityKind affinity = AffinityKind::binary;
+  double sigma_ratio = 0.5;
+  double min_length = 0.5;
 
   /// Most levels a pyramid may have.
   static constexpr std::size_t kMaxLevels = 32;

@@ -15,12 +15,13 @@ namespace pagor {
 /// The column detector: 2-D clusters of the projected scan whose extent and circle fit match a
 /// column.
 struct ColumnDetectorParams {
-  double cluster_tolerance = 0.15;  ///< max gap between points of one cluster [m]
-  double min_radius = 0.2;          ///< smallest fitted radius accepted [m]
-  double max_radius = 0.45;         ///< largest fitted radius accepted [m]
-  double max_rms = 0.03;            ///< largest RMS distance of the points to the fitted circle [m]
-  int min_points = 6;               ///< least points of a cluster (cells of the floor grid)
-  double min_arc_deg = 60.0;        ///< least angle the points cover around the centre [deg]
+  // Each field's meaning, unit and valid range: fields() below (docs/config.md).
+  double cluster_tolerance = 0.15;
+  double min_radius = 0.2;
+  double max_radius = 0.45;
+  double max_rms = 0.03;
+  int min_points = 6;
+  double min_arc_deg = 60.0;
 
   template <class V>
   static void fields(V&& v) {

@@ -18,14 +18,13 @@ namespace pagor {
 /// and the scan is projected to the floor plane with its columns found. Applies when a pair's
 /// target is a floor plan (`.json` or `.svg`).
 struct IndoorParams {
-  double plan_spacing = 0.05;  ///< sampling of plan walls and column outlines [m]
-  double height_min = -0.3;    ///< scan points lower than this (scan frame, z up) are left out [m]
-  double height_max = 1.9;     ///< scan points higher than this are left out [m]
-  double floor_voxel = 0.05;   ///< 2-D grid of the projected scan [m]
-  /// Find columns with the detector; false: take them from the scan's labels (`indoor` ids,
-  /// column 2), fitting a circle to each labelled cluster.
+  // Each field's meaning, unit and valid range: fields() below (docs/config.md).
+  double plan_spacing = 0.05;
+  double height_min = -0.3;
+  double height_max = 1.9;
+  double floor_voxel = 0.05;
   bool detect_columns = true;
-  ColumnDetectorParams columns;  ///< the detector
+  ColumnDetectorParams columns;
 
   template <class V>
   static void fields(V&& v) {

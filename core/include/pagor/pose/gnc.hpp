@@ -42,13 +42,12 @@ inline int minimal_sample_size(PoseModel model) {
 
 /// GNC with a truncated least-squares cost.
 struct GncParams {
-  PoseModel model = PoseModel::se3;  ///< pose model (the presets set their own)
-  double noise_bound = 1.0;          ///< TLS truncation: residuals beyond are outliers [m]
-  double mu_factor = 1.4;            ///< GNC continuation factor, > 1
-  int max_iterations = 100;          ///< GNC iterations
-  double cost_tolerance = 1e-6;      ///< stop when the TLS cost changes less [m^2]
-  /// automatic, with clouds: both scans' ground within this angle of level makes the pair
-  /// gravity-aligned, and its poses 4-DoF (gravity.hpp) [deg]
+  // Each field's meaning, unit and valid range: fields() below (docs/config.md).
+  PoseModel model = PoseModel::se3;
+  double noise_bound = 1.0;
+  double mu_factor = 1.4;
+  int max_iterations = 100;
+  double cost_tolerance = 1e-6;
   double level_tolerance = 5.0;
 
   template <class V>

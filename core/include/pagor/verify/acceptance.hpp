@@ -9,8 +9,9 @@
 ///   points count only for a flat cloud: under 1 % of them off the ground, a floor projection);
 /// - inliers: how many correspondences of the selected clique agree with the pose (GNC inliers);
 /// - margin: how much better the selected D is than the best *distinct* candidate (one that
-///   differs from the selection by more than the success criterion), as a fraction of the largest
-///   possible D (mu times the number of source points); 1 when there is no distinct candidate.
+///   differs from the selection by more than distinct_translation or distinct_rotation), as a
+///   fraction of the largest possible D (mu times the number of source points); 1 when there is no
+///   distinct candidate.
 /// - sharpness: how much of the overlap is lost when the pose is moved by the success criterion's
 ///   translation along each horizontal axis (a true alignment is a sharp peak).
 /// - ambiguity: whether a distinct alternative fits the clouds as well: of the structure points on
@@ -36,31 +37,29 @@ namespace pagor {
 
 /// Whether the selected pose is trusted.
 struct AcceptanceParams {
-  double inlier_distance = 0.5;   ///< a verification point counts as aligned within this [m]
-  double ground_thickness = 0.4;  ///< points this far above the ground layer are structure [m]
-  /// least fraction of structure points aligned, in [0, 1]; calibrated on the shared data with
-  /// refinement on: true pairs 0.27-0.61, scans that share nothing 0.03-0.20
+  // Each field's meaning, unit and valid range: fields() below (docs/config.md).
+  double inlier_distance = 0.5;
+  double ground_thickness = 0.4;
+  // least fraction of structure points aligned, in [0, 1]; calibrated on the shared data with
+  // refinement on: true pairs 0.27-0.61, scans that share nothing 0.03-0.20
   double min_overlap = 0.24;
-  int min_inliers = 2;  ///< least GNC inliers of the selected candidate
-  /// least overlap when the pose rests on the minimal number of inliers (2 for 4-DoF and SE(2),
-  /// 3 for SE(3)): such a pose has no redundant support, so the clouds must say more
+  int min_inliers = 2;
   double minimal_support_overlap = 0.3;
-  /// least D margin to a distinct candidate, fraction of mu * points; calibrated on the shared
-  /// data: true pairs 0.18-1 (1: no distinct candidate), scans that share nothing 0.02-0.05
+  // least D margin to a distinct candidate, fraction of mu * points; calibrated on the shared
+  // data: true pairs 0.18-1 (1: no distinct candidate), scans that share nothing 0.02-0.05
   double min_margin = 0.1;
-  /// least sharpness: the share of the overlap a shift of the success criterion's translation
-  /// along a horizontal axis loses (Acceptance::sharpness). Measured with refinement on: right
-  /// poses 0.17-0.55 (KITTI 0.36-0.43, semreg-dev with and without labels 0.17-0.55); wrong poses
-  /// that reach the overlap threshold 0.01-0.07 (a street that slides along itself, hedges)
+  // least sharpness: the share of the overlap a shift of distinct_translation
+  // along a horizontal axis loses (Acceptance::sharpness). Measured with refinement on: right
+  // poses 0.17-0.55 (KITTI 0.36-0.43, semreg-dev with and without labels 0.17-0.55); wrong poses
+  // that reach the overlap threshold 0.01-0.07 (a street that slides along itself, hedges)
   double min_sharpness = 0.1;
-  /// largest ambiguity ratio accepted (Acceptance::ambiguity: points only the best distinct
-  /// alternative aligns + 10, over points only the selected pose aligns + 10); above it the
-  /// verdict is "ambiguous", naming the alternative. 10 or more turns the test off (nothing is
-  /// searched). Calibrated in bench/README.md ("Issue 33: ambiguity in the verdict")
   double max_ambiguity = 0.55;
-  /// furthest shift searched for a repetition along each principal axis [m] (and no further than
-  /// the target's structure reaches)
   double ambiguity_range = 40.0;
+  double distinct_translation = 2.0;
+  double distinct_rotation = 5.0;
+
+  /// What the verdict counts as another answer: poses apart by more than this.
+  EvaluationParams distinct() const { return {distinct_translation, distinct_rotation}; }
 
   template <class V>
   static void fields(V&& v) {
@@ -82,7 +81,7 @@ struct AcceptanceParams {
        Range::closed(0, 1)});
     v(&AcceptanceParams::min_sharpness,
       {"min_sharpness",
-       "The least share of the overlap lost when the pose is moved by the success criterion's "
+       "The least share of the overlap lost when the pose is moved by distinct_translation "
        "translation along a horizontal axis.",
        "", Range::closed(-1000, 1)});
     v(&AcceptanceParams::min_margin,
@@ -95,6 +94,14 @@ struct AcceptanceParams {
        "pose turned 180 degrees, moved by a repetition of the scene) to points only the selected "
        "pose aligns, 10 added to each; 10 or more: off.",
        "", Range::closed(0, 1e6)});
+    v(&AcceptanceParams::distinct_translation,
+      {"distinct_translation",
+       "Two poses farther apart than this are distinct answers: the margin's runner-up, the "
+       "sharpness test's shift and the ambiguity's alternatives.",
+       "m", Range::above(0, 1e6)});
+    v(&AcceptanceParams::distinct_rotation,
+      {"distinct_rotation", "Two poses turned further apart than this are distinct answers.", "deg",
+       Range::above(0, 180)});
     v(&AcceptanceParams::ambiguity_range,
       {"ambiguity_range", "The furthest shift searched for a repetition along each principal axis.",
        "m", Range::closed(0, 1e4)});
@@ -136,7 +143,7 @@ struct Acceptance {
   double overlap = 0.0;  ///< fraction of source points within inlier_distance, in [0, 1]
   int inliers = 0;       ///< GNC inliers of the selected candidate
   double margin = 0.0;   ///< D margin to the best distinct candidate, fraction of mu * points
-  /// 1 - (best overlap of the pose moved by the success criterion's translation along +-x, +-y)
+  /// 1 - (best overlap of the pose moved by distinct_translation along +-x, +-y)
   /// / overlap: near 1 for an alignment of distinct structure, near 0 (or below) for one that
   /// slides along itself or aligns what matches anywhere
   double sharpness = 0.0;
@@ -157,7 +164,6 @@ struct Acceptance {
 Acceptance judge_selection(const Verifier& verifier, const std::vector<PoseEstimate>& candidates,
                            const VerificationResult& verification,
                            const VerificationParams& verification_params,
-                           const EvaluationParams& distinct, const AcceptanceParams& params,
-                           PoseModel model);
+                           const AcceptanceParams& params, PoseModel model);
 
 }  // namespace pagor

@@ -152,7 +152,8 @@ std::vector<float> point_contributions(const Verifier& verifier, const Transform
 /// The diagnosis as one JSON object (the `diagnosis` field of pagor.register/1): verdict,
 /// explanation, at_fault_level, residual_tolerance_m, true_correspondences, best_achievable,
 /// classes[], levels[] (each with origin {landmark, matcher: {clique, clique_true}}), verification
-/// {gt_score_D, candidates_D[], selected, score_misled}.
+/// {gt_score_D, candidates_D[], selected, score_misled}, alternative_right (the acceptance's
+/// best distinct alternative is right while the selected pose is not).
 std::string diagnosis_json(const Diagnosis& diagnosis, int indent = -1);
 
 }  // namespace pagor

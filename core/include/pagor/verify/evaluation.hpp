@@ -9,8 +9,9 @@ namespace pagor {
 
 /// Success criterion against ground truth.
 struct EvaluationParams {
-  double max_translation_error = 2.0;  ///< [m]
-  double max_rotation_error = 5.0;     ///< [deg]
+  // Each field's meaning, unit and valid range: fields() below (docs/config.md).
+  double max_translation_error = 2.0;
+  double max_rotation_error = 5.0;
 
   template <class V>
   static void fields(V&& v) {

@@ -10,27 +10,24 @@
 #include <string>
 #include <vector>
 
-#include "pagor/util/fields.hpp"
 #include "pagor/types.hpp"
+#include "pagor/util/fields.hpp"
 #include "pagor/verify/verification.hpp"
 
 namespace pagor {
 
 /// Optional fine alignment of the selected pose on the metric clouds.
 struct RefinementParams {
-  bool enabled = true;      ///< refine the selected pose (kept only when it lowers D)
-  int max_iterations = 20;  ///< ICP iterations at most
-  int max_points = 1000;    ///< source points used, spread evenly over the verification's cloud
-  /// pairing distance of the first iteration [m]; it shrinks linearly to `min_distance` over the
-  /// first half of the iterations
+  // Each field's meaning, unit and valid range: fields() below (docs/config.md).
+  bool enabled = true;
+  int max_iterations = 20;
+  int max_points = 1000;
   double max_distance = 1.0;
-  double min_distance = 0.3;     ///< pairing distance of the later iterations [m]
-  double robust_scale = 0.2;     ///< Cauchy scale of the point-to-plane residuals [m]
-  double normal_radius = 1.0;    ///< neighbourhood of the target normals [m]
-  double max_translation = 2.0;  ///< a refinement moving the pose farther is rejected [m]
-  double max_rotation = 5.0;     ///< or turning it more [deg]
-  /// refine roll and pitch too when the pose model holds them level (4-DoF): two scans of a
-  /// ground vehicle are level only to a few degrees. SE(2) poses stay planar.
+  double min_distance = 0.3;
+  double robust_scale = 0.2;
+  double normal_radius = 1.0;
+  double max_translation = 2.0;
+  double max_rotation = 5.0;
   bool free_roll_pitch = true;
 
   template <class V>
@@ -85,7 +82,7 @@ struct RefinementResult {
   /// When applied: per verification source point, its distance under the refined pose to the
   /// nearest target point [m], +infinity beyond mu (what score_after summed). Empty otherwise.
   std::vector<float> distances_after;
-  std::string reason;                          ///< why it was not applied; empty if applied
+  std::string reason;  ///< why it was not applied; empty if applied
 };
 
 /// Refines poses against one verifier's clouds. The normal of a downsampled target point (from

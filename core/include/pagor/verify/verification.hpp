@@ -33,9 +33,10 @@ inline const auto& enum_entries(ScoreKind) {
 
 /// Geometric verification on the metric clouds.
 struct VerificationParams {
-  double voxel_size = 0.5;                 ///< downsampling of both clouds [m]; 0 = none
-  double mu = 1.0;                         ///< truncation distance [m]
-  ScoreKind score = ScoreKind::truncated;  ///< scoring
+  // Each field's meaning, unit and valid range: fields() below (docs/config.md).
+  double voxel_size = 0.5;
+  double mu = 1.0;
+  ScoreKind score = ScoreKind::truncated;
 
   template <class V>
   static void fields(V&& v) {

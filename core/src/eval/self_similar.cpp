@@ -1,4 +1,4 @@
-#include "pagor/sets/self_similar.hpp"
+#include "pagor/eval/self_similar.hpp"
 
 #include <Eigen/Geometry>
 #include <cmath>

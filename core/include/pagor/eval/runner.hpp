@@ -17,8 +17,8 @@
 #include <vector>
 
 #include "pagor/config.hpp"
-#include "pagor/sets/benchmark.hpp"
-#include "pagor/sets/pair_set.hpp"
+#include "pagor/eval/benchmark.hpp"
+#include "pagor/eval/pair_set.hpp"
 
 namespace pagor {
 

@@ -22,7 +22,7 @@
 #include <string>
 #include <vector>
 
-#include "pagor/sets/dataset.hpp"
+#include "pagor/eval/dataset.hpp"
 #include "pagor/types.hpp"
 
 namespace pagor {

@@ -1,14 +1,14 @@
-#include "pagor/sets/threshold_comparison.hpp"
+#include "pagor/eval/threshold_comparison.hpp"
 
 #include <algorithm>
 
-#include "pagor/sets/sweep.hpp"
+#include "pagor/eval/sweep.hpp"
 
 #include <cstdio>
 
 #include "pagor/errors.hpp"
+#include "pagor/eval/dataset.hpp"
 #include "pagor/pipeline.hpp"
-#include "pagor/sets/dataset.hpp"
 
 namespace pagor {
 namespace {

@@ -14,9 +14,9 @@
 #include <vector>
 
 #include "pagor/config.hpp"
-#include "pagor/sets/benchmark.hpp"
-#include "pagor/sets/pair_set.hpp"
-#include "pagor/sets/runner.hpp"
+#include "pagor/eval/benchmark.hpp"
+#include "pagor/eval/pair_set.hpp"
+#include "pagor/eval/runner.hpp"
 
 namespace pagor {
 

@@ -1,4 +1,4 @@
-#include "pagor/indoor/indoor_synthetic.hpp"
+#include "pagor/eval/indoor_synthetic.hpp"
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -7,9 +7,9 @@
 #include <filesystem>
 #include <limits>
 
-#include "pagor/io/atomic_file.hpp"
 #include "pagor/errors.hpp"
 #include "pagor/indoor/floor_projection.hpp"
+#include "pagor/io/atomic_file.hpp"
 #include "pagor/io/clouds.hpp"
 
 namespace pagor {

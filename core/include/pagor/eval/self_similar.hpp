@@ -19,7 +19,7 @@
 #include <string>
 #include <vector>
 
-#include "pagor/sets/synthetic.hpp"
+#include "pagor/eval/synthetic.hpp"
 #include "pagor/types.hpp"
 
 namespace pagor {

@@ -1,11 +1,11 @@
-#include "pagor/sets/dataset.hpp"
+#include "pagor/eval/dataset.hpp"
 
 #include "pagor/errors.hpp"
+#include "pagor/eval/pair_set.hpp"
+#include "pagor/eval/synthetic.hpp"
 #include "pagor/indoor/floor_plan.hpp"
 #include "pagor/indoor/floor_projection.hpp"
 #include "pagor/io/kitti.hpp"
-#include "pagor/sets/pair_set.hpp"
-#include "pagor/sets/synthetic.hpp"
 
 namespace pagor {
 

@@ -8,8 +8,8 @@
 #include <sstream>
 
 #include "pagor/errors.hpp"
-#include "pagor/sets/runner.hpp"
-#include "pagor/sets/sweep.hpp"
+#include "pagor/eval/runner.hpp"
+#include "pagor/eval/sweep.hpp"
 #include "support/test_util.hpp"
 
 using namespace pagor;

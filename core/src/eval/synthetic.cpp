@@ -1,4 +1,4 @@
-#include "pagor/sets/synthetic.hpp"
+#include "pagor/eval/synthetic.hpp"
 
 #include <Eigen/Geometry>
 #include <cmath>

@@ -4,9 +4,9 @@
 #include <catch2/catch.hpp>
 #include <fstream>
 
-#include "pagor/sets/benchmark.hpp"
-#include "pagor/indoor/indoor_synthetic.hpp"
-#include "pagor/sets/threshold_comparison.hpp"
+#include "pagor/eval/benchmark.hpp"
+#include "pagor/eval/indoor_synthetic.hpp"
+#include "pagor/eval/threshold_comparison.hpp"
 #include "support/test_util.hpp"
 
 using namespace pagor;

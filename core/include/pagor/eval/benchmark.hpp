@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
+#include "pagor/eval/pair_set.hpp"
 #include "pagor/pipeline.hpp"
 #include "pagor/registration.hpp"
-#include "pagor/sets/pair_set.hpp"
 
 namespace pagor {
 

@@ -1,4 +1,4 @@
-#include "pagor/sets/benchmark.hpp"
+#include "pagor/eval/benchmark.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -7,9 +7,9 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "io/json_input.hpp"
 #include "pagor/errors.hpp"
 #include "pagor/io/file_input.hpp"
+#include "pagor/io/json_input.hpp"
 #include "pagor/report.hpp"
 #include "pagor/verify/diagnosis.hpp"
 

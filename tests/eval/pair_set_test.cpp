@@ -3,7 +3,7 @@
 #include <fstream>
 
 #include "pagor/errors.hpp"
-#include "pagor/sets/pair_set.hpp"
+#include "pagor/eval/pair_set.hpp"
 #include "support/test_util.hpp"
 
 using namespace pagor;

@@ -1,4 +1,4 @@
-#include "pagor/sets/runner.hpp"
+#include "pagor/eval/runner.hpp"
 
 #include <algorithm>
 #include <chrono>

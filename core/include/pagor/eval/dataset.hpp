@@ -40,7 +40,7 @@ struct PairSource {
 /// A loaded pair.
 struct LoadedPair {
   LoadedCloud source, target;
-  std::string source_name, target_name;         ///< file paths or descriptions, for messages
+  std::string source_name, target_name;  ///< file paths or descriptions, for messages
   /// Ground truth when known, between the clouds' own frames (to_cloud_frames, clouds.hpp).
   std::optional<Transform> T_target_source_gt;
   /// Indoor pair: the floor plan the target was sampled from (its vector geometry, for drawing).

@@ -1,4 +1,4 @@
-#include "pagor/sets/sweep.hpp"
+#include "pagor/eval/sweep.hpp"
 
 #include <catch2/catch.hpp>
 

@@ -1,4 +1,4 @@
-#include "pagor/io/file_lock.hpp"
+#include "pagor/eval/file_lock.hpp"
 
 #include <fcntl.h>
 #include <sys/file.h>

@@ -7,7 +7,7 @@
 
 #include "pagor/pipeline.hpp"
 
-#include "pagor/sets/self_similar.hpp"
+#include "pagor/eval/self_similar.hpp"
 #include "pagor/verify/evaluation.hpp"
 #include "pagor/verify/verification.hpp"
 

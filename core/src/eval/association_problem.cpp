@@ -1,4 +1,4 @@
-#include "pagor/sets/association_problem.hpp"
+#include "pagor/eval/association_problem.hpp"
 
 #include "util/random_draw.hpp"
 

@@ -1,4 +1,4 @@
-#include "pagor/sets/pair_set.hpp"
+#include "pagor/eval/pair_set.hpp"
 
 #include <Eigen/LU>
 #include <algorithm>
@@ -204,10 +204,11 @@ PairSet read_pair_manifest(const std::string& path) {
     const std::vector<ManifestWord> words = manifest_words(line, where);
     if (words.empty()) continue;
     if (words.size() < 2 || words[0].eq != std::string::npos || words[1].eq != std::string::npos)
-      throw InputError(where +
-                       ": expected 'SOURCE TARGET [gt=FILE] [source_labels=FILE] "
-                       "[target_labels=FILE] [scheme=NAME] [name=TEXT] [overlap=no]' (quote a path with "
-                       "spaces: \"my scan.pcd\")");
+      throw InputError(
+          where +
+          ": expected 'SOURCE TARGET [gt=FILE] [source_labels=FILE] "
+          "[target_labels=FILE] [scheme=NAME] [name=TEXT] [overlap=no]' (quote a path with "
+          "spaces: \"my scan.pcd\")");
     PairEntry e = manifest_entry(path, words, where);
     e.name = e.name.empty() ? std::to_string(line_no) : e.name;
     if (const auto [it, fresh] = name_line.emplace(e.name, line_no); !fresh)
