@@ -286,15 +286,21 @@ TEST_CASE("sweep line plots: success and one pair's D against mu, none for mixed
     o.name = "p";
     o.loaded = o.has_ground_truth = true;
     o.success = s.config.verification.mu > 0.7;
+    o.accepted = o.success;
     o.score = 100 * s.config.verification.mu;
     SweepSettingResult sr{s, {o}, summarize({o}), 0.0};
     r.settings.push_back(sr);
   }
   const studio::Plot line = studio::sweep_line_plot(r);
-  REQUIRE(line.series.size() == 2);
+  REQUIRE(line.series.size() == 4);  // success, upper bound, verdict precision and recall
   CHECK(line.x_unit == "m");
   CHECK(line.series[0].x == std::vector<double>{0.5, 1.0});
   CHECK(line.series[0].y == std::vector<double>{0, 100});
+  CHECK(line.series[2].label == "verdict precision");
+  CHECK(line.series[3].label == "verdict recall");
+  CHECK(std::isnan(line.series[2].y[0]));  // nothing accepted: undefined, not 0 %
+  CHECK(line.series[2].y[1] == 100);
+  CHECK(line.series[3].y[1] == 100);
   const studio::Plot pair = studio::sweep_pair_plot(r, 0);
   REQUIRE(pair.series.size() == 2);
   CHECK(pair.series[0].x == std::vector<double>{1.0});   // success

@@ -158,12 +158,11 @@ void settings_table(AppState& state, const SweepResult& r, StudioActions& action
   // The figures' columns as wide as their text; the setting (two parameters' values in a 2-D
   // sweep) takes the rest and wraps, so the last column is never cut.
   if (!ImGui::BeginTable(
-          "##sweep_rows", 8,
+          "##sweep_rows", 6,
           ImGuiTableFlags_RowBg | ImGuiTableFlags_Borders | ImGuiTableFlags_SizingFixedFit))
     return;
   ImGui::TableSetupColumn("setting", ImGuiTableColumnFlags_WidthStretch);
-  for (const char* c : {"success", "upper bound", "verdict precision", "verdict recall",
-                        "wrong accepted", "mean time [ms]", ""})
+  for (const char* c : {"success", "upper bound", "prec./recall/wrong", "mean time [ms]", ""})
     ImGui::TableSetupColumn(c, ImGuiTableColumnFlags_WidthFixed);
   ImGui::TableHeadersRow();
   for (std::size_t k = 0; k < r.settings.size(); ++k) {
@@ -179,12 +178,10 @@ void settings_table(AppState& state, const SweepResult& r, StudioActions& action
     ui::figure(ui::format("%d/%d (%s)", m.upper_bound, m.with_truth,
                           rate_text(m.upper_bound_rate()).c_str()));
     ImGui::TableNextColumn();
-    ui::figure(rate_text(m.precision()));
-    ImGui::TableNextColumn();
-    ui::figure(rate_text(m.recall()));
-    ImGui::TableNextColumn();
-    // The one outcome a loop-closing user cannot afford, in red when it happened.
-    ui::figure(std::to_string(m.false_accepts), m.false_accepts > 0 ? kRed : ImVec4(0, 0, 0, 0));
+    // Precision beside recall, and the wrong accepts a loop-closing user cannot afford (in red).
+    ui::figure(ui::format("%s / %s / %d", rate_text(m.precision()).c_str(),
+                          rate_text(m.recall()).c_str(), m.false_accepts),
+               m.false_accepts > 0 ? kRed : ImVec4(0, 0, 0, 0));
     ImGui::TableNextColumn();
     ui::figure(ui::timing("%.0f", m.mean_total_ms));
     ImGui::TableNextColumn();
@@ -200,6 +197,10 @@ void settings_table(AppState& state, const SweepResult& r, StudioActions& action
     }
   }
   ImGui::EndTable();
+  ui::figure(
+      "prec.: accepted pairs whose pose is right; recall: right poses that were accepted; wrong: "
+      "poses accepted although wrong (or negatives)",
+      ImGui::GetStyle().Colors[ImGuiCol_TextDisabled], true);
 }
 
 void run_controls(AppState& state, BenchWorker& bench, const BenchStatus& st,
