@@ -8,6 +8,7 @@
 
 #include "pagor/errors.hpp"
 #include "pagor/io/atomic_file.hpp"
+#include "pagor/report.hpp"  // matrix_json: a transform as the report writes it
 #include "pagor/verify/evaluation.hpp"
 #include "widgets/widgets.hpp"
 
@@ -17,12 +18,6 @@ namespace {
 // A number as CSV: shortest exact text; an undefined one (NaN, +-inf) is an empty cell.
 std::string cell(double v) {
   return std::isfinite(v) ? nlohmann::json(v).dump() : std::string();
-}
-
-nlohmann::json matrix_json(const Transform& T) {
-  nlohmann::json rows = nlohmann::json::array();
-  for (int r = 0; r < 4; ++r) rows.push_back({T(r, 0), T(r, 1), T(r, 2), T(r, 3)});
-  return rows;
 }
 
 }  // namespace
@@ -95,8 +90,8 @@ std::string diagnosis_csv(const Diagnosis& d) {
 bool result_button(const char* label, const char* tip, const std::string& stale_reason) {
   if (stale_reason.empty()) return ui::small_button(label, tip);
   ImGui::BeginDisabled();
-  const std::string why = std::string(tip) +
-                          "\nDisabled: the result shown is stale (" + stale_reason +
+  const std::string why = std::string(tip) + "\nDisabled: the result shown is stale (" +
+                          stale_reason +
                           "); it would export the earlier run's. Wait for the run to finish.";
   ui::small_button(label, why.c_str());
   ImGui::EndDisabled();

@@ -8,6 +8,7 @@
 #include "pagor/io/file_input.hpp"
 #include "pagor/io/json_input.hpp"
 #include "pagor/io/kitti.hpp"
+#include "pagor/report.hpp"  // matrix_json: a transform as the report writes it
 #include "render/headless.hpp"
 #include "state/app_state.hpp"
 #include "state/session_json.hpp"
@@ -52,12 +53,6 @@ json diagnosis_view_json(const DiagnosisView& d) {
           {"truth", truth_name(d.truth)},
           {"edges_on_hover", d.edges_on_hover},
           {"contribution", contribution_name(d.contribution)}};
-}
-
-json matrix_json(const Transform& T) {
-  json rows = json::array();
-  for (int r = 0; r < 4; ++r) rows.push_back({T(r, 0), T(r, 1), T(r, 2), T(r, 3)});
-  return rows;
 }
 
 json data_json(const PairSource& d, const std::optional<Transform>& inline_truth) {
