@@ -2,7 +2,7 @@
 # Runs one libFuzzer target for a bounded time with its seed corpus (the committed seeds in
 # fuzz/corpus/<target> plus the matching files of ../shared/data), and prints its final stats.
 # usage: fuzz/run.sh BUILD_DIR TARGET SECONDS
-#   (TARGET: pcd ply lzf config kitti_text floor_plan manifest session)
+#   (TARGET: pcd ply lzf config kitti_text floor_plan manifest correspondences session)
 # BUILD_DIR must be configured with clang and -DPAGOR_FUZZ=ON -DPAGOR_SANITIZE=ON (see README).
 # Exit status is non-zero when the fuzzer found a crash, a leak, a timeout or an out-of-memory;
 # the input is then in BUILD_DIR/fuzz-artifacts/.
@@ -20,6 +20,10 @@ if [ -d "$shared" ]; then
          # One real cloud, cut to its header and first 64 points (the fuzzer explores the rest).
          f="$shared/semreg-dev/03/source.pcd"
          [ -f "$f" ] && head -c $((153 + 64 * 16)) "$f" >"$corpus/semreg-03-head.pcd" ;;
+    correspondences)  # the first 40 lines of two learned-matcher problems
+      for f in "$shared"/gedi-dev/03.txt "$shared"/gedi-dev/08.txt; do
+        [ -f "$f" ] && head -n 40 "$f" >"$corpus/gedi-$(basename "$f")"
+      done ;;
     ply) cp -n "$shared"/bad-inputs/*.ply "$corpus/" 2>/dev/null || true ;;
     config) cp -n "$shared"/bad-inputs/cfg_*.json "$corpus/" 2>/dev/null || true ;;
     session) cp -n "$shared"/bad-inputs/session_*.json "$here"/../tests/studio/*.json "$corpus/" \

@@ -281,7 +281,7 @@ TEST_CASE("gedi-dev: a warm start that loses to the cold one falls back to it, a
 }
 #endif
 
-#if defined(PAGOR_GEDI_DIR) && defined(PAGOR_SEMREG_DIR)
+#if defined(PAGOR_GEDI_DIR) && defined(PAGOR_HAVE_SEMREG_DATA)
 // Pair 08: 730 correspondences of which 57 true; the matcher alone misses it, the landmarks of
 // its class-poor clouds are few. Fused, both take part in the selected clique and the pose is
 // right.

@@ -86,7 +86,7 @@ TEST_CASE("an unlabelled pair runs on class-agnostic landmarks instead of being 
 }
 #endif
 
-#if defined(PAGOR_GEDI_DIR) && defined(PAGOR_SEMREG_DIR)
+#if defined(PAGOR_GEDI_DIR) && defined(PAGOR_HAVE_SEMREG_DATA)
 TEST_CASE("a matcher's correspondences replace the landmark ones, or join them when fused") {
   Worker worker;
   PairSource d;
