@@ -34,8 +34,7 @@ void print_row(const PairOutcome& o) {
   if (o.timed) std::snprintf(time, sizeof(time), "%.1f", o.total_ms);
   const char* diagnosis = o.diagnosis.empty() ? "-" : o.diagnosis.c_str();
   // The one outcome a loop-closing user cannot afford: marked, in red on a terminal.
-  const bool wrong = o.accepted && (o.negative || (o.has_ground_truth && !o.success));
-  const std::string mark = !wrong                   ? ""
+  const std::string mark = !o.accepted_wrong()     ? ""
                            : isatty(fileno(stdout)) ? "  \033[1;31m<- WRONG POSE ACCEPTED\033[0m"
                                                     : "  <- WRONG POSE ACCEPTED";
   if (o.error)

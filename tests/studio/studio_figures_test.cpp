@@ -195,9 +195,9 @@ TEST_CASE("5: the levels' D gap and the acceptance margin are named apart, each 
     const auto& best = snap->levels[static_cast<std::size_t>(m->best_level)];
     double runner = HUGE_VAL;
     for (const auto& l : snap->levels)
-      if (l.pose.valid && std::isfinite(l.score) &&
+      if (l.pose.valid && std::isfinite(l.score_D) &&
           !studio::same_pose(l.pose.T_target_source, best.pose.T_target_source))
-        runner = std::min(runner, l.score);
+        runner = std::min(runner, l.score_D);
     if (std::isfinite(runner))
       CHECK(gaps[0].find(studio::with_unit(runner - m->best, "m")) != std::string::npos);
   }

@@ -64,7 +64,7 @@ void check_same(const studio::Snapshot& s, const Pipeline& p) {
     CHECK(s.levels[l].clique == p.cliques()[l].vertices);
     // How each level's search ended, as the CLI reports it (proven, bound, budget, start).
     CHECK(s.levels[l].clique_proven == p.cliques()[l].proven);
-    CHECK(s.levels[l].clique_upper_bound == p.cliques()[l].clique_number_bound);
+    CHECK(s.levels[l].clique_number_bound == p.cliques()[l].clique_number_bound);
     CHECK(s.levels[l].clique_budget == p.cliques()[l].budget);
     CHECK(s.levels[l].clique_start == p.cliques()[l].start);
     CHECK(s.levels[l].pose.T_target_source.isApprox(p.poses()[l].T_target_source, 1e-12));

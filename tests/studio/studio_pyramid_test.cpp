@@ -28,7 +28,7 @@ Transform moved(double x, double yaw_rad = 0.0) {
 studio::LevelView level(double epsilon, double score, const Transform& T, bool valid = true) {
   studio::LevelView l;
   l.epsilon = epsilon;
-  l.score = valid ? score : HUGE_VAL;
+  l.score_D = valid ? score : HUGE_VAL;
   l.pose.valid = valid;
   l.pose.T_target_source = T;
   return l;

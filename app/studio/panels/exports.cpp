@@ -53,7 +53,7 @@ std::string levels_csv(const Snapshot& s) {
     const LevelView& l = s.levels[i];
     out += std::to_string(i) + "," + (static_cast<int>(i) == s.selected ? "1" : "0") + "," +
            cell(l.epsilon) + "," + std::to_string(l.vertices) + "," + std::to_string(l.edges) +
-           "," + std::to_string(l.clique.size()) + "," + cell(l.pose.valid ? l.score : NAN) + ",";
+           "," + std::to_string(l.clique.size()) + "," + cell(l.pose.valid ? l.score_D : NAN) + ",";
     out += l.error ? cell(l.error->translation) + "," + cell(l.error->rotation_deg) + "," +
                          (l.error->success ? "1" : "0")
                    : std::string(",,");

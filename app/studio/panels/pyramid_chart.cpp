@@ -82,15 +82,15 @@ std::string level_gap_text(const Snapshot& s) {
   int runner = -1;
   for (std::size_t i = 0; i < s.levels.size(); ++i) {
     const LevelView& l = s.levels[i];
-    if (static_cast<int>(i) == m->best_level || !l.pose.valid || !std::isfinite(l.score)) continue;
+    if (static_cast<int>(i) == m->best_level || !l.pose.valid || !std::isfinite(l.score_D)) continue;
     if (same_pose(l.pose.T_target_source, best))
       same += (same.empty() ? "L" : ", L") + std::to_string(i);
-    else if (runner < 0 || l.score < s.levels[static_cast<std::size_t>(runner)].score)
+    else if (runner < 0 || l.score_D < s.levels[static_cast<std::size_t>(runner)].score_D)
       runner = static_cast<int>(i);
   }
   std::string t = "D gap to the runner-up pose: n/a (every valid level found the same pose)";
   if (runner >= 0) {
-    const double d = s.levels[static_cast<std::size_t>(runner)].score;
+    const double d = s.levels[static_cast<std::size_t>(runner)].score_D;
     // Three significant digits: a gap of half a metre is not "0 m".
     t = "D gap to the runner-up pose: " + with_unit(d - m->best, "m") +
         ui::format(" (L%d %.1f m, L%d %.1f m)", m->best_level, m->best, runner, d);
@@ -102,7 +102,7 @@ std::string level_gap_text(const Snapshot& s) {
 
 // Whether the verdict trusted a pose that the loaded ground truth calls wrong.
 bool accepted_wrong(const Snapshot& s) {
-  return s.acceptance.accepted && s.selected_error && !s.selected_error->success;
+  return wrong_pose_accepted(s.acceptance.accepted, s.selected_error);
 }
 
 // The verdict with every test it took, each with its value and threshold (test_text, as the CLI
@@ -137,7 +137,7 @@ void bar_chart(const Snapshot& s, int shown, const RunChanges& changes) {
   const int n = static_cast<int>(s.levels.size());
   double top = 0;
   for (const auto& l : s.levels)
-    if (l.pose.valid && std::isfinite(l.score)) top = std::max(top, l.score);
+    if (l.pose.valid && std::isfinite(l.score_D)) top = std::max(top, l.score_D);
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   const float width = ImGui::GetContentRegionAvail().x, label_h = 16.0f;
   const float height = std::clamp(
@@ -155,8 +155,8 @@ void bar_chart(const Snapshot& s, int shown, const RunChanges& changes) {
     const float x0 = origin.x + slot * i + slot * 0.15f,
                 x1 = origin.x + slot * (i + 1) - slot * 0.15f;
     char text[48];
-    if (l.pose.valid && std::isfinite(l.score) && top > 0) {
-      const float h = static_cast<float>(l.score / top) * (height - 18.0f);
+    if (l.pose.valid && std::isfinite(l.score_D) && top > 0) {
+      const float h = static_cast<float>(l.score_D / top) * (height - 18.0f);
       const ImU32 color = !l.error           ? IM_COL32(90, 130, 200, 255)
                           : l.error->success ? IM_COL32(80, 200, 110, 255)
                                              : IM_COL32(215, 80, 80, 255);
@@ -167,11 +167,11 @@ void bar_chart(const Snapshot& s, int shown, const RunChanges& changes) {
       const auto k = static_cast<std::size_t>(i);
       if (k < changes.levels.size() && changes.levels[k].d_delta &&
           std::abs(*changes.levels[k].d_delta) > 1e-9)
-        std::snprintf(text, sizeof(text), "%.0f (%+.0f)", l.score, *changes.levels[k].d_delta);
+        std::snprintf(text, sizeof(text), "%.0f (%+.0f)", l.score_D, *changes.levels[k].d_delta);
       else
-        std::snprintf(text, sizeof(text), "%.0f", l.score);
+        std::snprintf(text, sizeof(text), "%.0f", l.score_D);
       if (ImGui::CalcTextSize(text).x > slot * 0.95f)  // too narrow for the delta
-        std::snprintf(text, sizeof(text), "%.0f", l.score);
+        std::snprintf(text, sizeof(text), "%.0f", l.score_D);
       if (ImGui::CalcTextSize(text).x <= slot * stride * 0.95f && i % stride == 0)
         dl->AddText(ImVec2(x0, base - h - 15.0f), IM_COL32(220, 220, 220, 255), text);
     } else if (i % stride == 0) {

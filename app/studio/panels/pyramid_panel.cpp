@@ -53,8 +53,8 @@ std::string clique_search_text(const LevelView& l) {
   std::string out;
   if (l.clique_proven)
     out = "proven maximum";
-  else if (l.clique_upper_bound > static_cast<int>(l.clique.size()))
-    out = "not proven; bound " + std::to_string(l.clique_upper_bound);
+  else if (l.clique_number_bound > static_cast<int>(l.clique.size()))
+    out = "not proven; bound " + std::to_string(l.clique_number_bound);
   else
     out = "not proven (relaxation only)";
   if (l.clique_budget != CliqueBudget::none)
@@ -102,13 +102,13 @@ bool level_row(const Snapshot& s, int i, int shown, const RunChanges& changes) {
   ImGui::TableNextColumn();
   ImGui::Text("%zu", l.edges);
   ImGui::TableNextColumn();
-  if (l.clique_proven || l.clique_upper_bound <= static_cast<int>(l.clique.size()))
+  if (l.clique_proven || l.clique_number_bound <= static_cast<int>(l.clique.size()))
     ImGui::Text("%zu", l.clique.size());
   else  // not proven maximum: the bound the search reached
-    ImGui::Text("%zu (bound %d)", l.clique.size(), l.clique_upper_bound);
+    ImGui::Text("%zu (bound %d)", l.clique.size(), l.clique_number_bound);
   ImGui::TableNextColumn();
-  if (l.pose.valid && std::isfinite(l.score))
-    ImGui::Text("%.1f", l.score);
+  if (l.pose.valid && std::isfinite(l.score_D))
+    ImGui::Text("%.1f", l.score_D);
   else
     ImGui::TextColored(kDim, l.pose.valid ? "n/a" : "invalid");  // n/a: no clouds to score on
   ImGui::TableNextColumn();

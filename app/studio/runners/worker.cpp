@@ -250,24 +250,11 @@ std::shared_ptr<Snapshot> Worker::make_snapshot(std::uint64_t request) const {
   s->target_landmarks = p.target_landmarks();
   s->correspondences = p.correspondences().items;
   s->correspondences_capped = r.correspondences_capped;
-  for (const LevelSummary& l : r.levels) {
-    LevelView v;
-    v.epsilon = l.epsilon;
-    v.vertices = l.vertices;
-    v.edges = l.edges;
-    v.clique = l.clique;
-    v.clique_proven = l.clique_proven;
-    v.clique_upper_bound = l.clique_number_bound;
-    v.clique_budget = l.clique_budget;
-    v.clique_start = l.clique_start;
-    v.pose = l.pose;  // the studio draws the clouds in their own frames
-    if (v.pose.valid)
-      v.pose.T_target_source =
-          to_cloud_frames(v.pose.T_target_source, p.source().origin, p.target().origin);
-    v.score = l.score_D;
-    v.error = l.error;
-    s->levels.push_back(std::move(v));
-  }
+  s->levels = r.levels;
+  for (LevelView& l : s->levels)  // the studio draws the clouds in their own frames
+    if (l.pose.valid)
+      l.pose.T_target_source =
+          to_cloud_frames(l.pose.T_target_source, p.source().origin, p.target().origin);
   s->selected = r.selected_level;
   s->acceptance = r.acceptance;
   s->refinement = r.refinement;

@@ -16,24 +16,16 @@
 
 #include "pagor/eval/dataset.hpp"
 #include "pagor/pipeline.hpp"
+#include "pagor/registration.hpp"
 #include "pagor/util/kdtree.hpp"
 #include "pagor/verify/diagnosis.hpp"
 
 namespace pagor::studio {
 
-/// One pyramid level as the UI shows it.
-struct LevelView {
-  double epsilon = 0;
-  std::size_t vertices = 0, edges = 0;
-  std::vector<int> clique;     ///< correspondence indices
-  bool clique_proven = false;  ///< the clique is proven maximum on its level
-  int clique_upper_bound = 0;  ///< bound on the level's clique number the search reached
-  CliqueBudget clique_budget = CliqueBudget::none;  ///< which budget cut the search short
-  CliqueStart clique_start = CliqueStart::cold;     ///< how the level's search started
-  PoseEstimate pose;
-  double score = 0;  ///< D [m]; +inf when invalid
-  std::optional<PoseError> error;
-};
+/// One pyramid level as the UI shows it: the registration's summary of it, its candidate pose in
+/// the clouds' own frames (the studio draws them there; Registration's are the frames of the
+/// points as given).
+using LevelView = LevelSummary;
 
 /// Everything a finished run shows; immutable once published.
 struct Snapshot {

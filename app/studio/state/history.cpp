@@ -88,8 +88,8 @@ RunChanges compare_runs(const Snapshot& before, const Snapshot& after) {
       l.added = true;
     } else {
       const LevelView& b = *match;
-      if (b.pose.valid && a.pose.valid && std::isfinite(a.score) && std::isfinite(b.score))
-        l.d_delta = a.score - b.score;
+      if (b.pose.valid && a.pose.valid && std::isfinite(a.score_D) && std::isfinite(b.score_D))
+        l.d_delta = a.score_D - b.score_D;
       l.validity_flipped = b.pose.valid != a.pose.valid;
       l.success_flipped =
           b.error.has_value() && a.error.has_value() && b.error->success != a.error->success;
@@ -103,14 +103,14 @@ std::optional<ScoreMargin> score_margin(const Snapshot& s) {
   ScoreMargin m{HUGE_VAL, HUGE_VAL, -1, -1};
   for (std::size_t i = 0; i < s.levels.size(); ++i) {
     const LevelView& l = s.levels[i];
-    if (!l.pose.valid || !std::isfinite(l.score)) continue;
-    if (l.score < m.best) {
+    if (!l.pose.valid || !std::isfinite(l.score_D)) continue;
+    if (l.score_D < m.best) {
       m.second = m.best;
       m.second_level = m.best_level;
-      m.best = l.score;
+      m.best = l.score_D;
       m.best_level = static_cast<int>(i);
-    } else if (l.score < m.second) {
-      m.second = l.score;
+    } else if (l.score_D < m.second) {
+      m.second = l.score_D;
       m.second_level = static_cast<int>(i);
     }
   }
@@ -125,7 +125,7 @@ RunRecord summarize(const Snapshot& s, const RunChanges& changes) {
   r.levels = static_cast<int>(s.levels.size());
   r.selected = s.selected;
   if (s.selected >= 0 && s.selected < r.levels)
-    r.best_d = s.levels[static_cast<std::size_t>(s.selected)].score;
+    r.best_d = s.levels[static_cast<std::size_t>(s.selected)].score_D;
   if (const auto m = score_margin(s)) r.margin = m->second - m->best;
   if (s.selected_error) r.success = s.selected_error->success;
   for (std::size_t i = 0; i < s.stage_ms.size(); ++i)

@@ -74,6 +74,13 @@ struct ClassCount {
   std::size_t correspondences = 0;  ///< putative correspondences of the class
 };
 
+/// Whether a verdict that `accepted` a pose trusted a wrong one: its ground truth (`error`,
+/// nullopt without one) says the pose misses the criterion. Registration::accepted_wrong and the
+/// studio's verdict line both ask this.
+inline bool wrong_pose_accepted(bool accepted, const std::optional<PoseError>& error) {
+  return accepted && error && !error->success;
+}
+
 /// The result of one registration.
 struct Registration {
   std::string source_name, target_name;  ///< what the inputs are (files, descriptions)
@@ -122,7 +129,7 @@ struct Registration {
   bool succeeded() const { return error && error->success; }
   /// Whether a ground truth called an accepted pose wrong: the one outcome a loop-closing user
   /// cannot afford.
-  bool accepted_wrong() const { return accepted() && error && !error->success; }
+  bool accepted_wrong() const { return wrong_pose_accepted(accepted(), error); }
 };
 
 /// One acceptance test as a person reads it: "overlap 0.41 (at least 0.24)", "ambiguity 0.97 (at

@@ -152,10 +152,10 @@ BenchmarkSummary summarize(const std::vector<PairOutcome>& outcomes) {
     if (o.accepted && !o.negative && !o.has_ground_truth) ++s.accepted_unjudged;
     if (o.accepted && (o.negative || o.has_ground_truth)) {  // a verdict that can be judged
       ++s.accepted;
-      if (!o.negative && o.success)
-        ++s.true_accepts;
-      else
+      if (o.accepted_wrong())
         ++s.false_accepts;
+      else
+        ++s.true_accepts;
     }
     if (!o.diagnosis.empty()) {
       auto it = std::find_if(s.diagnoses.begin(), s.diagnoses.end(),

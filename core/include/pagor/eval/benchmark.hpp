@@ -46,6 +46,11 @@ struct PairOutcome {
   std::vector<double> level_epsilons;  ///< each level's TRIM threshold ([m] or a ratio, `trim`)
   std::optional<TrimKind> trim;        ///< the TRIM the thresholds are of (unknown: read from a
                                        ///< results file written before the line named it)
+
+  /// Whether the verdict trusted a pose it must not have: a negative accepted, or an accepted
+  /// pose its ground truth calls wrong (Registration::accepted_wrong, with negatives). What the
+  /// bench rows mark and the summaries count as false accepts.
+  bool accepted_wrong() const { return accepted && (negative || (has_ground_truth && !success)); }
 };
 
 /// Loads a pair and runs it through `pipeline` with the pipeline's configuration (and the pair's
