@@ -3,6 +3,7 @@
 
 #include <catch2/catch.hpp>
 #include <chrono>
+#include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <thread>
@@ -113,6 +114,173 @@ TEST_CASE("benchmark view: a sweep over the open set equals core run_sweep") {
   }
 }
 
+// The small manifest and a pair whose source file is empty (its row fails on its own account).
+PairSet set_with_broken_pair(const TempDir& tmp) {
+  PairSet set = read_pair_manifest(small_manifest(tmp));
+  PairEntry broken = set.pairs.front();
+  broken.name = "broken";
+  broken.source.source = tmp.file("empty.pcd");
+  std::ofstream(broken.source.source).flush();
+  set.pairs.insert(set.pairs.begin() + 1, broken);
+  return set;
+}
+
+// Rows of two runs agree on what a pair's outcome is (not on its times).
+void check_same_outcomes(const std::vector<studio::BenchRow>& got,
+                         const std::vector<studio::BenchRow>& want) {
+  REQUIRE(got.size() == want.size());
+  for (std::size_t i = 0; i < got.size(); ++i) {
+    const PairOutcome& g = got[i].outcome;
+    const PairOutcome& w = want[i].outcome;
+    INFO("row " << i << ", pair " << w.name);
+    CHECK(got[i].done);
+    CHECK(got[i].current);
+    CHECK(g.name == w.name);
+    CHECK(g.loaded == w.loaded);
+    CHECK(g.load_error == w.load_error);
+    CHECK(g.success == w.success);
+    CHECK(g.accepted == w.accepted);
+    CHECK(g.selected_level == w.selected_level);
+    CHECK(g.level_success == w.level_success);
+    CHECK(((std::isnan(g.score) && std::isnan(w.score)) || g.score == w.score));
+    REQUIRE(g.error.has_value() == w.error.has_value());
+    if (w.error) {
+      CHECK(g.error->translation == w.error->translation);
+      CHECK(g.error->rotation_deg == w.error->rotation_deg);
+    }
+  }
+}
+
+TEST_CASE("benchmark view: two jobs give the rows of one, also after a change mid-pass") {
+  TempDir tmp;
+  const PairSet set = set_with_broken_pair(tmp);
+  const Config a = semreg_config();
+  Config b = a;
+  b.verification.mu = 0.4;
+  studio::BenchWorker one;
+  one.open(set, a);
+  wait(one);
+  const std::vector<studio::BenchRow> rows_a = one.rows();
+  one.set_config(b);
+  wait(one);
+  const std::vector<studio::BenchRow> rows_b = one.rows();
+  CHECK(one.status().jobs == 1);
+  CHECK(rows_a[1].outcome.load_error.find("empty.pcd") != std::string::npos);
+  CHECK(rows_a[0].outcome.loaded);  // the broken pair fails its row only
+  CHECK(rows_a[2].outcome.loaded);
+
+  studio::BenchWorker two;
+  two.set_jobs(2);
+  two.open(set, a);
+  // The progress counts each pair once, in step with the rows that are done.
+  for (std::size_t seen = 0; !two.wait_idle(0.02);) {
+    const studio::BenchStatus st = two.status();
+    CHECK(static_cast<std::size_t>(st.done) >= seen);
+    CHECK(st.done <= st.total);
+    seen = static_cast<std::size_t>(st.done);
+  }
+  studio::BenchStatus st = two.status();
+  CHECK(st.jobs == 2);
+  CHECK(st.done == 3);
+  CHECK(st.pass_progress().done == 3);
+  CHECK(st.pass_progress().total == 3);
+  CHECK(st.pass_progress().seconds_left() == Approx(0.0));
+  CHECK(st.cached == 2);  // the broken pair has no pipeline to keep
+  check_same_outcomes(two.rows(), rows_a);
+  // A configuration change re-evaluates on both runners, each its kept pairs.
+  two.set_config(b);
+  wait(two);
+  check_same_outcomes(two.rows(), rows_b);
+  CHECK(two.status().cached == 2);
+  // A change while the pass runs (once a pair is done, unless the pass was quicker) cancels it;
+  // the rows are then those of the last configuration.
+  two.set_config(a);
+  while (two.status().done == 0 && !two.wait_idle(0.01)) {
+  }
+  two.set_config(b);
+  wait(two);
+  check_same_outcomes(two.rows(), rows_b);
+  CHECK(two.status().done == 3);
+}
+
+TEST_CASE("benchmark view: a sweep with two jobs equals core run_sweep with one") {
+  TempDir tmp;
+  const PairSet set = read_pair_manifest(small_manifest(tmp));
+  studio::BenchWorker worker;
+  worker.set_jobs(2);
+  worker.open(set, semreg_config());
+  SweepGrid grid;
+  grid.add("verification.mu", {0.5, 1.0});
+  const auto settings = sweep_settings(semreg_config(), grid);
+  worker.sweep(settings, semreg_config());
+  for (int i = 0; i < 6000 && (worker.status().sweeping || !worker.sweep_result()); ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  const auto record = worker.sweep_result();
+  REQUIRE(record);
+  CHECK(worker.status().sweep_done == worker.status().sweep_total);
+  CHECK(worker.status().sweep_total == 4);
+  const SweepResult want = run_sweep(set, settings);
+  const SweepResult& got = record->result;
+  REQUIRE(got.settings.size() == want.settings.size());
+  for (std::size_t k = 0; k < want.settings.size(); ++k) {
+    CHECK(got.settings[k].summary.successes == want.settings[k].summary.successes);
+    for (std::size_t p = 0; p < set.pairs.size(); ++p) {
+      const PairOutcome& g = got.settings[k].outcomes[p];
+      const PairOutcome& w = want.settings[k].outcomes[p];
+      CHECK(g.name == w.name);
+      CHECK(g.accepted == w.accepted);
+      CHECK(g.selected_level == w.selected_level);
+      CHECK(g.score == w.score);
+    }
+  }
+}
+
+TEST_CASE("benchmark view: cancel stops every job between pairs, and resume finishes") {
+  TempDir tmp;
+  const PairSet set = set_with_broken_pair(tmp);
+  studio::BenchWorker worker;
+  worker.set_jobs(2);
+  worker.open(set, semreg_config());
+  worker.cancel();  // before its first pair: no job runs one
+  for (int i = 0; i < 6000 && worker.status().busy; ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  studio::BenchStatus st = worker.status();
+  CHECK(st.cancelled);
+  CHECK(st.done == 0);
+  CHECK(st.error == "cancelled after 0 of 3 pairs");
+  for (const studio::BenchRow& r : worker.rows()) CHECK_FALSE(r.current);
+  // Cancelled once the first pair is done: the jobs stop after the pairs in progress (or the
+  // pass had finished), and the rows done are the count the status gives.
+  worker.rerun();
+  for (int i = 0; i < 60000 && worker.status().done == 0 && worker.status().busy; ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  worker.cancel();
+  for (int i = 0; i < 60000 && worker.status().busy; ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  st = worker.status();
+  CHECK_FALSE(st.busy);
+  int current = 0;
+  for (const studio::BenchRow& r : worker.rows()) current += r.current;
+  CHECK(current == st.done);
+  if (st.cancelled)
+    CHECK(st.done < st.total);
+  else
+    CHECK(st.done == st.total);
+  worker.rerun();
+  wait(worker);
+  CHECK(worker.status().done == 3);
+  CHECK_FALSE(worker.status().cancelled);
+  // A sweep cancelled on two jobs leaves no result.
+  SweepGrid grid;
+  grid.add("verification.mu", {0.5, 1.0, 2.0});
+  worker.sweep(sweep_settings(semreg_config(), grid), semreg_config());
+  worker.cancel();
+  for (int i = 0; i < 60000 && worker.status().sweeping; ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  CHECK_FALSE(worker.sweep_result());
+  CHECK(worker.status().sweep_error.rfind("the sweep was cancelled", 0) == 0);
+}
+
 TEST_CASE("plots: round ticks, CSV with units, and a PNG") {
   CHECK(studio::nice_ticks(0, 100) == std::vector<double>{0, 20, 40, 60, 80, 100});
   CHECK(studio::nice_ticks(0.013, 0.18).front() == Approx(0.0));
@@ -210,6 +378,27 @@ TEST_CASE("benchmark view: state saved and restored with the session") {
       << R"({"schema": "pagor.session/1", "benchmark": {"show": 9}})";
   CHECK_THROWS_WITH(studio::load_session(tmp.file("bad.json"), r),
                     Catch::Contains("benchmark") && Catch::Contains("show"));
+}
+
+TEST_CASE("benchmark view: jobs saved with the session, 1 when absent, checked when read") {
+  TempDir tmp;
+  studio::AppState s = synthetic_state(tmp);
+  s.bench.jobs = 3;
+  studio::save_session(s, tmp.file("s.json"));
+  CHECK(nlohmann::json::parse(std::ifstream(tmp.file("s.json")))["benchmark"]["jobs"] == 3);
+  studio::AppState r;
+  studio::load_session(tmp.file("s.json"), r);
+  CHECK(r.bench.jobs == 3);
+  std::ofstream(tmp.file("old.json")) << R"({"schema": "pagor.session/1", "benchmark": {}})";
+  studio::load_session(tmp.file("old.json"), r);
+  CHECK(r.bench.jobs == 1);
+  for (const char* bad : {"0", "1e9", "\"x\"", "65", "2.5"}) {
+    INFO("jobs: " << bad);
+    std::ofstream(tmp.file("bad.json"))
+        << R"({"schema": "pagor.session/1", "benchmark": {"jobs": )" << bad << "}}";
+    CHECK_THROWS_WITH(studio::load_session(tmp.file("bad.json"), r),
+                      Catch::Contains("benchmark.jobs"));
+  }
 }
 
 TEST_CASE("every widget of the benchmark view, driven") {

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 #include "pagor/errors.hpp"
 #include "pagor/io/atomic_file.hpp"
@@ -130,10 +131,39 @@ void source_controls(AppState& state, BenchWorker& bench, StudioActions& actions
     state.main_view = MainView::pair;
 }
 
+// "3/40 pairs, 1.90 pairs/s, 19 s left (running); 1.58 s with 2 jobs". The rate and the time
+// left are timings too: hidden ("--") in regression renders.
+std::string progress_line(const BenchStatus& st) {
+  const SetProgress p = st.pass_progress();
+  std::string text = ui::timings_shown()
+                         ? progress_text(p)
+                         : std::to_string(p.done) + "/" + std::to_string(p.total) + " pairs, " +
+                               ui::kHiddenTiming + " pairs/s, " + ui::kHiddenTiming + " s left";
+  text += st.busy ? " (running); " : "; ";
+  return text + ui::timing("%.2f s", st.pass_ms / 1000.0) + " with " + std::to_string(st.jobs) +
+         (st.jobs == 1 ? " job" : " jobs");
+}
+
+// The number of pairs evaluated at once, and a button for one per core.
+void jobs_controls(BenchViewState& v, BenchWorker& bench) {
+  ImGui::SetNextItemWidth(110);
+  if (ui::input_int("jobs##bench", &v.jobs, 1, kMaxBenchJobs, 1, true,
+                    "pairs evaluated at once, each on a runner of its own with its share of the "
+                    "budget (pagor bench --jobs); the rows are the same for any number, only the "
+                    "times differ. Takes effect at the next pass or sweep, which starts with empty "
+                    "caches"))
+    bench.set_jobs(v.jobs);
+  ImGui::SameLine();
+  const int cores = std::min(parse_jobs("auto", "jobs"), kMaxBenchJobs);
+  const std::string tip = "one job per core: " + std::to_string(cores) + " on this machine";
+  if (ui::button("all cores##bench_jobs", ImVec2(0, 0), tip.c_str())) {
+    v.jobs = cores;
+    bench.set_jobs(v.jobs);
+  }
+}
+
 void progress_and_cache(BenchViewState& v, BenchWorker& bench, const BenchStatus& st) {
-  char text[160];
-  std::snprintf(text, sizeof(text), "%d / %d pairs with these parameters%s, %s", st.done, st.total,
-                st.busy ? " (running)" : "", ui::timing("%.2f s", st.pass_ms / 1000.0).c_str());
+  const std::string text = progress_line(st);
   // Cancel while the pass runs; after a cancel, run the rest.
   if (st.busy) {
     if (ui::button("cancel##bench", ImVec2(0, 0),
@@ -146,7 +176,7 @@ void progress_and_cache(BenchViewState& v, BenchWorker& bench, const BenchStatus
       bench.rerun();
     ImGui::SameLine();
   }
-  ImGui::ProgressBar(st.total ? float(st.done) / st.total : 0.0f, ImVec2(-1, 0), text);
+  ImGui::ProgressBar(st.total ? float(st.done) / st.total : 0.0f, ImVec2(-1, 0), text.c_str());
   ImGui::Text("caches: %d of %d pairs kept, %.0f MiB of %d MiB", st.cached, st.total,
               double(st.cache_bytes) / (1 << 20), v.budget_mib);
   ImGui::SameLine();
@@ -155,6 +185,8 @@ void progress_and_cache(BenchViewState& v, BenchWorker& bench, const BenchStatus
           "budget [MiB]##bench", &v.budget_mib, 64, 8192, true,
           "memory the per-pair caches may hold; pairs beyond it re-run from their files"))
     bench.set_budget(std::size_t(v.budget_mib) << 20);
+  ImGui::SameLine();
+  jobs_controls(v, bench);
   if (!st.error.empty()) ui::figure(st.error, ImVec4(1, 0.45f, 0.4f, 1));
 }
 
@@ -305,6 +337,7 @@ void open_benchmark(AppState& state, BenchWorker& bench) {
                       ? kitti_pair_set(resolve_path(state, v.kitti_root), v.sequence, path)
                       : read_pair_manifest(path);
     bench.set_budget(std::size_t(std::max(1, v.budget_mib)) << 20);
+    bench.set_jobs(v.jobs);
     bench.open(std::move(set), state.config);
   }
   v.open = true;

@@ -216,7 +216,8 @@ void run_controls(AppState& state, BenchWorker& bench, const BenchStatus& st,
   }
   if (two) dimension_fields("dim2", v.sweep_path2, v.sweep_values2, state.config);
   if (ui::button("run sweep##sweep", ImVec2(0, 0),
-                 "Every combination over the open set, reusing each pair's cached stages.")) {
+                 "Every combination over the open set, reusing each pair's cached stages, with the "
+                 "view's jobs (pairs at once).")) {
     try {
       bench.sweep(settings_of(v, state.config), state.config);
     } catch (const Error& e) {

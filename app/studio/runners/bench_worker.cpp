@@ -7,11 +7,13 @@
 #include <numeric>
 
 #include "pagor/errors.hpp"
+#include "runners/pair_queue.hpp"
+#include "state/app_state.hpp"  // kMaxBenchJobs
 
 namespace pagor::studio {
 namespace {
 
-constexpr int kPipelineThreads = 2;                    // graph and verification
+constexpr int kPipelineThreads = 2;                    // graph and verification, for one job
 constexpr std::size_t kDefaultBudget = 1024ull << 20;  // [bytes]
 
 double ms_since(std::chrono::steady_clock::time_point t0) {
@@ -163,6 +165,11 @@ void BenchWorker::set_budget(std::size_t bytes) {
   status_.budget_bytes = bytes;
 }
 
+void BenchWorker::set_jobs(int jobs) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  jobs_ = std::clamp(jobs, 1, kMaxBenchJobs);
+}
+
 void BenchWorker::close() {
   show_results({}, "");
 }
@@ -174,7 +181,9 @@ std::vector<BenchRow> BenchWorker::rows() const {
 
 BenchStatus BenchWorker::status() const {
   std::lock_guard<std::mutex> lock(mutex_);
-  return status_;
+  BenchStatus s = status_;
+  if (s.busy) s.pass_ms = ms_since(pass_start_);
+  return s;
 }
 
 PairSet BenchWorker::set() const {
@@ -250,31 +259,19 @@ void BenchWorker::loop() {
       config = config_;
       cancel_ = cancelled_generation_ == gen;  // cancelled before it began: stops at once
       status_.cancelled = false;
-      if (pending_set_) {
-        set_ = std::move(*pending_set_);
-        pending_set_.reset();
-        runner_ = std::make_unique<SetRunner>(set_, kPipelineThreads);
-        status_.cached = 0;
-        status_.cache_bytes = 0;
-      }
-      runner_->set_cache_budget(status_.budget_bytes);
+      prepare_runners();
       status_.busy = !set_.pairs.empty();
       status_.pass_ms = 0;
+      pass_start_ = std::chrono::steady_clock::now();
       // Cached pairs first: they re-run only what the change invalidated, so the rates of most
-      // of the set update at once.
+      // of the set update at once. (Several jobs: each runner's kept pairs first, PairQueue.)
       order.resize(set_.pairs.size());
       std::iota(order.begin(), order.end(), 0);
       std::stable_partition(order.begin(), order.end(),
-                            [&](std::size_t i) { return runner_->cached(i); });
+                            [&](std::size_t i) { return runners_.front()->cached(i); });
     }
     load_pending_plan();
-    const auto t0 = std::chrono::steady_clock::now();
-    bool complete = true;
-    for (std::size_t i : order)
-      if (!evaluate(i, config, gen)) {
-        complete = false;
-        break;
-      }
+    const bool complete = evaluate_all(order, config, gen);
     if (complete) {
       bool sweep = false;
       {
@@ -283,7 +280,7 @@ void BenchWorker::loop() {
         if (sweep) {
           status_.finished = gen;
           status_.busy = false;
-          status_.pass_ms = ms_since(t0);
+          status_.pass_ms = ms_since(pass_start_);
         }
       }
       if (sweep) run_pending_sweep();
@@ -292,11 +289,11 @@ void BenchWorker::loop() {
     if (complete && status_.generation == gen) {
       status_.finished = gen;
       status_.busy = false;
-      status_.pass_ms = ms_since(t0);
+      status_.pass_ms = ms_since(pass_start_);
     } else if (!complete && status_.generation == gen && cancelled_generation_ == gen) {
       status_.busy = false;
       status_.cancelled = true;
-      status_.pass_ms = ms_since(t0);
+      status_.pass_ms = ms_since(pass_start_);
       status_.error = "cancelled after " + std::to_string(status_.done) + " of " +
                       std::to_string(status_.total) + " pairs";
     }
@@ -335,11 +332,14 @@ void BenchWorker::run_pending_sweep() {
     status_.cancelled = false;
     result->base = sweep_base_;
     result->set = status_.set_generation;
+    // The jobs changed since the pass: the sweep runs on as many runners. (A set opened meanwhile
+    // is the next pass's to take.)
+    if (!pending_set_) prepare_runners();
   }
   std::string error;
   try {
     result->result = run_sweep(
-        *runner_, settings,
+        runners_, settings,
         [this](int, int, const PairOutcome&) {
           std::lock_guard<std::mutex> lock(mutex_);
           ++status_.sweep_done;
@@ -357,6 +357,7 @@ void BenchWorker::run_pending_sweep() {
     error = reason(e);
     result.reset();
   }
+  for (int job = 0; job < static_cast<int>(runners_.size()); ++job) note_cache(job);
   std::lock_guard<std::mutex> lock(mutex_);
   if (result) sweep_result_ = std::move(result);
   status_.sweep_error = error;
@@ -364,13 +365,54 @@ void BenchWorker::run_pending_sweep() {
   changed_.notify_all();
 }
 
-bool BenchWorker::evaluate(std::size_t i, const Config& config, std::uint64_t gen) {
+void BenchWorker::prepare_runners() {
+  const bool new_set = pending_set_.has_value();
+  if (new_set) {
+    set_ = std::move(*pending_set_);
+    pending_set_.reset();
+  }
+  if (new_set || static_cast<int>(runners_.size()) != jobs_) {
+    // One job uses the pipelines' parallel stages; several share the cores between them.
+    runners_ = make_runners(set_, jobs_, std::max(1, kPipelineThreads / jobs_));
+    cache_views_.assign(runners_.size(), CacheView{});
+    runners_set_ = status_.set_generation;
+    status_.cached = 0;
+    status_.cache_bytes = 0;
+    for (BenchRow& r : rows_) r.cached = false;
+  }
+  // The budget is the view's: each runner keeps its share, so N jobs hold no more than one.
+  for (const auto& runner : runners_)
+    runner->set_cache_budget(status_.budget_bytes / runners_.size());
+  status_.jobs = static_cast<int>(runners_.size());
+}
+
+void BenchWorker::note_cache(int job) {
+  const SetRunner& runner = *runners_[static_cast<std::size_t>(job)];
+  CacheView view;
+  view.cached.resize(runner.size());
+  for (std::size_t k = 0; k < runner.size(); ++k) view.cached[k] = runner.cached(k);
+  view.bytes = runner.cache_bytes();
+  std::lock_guard<std::mutex> lock(mutex_);
+  cache_views_[static_cast<std::size_t>(job)] = std::move(view);
+  status_.cache_bytes = 0;
+  for (const CacheView& v : cache_views_) status_.cache_bytes += v.bytes;
+  status_.cached = 0;
+  const bool rows_of_set = runners_set_ == status_.set_generation;  // not a newer set's rows
+  for (std::size_t k = 0; k < runner.size(); ++k) {
+    bool kept = false;
+    for (const CacheView& v : cache_views_) kept = kept || (k < v.cached.size() && v.cached[k]);
+    status_.cached += kept;
+    if (rows_of_set && k < rows_.size()) rows_[k].cached = kept;
+  }
+}
+
+bool BenchWorker::evaluate(int job, std::size_t i, const Config& config, std::uint64_t gen) {
   if (cancel_) return false;
   const auto t0 = std::chrono::steady_clock::now();
   PairOutcome o;
   std::string error;
   try {
-    o = runner_->run(i, config, &cancel_);
+    o = runners_[static_cast<std::size_t>(job)]->run(i, config, &cancel_);
   } catch (const Cancelled&) {
     return false;
   } catch (const std::exception& e) {  // a work budget exceeded, out of memory: the row says why
@@ -382,10 +424,8 @@ bool BenchWorker::evaluate(std::size_t i, const Config& config, std::uint64_t ge
     error = entry.name + ": " + o.load_error;
   }
   const double ms = ms_since(t0);
+  note_cache(job);
   std::lock_guard<std::mutex> lock(mutex_);
-  status_.cache_bytes = runner_->cache_bytes();
-  status_.cached = runner_->cached_count();
-  for (std::size_t k = 0; k < rows_.size(); ++k) rows_[k].cached = runner_->cached(k);
   if (status_.generation != gen) return false;
   BenchRow& row = rows_[i];
   row.outcome = std::move(o);
@@ -393,8 +433,38 @@ bool BenchWorker::evaluate(std::size_t i, const Config& config, std::uint64_t ge
   row.last_ms = ms;
   ++status_.done;
   if (!error.empty()) status_.error = error;
-  status_.pass_ms += ms;
   return true;
+}
+
+bool BenchWorker::evaluate_all(const std::vector<std::size_t>& order, const Config& config,
+                               std::uint64_t gen) {
+  const int jobs = static_cast<int>(runners_.size());
+  if (jobs == 1) {
+    for (std::size_t i : order)
+      if (!evaluate(0, i, config, gen)) return false;
+    return true;
+  }
+  std::vector<int> home(set_.pairs.size(), -1);  // the first runner keeping each pair
+  for (std::size_t i = 0; i < home.size(); ++i)
+    for (int w = jobs - 1; w >= 0; --w)
+      if (runners_[static_cast<std::size_t>(w)]->cached(i)) home[i] = w;
+  PairQueue queue(home, jobs);
+  // A job that stops (cancelled, or the configuration moved on) stops the others between pairs;
+  // cancel_ stops the pair each is running.
+  std::atomic<bool> stopped{false};
+  const auto job = [&](int w) {
+    while (!stopped) {
+      const std::optional<std::size_t> i = queue.next(w);
+      if (!i) return;
+      if (!evaluate(w, *i, config, gen)) stopped = true;
+    }
+  };
+  std::vector<std::thread> threads;
+  const int n = std::min(jobs, static_cast<int>(home.size()));
+  for (int w = 1; w < n; ++w) threads.emplace_back(job, w);
+  job(0);  // this thread is job 0
+  for (std::thread& t : threads) t.join();
+  return !stopped;
 }
 
 }  // namespace pagor::studio

@@ -3,9 +3,11 @@
 /// The benchmark view's runner: every pair of a set through the core's SetRunner on a background
 /// thread, which keeps a pipeline per pair within a memory budget. A new configuration
 /// re-evaluates the whole set: each kept pair re-runs only the stages the change invalidated
-/// (kept pairs first, so the rates update fast), the others run from their files.
+/// (kept pairs first, so the rates update fast), the others run from their files. With jobs > 1
+/// the pairs (and a sweep's pairs) run on that many runners at once, each on a thread of its own.
 
 #include <atomic>
+#include <chrono>
 #include <condition_variable>
 #include <cstdint>
 #include <memory>
@@ -61,7 +63,8 @@ struct BenchStatus {
   int cached = 0;                       ///< pairs whose pipeline is kept
   std::size_t cache_bytes = 0;          ///< estimated memory of the kept pipelines [bytes]
   std::size_t budget_bytes = 0;         ///< the budget [bytes]
-  double pass_ms = 0;                   ///< wall time of the last complete pass (or so far) [ms]
+  double pass_ms = 0;                   ///< wall time of the last pass (or of this one so far) [ms]
+  int jobs = 1;                         ///< runners the pass in progress (or the last) runs on
   std::uint64_t generation = 0;         ///< increases with every open or configuration
   std::uint64_t set_generation = 0;     ///< increases with every set or results file opened
   std::uint64_t finished = 0;           ///< generation of the last complete pass
@@ -70,6 +73,12 @@ struct BenchStatus {
   int sweep_done = 0, sweep_total = 0;  ///< (pair, setting) runs of the sweep
   std::string sweep_error;              ///< why the last sweep stopped
   bool cancelled = false;  ///< the last pass or sweep was stopped by cancel() before its end
+
+  /// How far the pass has come, for progress_text: every pair of a pass runs (none is reused).
+  SetProgress pass_progress() const {
+    const auto d = static_cast<std::size_t>(done), t = static_cast<std::size_t>(total);
+    return {d, t, d, t, pass_ms / 1000.0};
+  }
 };
 
 class BenchWorker {
@@ -86,7 +95,12 @@ class BenchWorker {
   /// Re-evaluates the open set with a new configuration (nothing when no set is open).
   void set_config(const Config& config);
   /// Memory budget of the per-pair caches [bytes]; pipelines beyond it are dropped after use.
+  /// With several jobs each runner keeps at most its share (bytes / jobs).
   void set_budget(std::size_t bytes);
+  /// Pairs evaluated at once, each job on a runner of its own (clamped to 1 .. kMaxBenchJobs of
+  /// app_state.hpp). Takes effect at the next pass or sweep; a new number drops the caches then.
+  /// The outcomes do not depend on it, only the times do.
+  void set_jobs(int jobs);
   /// Queues a sweep over the open set, after the current pass; the cached pipelines are reused
   /// (a parameter change cancels it). `base`: the configuration the settings' values were set on.
   void sweep(std::vector<SweepSetting> settings, const Config& base);
@@ -121,8 +135,17 @@ class BenchWorker {
   void run_pending_sweep();
   /// Reads the plan `pending_plan_` names, if any (worker thread).
   void load_pending_plan();
-  /// Evaluates one pair; false when cancelled or the generation moved on.
-  bool evaluate(std::size_t pair, const Config& config, std::uint64_t generation);
+  /// Takes a new set, and builds the runners anew when there is one or the jobs changed
+  /// (with the mutex held, no pass or sweep running).
+  void prepare_runners();
+  /// Evaluates one pair on runner `job`; false when cancelled or the generation moved on.
+  bool evaluate(int job, std::size_t pair, const Config& config, std::uint64_t generation);
+  /// Evaluates the pairs of `order` with one runner, or every pair with several at once (each
+  /// runner's kept pairs on it); false when cancelled or the generation moved on.
+  bool evaluate_all(const std::vector<std::size_t>& order, const Config& config,
+                    std::uint64_t generation);
+  /// Which pairs runner `job` keeps, read on the thread using it; then the rows and the status.
+  void note_cache(int job);
 
   mutable std::mutex mutex_;
   mutable std::condition_variable changed_;
@@ -135,7 +158,15 @@ class BenchWorker {
   bool rerunnable_ = false;
   Config config_;
   std::vector<BenchRow> rows_;
-  std::unique_ptr<SetRunner> runner_;  // the thread's, replaced under the mutex
+  std::vector<std::unique_ptr<SetRunner>> runners_;  // the thread's, replaced under the mutex
+  int jobs_ = 1;                                     // asked for by set_jobs
+  struct CacheView {
+    std::vector<char> cached;  // per pair: the runner keeps its pipeline
+    std::size_t bytes = 0;     // [bytes]
+  };
+  std::vector<CacheView> cache_views_;                // per runner, as last read by its thread
+  std::uint64_t runners_set_ = 0;                     // the set generation the runners run
+  std::chrono::steady_clock::time_point pass_start_;  // of the pass in progress
   std::optional<std::vector<SweepSetting>> pending_sweep_;
   Config sweep_base_;
   std::shared_ptr<const SweepRecord> sweep_result_;

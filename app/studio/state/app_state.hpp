@@ -88,6 +88,10 @@ enum class BenchSource { manifest, kitti_pairs, results };
 /// Which rows the benchmark table lists. The session stores the number (0 all ... 4 rejected).
 enum class RowFilter { all, failures, successes, accepted, rejected };
 
+/// Most pairs the benchmark view evaluates at once (its "jobs"): each job holds a pipeline and
+/// its clouds, so far more jobs than cores would only add memory.
+inline constexpr int kMaxBenchJobs = 64;
+
 /// The benchmark view (benchmark_view.hpp); kept in the session.
 struct BenchViewState {
   BenchSource source = BenchSource::manifest;  ///< what `path` names
@@ -101,6 +105,7 @@ struct BenchViewState {
   int sort = 0;                     ///< column index of benchmark_view's columns
   bool descending = false;
   int budget_mib = 1024;                       ///< memory budget of the per-pair caches [MiB]
+  int jobs = 1;                                ///< pairs evaluated at once, 1 .. kMaxBenchJobs
   std::string plot_path = "pagor-plot";        ///< exports go to PATH-<plot>.png / .csv
   std::string sweep_path = "verification.mu";  ///< sweep: the parameter (configuration key path)
   std::string sweep_values = "0.5,1,2";        ///< its values: "a,b,c"; threshold sets "a,b;c"

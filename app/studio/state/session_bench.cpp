@@ -24,6 +24,7 @@ json bench_json(const AppState& s) {
           {"sort", b.sort},
           {"descending", b.descending},
           {"budget_mib", b.budget_mib},
+          {"jobs", b.jobs},
           {"plot_path", b.plot_path},
           {"sweep_path", b.sweep_path},
           {"sweep_values", b.sweep_values},
@@ -35,8 +36,9 @@ void read_bench(const json& j, const std::string& where, AppState& s) {
   if (!j.is_object()) throw InputError(where + ": expected an object");
   reject_unknown(j, where,
                  {"shown", "open", "source", "path", "kitti_root", "sequence", "config_path",
-                  "filter", "show", "sort", "descending", "budget_mib", "plot_path", "sweep_path",
-                  "sweep_values", "sweep_path2", "sweep_values2", "sweep_mu", "sweep_thresholds"});
+                  "filter", "show", "sort", "descending", "budget_mib", "jobs", "plot_path",
+                  "sweep_path", "sweep_values", "sweep_path2", "sweep_values2", "sweep_mu",
+                  "sweep_thresholds"});
   BenchViewState& b = s.bench;
   const std::string source = get_string(j, "source", where, "manifest");
   if (source != "manifest" && source != "kitti_pairs" && source != "results")
@@ -56,6 +58,7 @@ void read_bench(const json& j, const std::string& where, AppState& s) {
   b.sort = get_int(j, "sort", where, 0, 0, 9);  // a column of the benchmark table
   b.descending = get_bool(j, "descending", where, false);
   b.budget_mib = get_int(j, "budget_mib", where, b.budget_mib, 64, 8192);
+  b.jobs = get_int(j, "jobs", where, 1, 1, kMaxBenchJobs);  // sessions before jobs: one
   b.plot_path = get_string(j, "plot_path", where, b.plot_path);
   // Sessions written before sweeps took any parameter named mu values and threshold sets.
   if (const std::string mu = get_string(j, "sweep_mu", where, ""); !mu.empty())

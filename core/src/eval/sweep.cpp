@@ -1,6 +1,7 @@
 #include "pagor/eval/sweep.hpp"
 
 #include <algorithm>
+#include <cassert>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -203,14 +204,24 @@ SweepResult run_sweep(const PairSet& set, const std::vector<SweepSetting>& setti
     return run_sweep(runner, settings, progress, cancel);
   }
   std::vector<std::unique_ptr<SetRunner>> runners = make_runners(set, jobs, threads);
-  const std::size_t n = set.pairs.size();
+  return run_sweep(runners, settings, progress, cancel);
+}
+
+SweepResult run_sweep(std::vector<std::unique_ptr<SetRunner>>& runners,
+                      const std::vector<SweepSetting>& settings, const SweepProgressFn& progress,
+                      const std::atomic<bool>* cancel) {
+  assert(!runners.empty());
+  if (runners.size() == 1) return run_sweep(*runners.front(), settings, progress, cancel);
+  const std::size_t n = runners.front()->size();
+  std::vector<std::array<int, kStageCount>> runs_before;
+  for (const auto& runner : runners) runs_before.push_back(runner->stage_runs());
   // by_pair[p][k]: pair p's outcome and time with setting k, each pair filled by one worker
   std::vector<std::vector<PairOutcome>> by_pair(n);
   std::vector<std::vector<double>> ms(n, std::vector<double>(settings.size(), 0.0));
   std::vector<std::size_t> order(n);
   std::iota(order.begin(), order.end(), 0);
   run_parallel(
-      jobs, order,
+      static_cast<int>(runners.size()), order,
       [&](int w, std::size_t p, const std::atomic<bool>* stop) {
         std::optional<PairOutcome> skipped;  // a pair that does not load: skipped in every setting
         for (std::size_t k = 0; k < settings.size(); ++k) {
@@ -243,10 +254,9 @@ SweepResult run_sweep(const PairSet& set, const std::vector<SweepSetting>& setti
     r.summary = summarize(r.outcomes);
     result.settings.push_back(std::move(r));
   }
-  for (const auto& runner : runners)
-    for (int i = 0; i < kStageCount; ++i)
-      result.stage_runs[static_cast<std::size_t>(i)] +=
-          runner->stage_runs()[static_cast<std::size_t>(i)];
+  for (std::size_t w = 0; w < runners.size(); ++w)
+    for (std::size_t i = 0; i < static_cast<std::size_t>(kStageCount); ++i)
+      result.stage_runs[i] += runners[w]->stage_runs()[i] - runs_before[w][i];
   return result;
 }
 

@@ -100,6 +100,14 @@ SweepResult run_sweep(SetRunner& runner, const std::vector<SweepSetting>& settin
 SweepResult run_sweep(const PairSet& set, const std::vector<SweepSetting>& settings,
                       int threads = 1, const SweepProgressFn& progress = {},
                       const std::atomic<bool>* cancel = nullptr, int jobs = 1);
+/// The same on runners the caller keeps (the studio's, with pipelines cached from earlier passes):
+/// one worker thread per runner, each runner used by its thread alone, as above; one runner runs
+/// the set as the first overload does. `stage_runs` counts this sweep's runs only. Every runner
+/// must be over the same set.
+SweepResult run_sweep(std::vector<std::unique_ptr<SetRunner>>& runners,
+                      const std::vector<SweepSetting>& settings,
+                      const SweepProgressFn& progress = {},
+                      const std::atomic<bool>* cancel = nullptr);
 
 /// Parses a list like "0.5,1,2" (comma-separated numbers); `what` names it in errors. Threshold
 /// sets are separated by ';' ("0.02,0.04;0.02,0.04,0.08"). Throws InputError.
