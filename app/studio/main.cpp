@@ -173,7 +173,7 @@ int run_headless(const cli::Args& args, AppState state) {
   }
   while (!studio.bench().wait_idle(wait())) {  // the benchmark view's pairs, when one is open
     const BenchStatus st = studio.bench().status();
-    std::fprintf(stderr, "\rbenchmark: %d / %d pairs%-30s", st.done, st.total, "");
+    std::fprintf(stderr, "\rbenchmark: %-60s", progress_text(st.pass_progress()).c_str());
     if (std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() > timeout)
       give_up("the benchmark did not finish within " + std::to_string(int(timeout)) +
               " s (--timeout)");

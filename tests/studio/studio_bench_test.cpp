@@ -184,7 +184,8 @@ TEST_CASE("benchmark view: two jobs give the rows of one, also after a change mi
   CHECK(st.done == 3);
   CHECK(st.pass_progress().done == 3);
   CHECK(st.pass_progress().total == 3);
-  CHECK(st.pass_progress().seconds_left() == Approx(0.0));
+  REQUIRE(st.pass_progress().seconds_left());
+  CHECK(*st.pass_progress().seconds_left() == Approx(0.0));  // none left [s]
   CHECK(st.cached == 2);  // the broken pair has no pipeline to keep
   check_same_outcomes(two.rows(), rows_a);
   // A configuration change re-evaluates on both runners, each its kept pairs.
@@ -242,7 +243,7 @@ TEST_CASE("benchmark view: cancel stops every job between pairs, and resume fini
   worker.set_jobs(2);
   worker.open(set, semreg_config());
   worker.cancel();  // before its first pair: no job runs one
-  for (int i = 0; i < 6000 && worker.status().busy; ++i)
+  for (int i = 0; i < 60000 && !(worker.status().cancelled && !worker.status().busy); ++i)
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   studio::BenchStatus st = worker.status();
   CHECK(st.cancelled);
@@ -252,8 +253,8 @@ TEST_CASE("benchmark view: cancel stops every job between pairs, and resume fini
   // Cancelled once the first pair is done: the jobs stop after the pairs in progress (or the
   // pass had finished), and the rows done are the count the status gives.
   worker.rerun();
-  for (int i = 0; i < 60000 && worker.status().done == 0 && worker.status().busy; ++i)
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  while (worker.status().done == 0 && !worker.wait_idle(0.01)) {
+  }
   worker.cancel();
   for (int i = 0; i < 60000 && worker.status().busy; ++i)
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
@@ -279,6 +280,21 @@ TEST_CASE("benchmark view: cancel stops every job between pairs, and resume fini
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   CHECK_FALSE(worker.sweep_result());
   CHECK(worker.status().sweep_error.rfind("the sweep was cancelled", 0) == 0);
+  // Cancelled once a pair's settings are done: no result, unless the sweep had finished.
+  worker.sweep(sweep_settings(semreg_config(), grid), semreg_config());
+  for (int i = 0; i < 60000 && worker.status().sweeping && worker.status().sweep_done == 0; ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  worker.cancel();
+  for (int i = 0; i < 60000 && worker.status().sweeping; ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  st = worker.status();
+  CHECK_FALSE(st.sweeping);
+  if (worker.sweep_result()) {
+    CHECK(st.sweep_done == st.sweep_total);
+  } else {
+    CHECK(st.sweep_done < st.sweep_total);
+    CHECK(st.sweep_error.rfind("the sweep was cancelled after", 0) == 0);
+  }
 }
 
 TEST_CASE("plots: round ticks, CSV with units, and a PNG") {
