@@ -1,6 +1,7 @@
 // The benchmark view: its runner's re-evaluation against fresh runs, the plots (ticks, CSV, PNG),
 // session round trip, and a driven-UI walk over every widget of the view.
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <chrono>
 #include <cmath>
@@ -11,6 +12,7 @@
 #include "pagor/errors.hpp"
 #include "panels/benchmark_view.hpp"
 #include "runners/bench_worker.hpp"
+#include "runners/pair_queue.hpp"
 #include "studio_test_util.hpp"
 #include "ui_driver.hpp"
 #include "widgets/bench_plots.hpp"
@@ -202,6 +204,35 @@ TEST_CASE("benchmark view: two jobs give the rows of one, also after a change mi
   wait(two);
   check_same_outcomes(two.rows(), rows_b);
   CHECK(two.status().done == 3);
+}
+
+TEST_CASE("the pair queue: a job's kept pairs first, then the unkept, then another's last") {
+  // Pairs 0 and 3 kept by runner 0; 1, 2 and 5 by runner 1; 4 by none.
+  studio::PairQueue q({0, 1, 1, 0, -1, 1}, 2);
+  const auto next = [&](int job) { return q.next(job).value_or(99); };
+  CHECK(next(0) == 0);
+  CHECK(next(0) == 3);
+  CHECK(next(0) == 4);  // its own are done: the pair no runner keeps
+  CHECK(next(0) == 5);  // then the last of runner 1's
+  CHECK(next(1) == 1);
+  CHECK(next(1) == 2);
+  CHECK_FALSE(q.next(1));
+  CHECK_FALSE(q.next(0));
+  // Jobs on threads of their own take every pair exactly once.
+  std::vector<int> home(200);
+  for (std::size_t i = 0; i < home.size(); ++i) home[i] = static_cast<int>(i * 7 % 5) - 1;
+  studio::PairQueue shared(home, 4);
+  std::vector<std::vector<std::size_t>> taken(4);
+  std::vector<std::thread> jobs;
+  for (int w = 0; w < 4; ++w)
+    jobs.emplace_back([&, w] {
+      while (const auto i = shared.next(w)) taken[static_cast<std::size_t>(w)].push_back(*i);
+    });
+  for (std::thread& t : jobs) t.join();
+  std::vector<int> count(home.size(), 0);
+  for (const auto& t : taken)
+    for (std::size_t i : t) ++count[i];
+  CHECK(std::all_of(count.begin(), count.end(), [](int n) { return n == 1; }));
 }
 
 TEST_CASE("benchmark view: a sweep with two jobs equals core run_sweep with one") {
