@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <new>
 #include <numeric>
+#include <string>
+#include <system_error>
 
 #include "pagor/errors.hpp"
 #include "runners/pair_queue.hpp"
@@ -325,6 +327,7 @@ void BenchWorker::run_pending_sweep() {
   auto result = std::make_shared<SweepRecord>();
   {
     std::lock_guard<std::mutex> lock(mutex_);
+    if (!pending_sweep_) return;  // cancelled between the pass and here
     settings = std::move(*pending_sweep_);
     pending_sweep_.reset();
     cancel_ = false;
@@ -452,16 +455,36 @@ bool BenchWorker::evaluate_all(const std::vector<std::size_t>& order, const Conf
   // A job that stops (cancelled, or the configuration moved on) stops the others between pairs;
   // cancel_ stops the pair each is running.
   std::atomic<bool> stopped{false};
+  // What evaluate() does not catch (out of memory around a row) stops every job and is the
+  // pass's error, never an exception leaving a thread.
   const auto job = [&](int w) {
-    while (!stopped) {
-      const std::optional<std::size_t> i = queue.next(w);
-      if (!i) return;
-      if (!evaluate(w, *i, config, gen)) stopped = true;
+    try {
+      while (!stopped) {
+        const std::optional<std::size_t> i = queue.next(w);
+        if (!i) return;
+        if (!evaluate(w, *i, config, gen)) stopped = true;
+      }
+    } catch (...) {
+      stopped = true;
+      std::string what = "unknown error";
+      try {
+        throw;
+      } catch (const std::exception& e) {
+        what = e.what();
+      } catch (...) {
+      }
+      std::lock_guard<std::mutex> lock(mutex_);
+      status_.error = "the pass stopped: " + what;
+      status_.busy = false;
     }
   };
   std::vector<std::thread> threads;
   const int n = std::min(jobs, static_cast<int>(home.size()));
-  for (int w = 1; w < n; ++w) threads.emplace_back(job, w);
+  try {
+    for (int w = 1; w < n; ++w) threads.emplace_back(job, w);
+  } catch (const std::system_error&) {
+    // No more threads: the jobs that started take the others' pairs (PairQueue).
+  }
   job(0);  // this thread is job 0
   for (std::thread& t : threads) t.join();
   return !stopped;

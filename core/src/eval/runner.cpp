@@ -290,7 +290,9 @@ void run_parallel(int jobs, const std::vector<std::size_t>& order,
   for (std::thread& t : threads) t.join();
   if (error) std::rethrow_exception(error);
   if (hook_error) std::rethrow_exception(hook_error);
-  if (cancel && cancel->load()) throw Cancelled();
+  // Cancelled only when work was left undone: a cancel after the last pair ended changes nothing
+  // (as with one job, which checks between pairs).
+  if (cancel && cancel->load() && next < order.size()) throw Cancelled();
 }
 
 std::vector<PairOutcome> run_set(std::vector<std::unique_ptr<SetRunner>>& runners,
