@@ -42,6 +42,8 @@ std::vector<Option> sweep_options();
 int run_sweep_command(const Args& args);
 std::vector<Option> indoor_options();
 int run_indoor(const Args& args);
+std::vector<Option> self_similar_options();
+int run_self_similar(const Args& args);
 /// `bench --compare-thresholds` (bench_compare.cpp).
 int run_threshold_comparison(const Args& args, const Config& config, const PairSet& set);
 std::vector<Option> demo_options();

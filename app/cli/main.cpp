@@ -23,6 +23,8 @@ const std::vector<Command>& commands() {
       {"config", "print or check a configuration", config_options, run_config},
       {"indoor", "generate an indoor sequence (car park, floor plan, scans) for bench",
        indoor_options, run_indoor},
+      {"self-similar", "generate scenes that repeat themselves (corridors, facades) for bench",
+       self_similar_options, run_self_similar},
   };
   return kCommands;
 }
@@ -35,7 +37,7 @@ void print_usage() {
                "commands:\n";
   for (const auto& c : commands()) {
     std::string name = c.name;
-    name.resize(12, ' ');
+    name.resize(14, ' ');
     std::cout << "  " << name << c.summary << "\n";
   }
 }
