@@ -10,7 +10,6 @@
 
 #include "pagor/errors.hpp"
 #include "runners/pair_queue.hpp"
-#include "state/app_state.hpp"  // kMaxBenchJobs
 
 namespace pagor::studio {
 namespace {

@@ -24,6 +24,10 @@
 
 namespace pagor::studio {
 
+/// Most pairs the benchmark view evaluates at once (its "jobs"): each job holds a pipeline and
+/// its clouds, so far more jobs than cores would only add memory.
+inline constexpr int kMaxBenchJobs = 64;
+
 /// One row of the table.
 struct BenchRow {
   PairOutcome outcome;   ///< the latest outcome (of an earlier configuration until `current`)

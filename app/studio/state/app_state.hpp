@@ -88,10 +88,6 @@ enum class BenchSource { manifest, kitti_pairs, results };
 /// Which rows the benchmark table lists. The session stores the number (0 all ... 4 rejected).
 enum class RowFilter { all, failures, successes, accepted, rejected };
 
-/// Most pairs the benchmark view evaluates at once (its "jobs"): each job holds a pipeline and
-/// its clouds, so far more jobs than cores would only add memory.
-inline constexpr int kMaxBenchJobs = 64;
-
 /// The benchmark view (benchmark_view.hpp); kept in the session.
 struct BenchViewState {
   BenchSource source = BenchSource::manifest;  ///< what `path` names

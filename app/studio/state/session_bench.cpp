@@ -1,6 +1,7 @@
 // The benchmark view's part of the session file.
 
 #include "pagor/errors.hpp"
+#include "runners/bench_worker.hpp"
 #include "state/app_state.hpp"
 #include "state/session_json.hpp"
 
