@@ -39,7 +39,8 @@ echo "bench: a failing pair fails its row only"
 
 # 3. Killed with --jobs 2 after the first finished pair, then resumed with --jobs 2.
 cfg="$WORK/slow.json"  # seconds per pair, so that the kill lands mid-run (as bench_resume.sh)
-echo '{"verification": {"voxel_size": 0.1}, "refinement": {"max_points": 100000}}' >"$cfg"
+finer='{"verification": {"voxel_size": 0.1}, "refinement": {"max_points": 100000}}'
+echo "${PAGOR_TEST_SLOW_PAIR_CONFIG:-$finer}" >"$cfg"
 ref="$WORK/ref.jsonl" out="$WORK/killed.jsonl"
 "$PAGOR" bench --kitti-root "$KITTI" --pairs "$KITTI/pairs_00_dev.txt" --config "$cfg" --out "$ref" >"$WORK/ref.log" 2>&1 ||
   fail "reference run: $(tail -1 "$WORK/ref.log")"

@@ -89,7 +89,9 @@ check "3: resume with the files spelled another way" "$PAGOR" bench --manifest m
 grep -q "of which 1 taken from" out.log && pass "3: one entry for the pair, reused" || fail "3: not reused"
 
 # ---- 4. two writers of one results file ----
-echo '{"verification": {"voxel_size": 0.1}, "refinement": {"max_points": 100000}}' >slow.json
+# Seconds per pair (as bench_resume.sh), so that the second writer comes while the first runs.
+finer='{"verification": {"voxel_size": 0.1}, "refinement": {"max_points": 100000}}'
+echo "${PAGOR_TEST_SLOW_PAIR_CONFIG:-$finer}" >slow.json
 "$PAGOR" bench --kitti-root "$KITTI" --pairs "$KITTI/pairs_00_dev.txt" --config slow.json --out r4.jsonl >w1.log 2>&1 &
 pid=$!
 for _ in $(seq 1 600); do [ -e r4.jsonl.lock ] && break; sleep 0.05; done
