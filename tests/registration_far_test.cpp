@@ -31,13 +31,7 @@ void write_moved(const std::string& path, const PointCloud& cloud, const Transfo
 }
 
 void write_transform(const std::string& path, const Transform& T) {
-  std::ofstream out(path);
-  char buf[128];
-  for (int r = 0; r < 4; ++r) {
-    std::snprintf(buf, sizeof(buf), "%.17g %.17g %.17g %.17g\n", T(r, 0), T(r, 1), T(r, 2),
-                  T(r, 3));
-    out << buf;
-  }
+  std::ofstream(path) << transform_file_text(T);
 }
 
 PairEntry file_pair(const std::string& name, const std::string& source, const std::string& target,

@@ -84,13 +84,8 @@ void print_summary(const BenchmarkSummary& s, const Config& config) {
 }  // namespace
 
 std::vector<Option> bench_options() {
-  std::vector<Option> o = {
-      {"manifest", 1, "FILE",
-       "pairs manifest: 'SOURCE TARGET [gt=FILE] [source_labels=FILE] [target_labels=FILE] "
-       "[name=TEXT] [overlap=no]' per line, paths relative to it"},
-      {"kitti-root", 1, "DIR", "KITTI root holding sequences/ (with --pairs)"},
-      {"sequence", 1, "SEQ", "KITTI sequence (default 00)"},
-      {"pairs", 1, "FILE", "KITTI pairs file: 'source target' frame numbers per line"},
+  std::vector<Option> o = pair_set_options();
+  const std::vector<Option> more = {
       {"out", 1, "FILE", "write one JSON line per pair (pagor.register/1 without config)"},
       {"resume", 0, "", "with --out: continue a killed run, skipping pairs already written"},
       threads_option(),
@@ -98,6 +93,7 @@ std::vector<Option> bench_options() {
       {"compare-thresholds", 0, "",
        "instead: the pyramid vs each threshold alone vs each alone with the exact maximum "
        "clique (TEASER++-like), success rates"}};
+  o.insert(o.end(), more.begin(), more.end());
   for (Option& c : config_options_for()) o.push_back(std::move(c));
   return o;
 }

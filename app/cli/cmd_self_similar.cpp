@@ -10,6 +10,7 @@
 
 #include "command.hpp"
 #include "pagor/errors.hpp"
+#include "pagor/eval/pair_set.hpp"
 #include "pagor/eval/self_similar.hpp"
 #include "pagor/io/atomic_file.hpp"
 #include "pagor/io/clouds.hpp"
@@ -51,14 +52,8 @@ int run_self_similar(const Args& args) {
     if (ec) throw InputError(sub.string() + ": cannot create the directory (" + ec.message() + ")");
     save_cloud(s.source, (sub / "source.pcd").string());
     save_cloud(s.target, (sub / "target.pcd").string());
-    std::string gt;
-    char row[160];
-    for (int r = 0; r < 4; ++r) {
-      const auto& T = s.T_target_source;
-      std::snprintf(row, sizeof(row), "%.9f %.9f %.9f %.9f\n", T(r, 0), T(r, 1), T(r, 2), T(r, 3));
-      gt += row;
-    }
-    write_file_atomic((sub / "T_target_source.txt").string(), gt);
+    write_file_atomic((sub / "T_target_source.txt").string(),
+                      transform_file_text(s.T_target_source));
     pairs += s.name + "/source.pcd " + s.name + "/target.pcd gt=" + s.name +
              "/T_target_source.txt name=" + s.name + "\n";
     std::fprintf(stderr, "\rwriting scenes: %zu/%zu", ++done, set.size());

@@ -77,11 +77,8 @@ void print_table(const SweepResult& r, const Config& base) {
 }  // namespace
 
 std::vector<Option> sweep_options() {
-  std::vector<Option> o = {
-      {"manifest", 1, "FILE", "pairs manifest (as for bench)"},
-      {"kitti-root", 1, "DIR", "KITTI root holding sequences/ (with --pairs)"},
-      {"sequence", 1, "SEQ", "KITTI sequence (default 00)"},
-      {"pairs", 1, "FILE", "KITTI pairs file: 'source target' frame numbers per line"},
+  std::vector<Option> o = pair_set_options();
+  const std::vector<Option> more = {
       {"thresholds", 1, "SETS", "threshold sets, e.g. '0.02,0.04,0.08;0.03,0.06'"},
       {"mu", 1, "LIST", "verification truncations [m], e.g. '0.5,1,2'"},
       {"trim", 1, "LIST", "TRIM kinds: ratio,difference"},
@@ -96,6 +93,7 @@ std::vector<Option> sweep_options() {
       {"plot-csv", 1, "FILE", "write the plotted numbers as CSV"},
       threads_option(),
       jobs_option()};
+  o.insert(o.end(), more.begin(), more.end());
   for (Option& c : config_options_for()) o.push_back(std::move(c));
   return o;
 }

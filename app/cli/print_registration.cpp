@@ -48,9 +48,9 @@ void print_level_row(const Registration& r, std::size_t l, bool flags, bool gt) 
               s.edges, s.clique.size(), s.pose.inliers.size());
   if (flags) {
     if (s.file_inliers)
-      std::printf(" %9.3f %7.3f", s.file_inliers->precision, s.file_inliers->recall);
+      std::printf(" %10.3f %9.3f", s.file_inliers->precision, s.file_inliers->recall);
     else
-      std::printf(" %9s %7s", "-", "-");
+      std::printf(" %10s %9s", "-", "-");
   }
   if (r.selected_by == SelectedBy::score_D) {
     if (std::isfinite(s.score_D))
@@ -95,7 +95,7 @@ void print_levels(const Registration& r) {
   const bool scored = r.selected_by == SelectedBy::score_D;
   std::printf("\n  %-5s %-8s %8s %9s %7s %8s", "level", "epsilon", "vertices", "edges", "clique",
               "inliers");
-  if (flags) std::printf(" %9s %7s", "precision", "recall");
+  if (flags) std::printf(" %10s %9s", "flag prec.", "flag rec.");
   if (scored)
     std::printf(" %13s", "score D [m]");
   else
@@ -113,7 +113,9 @@ void print_levels(const Registration& r) {
         "  (* selected: lowest S = sum of min(residual, noise bound) over all correspondences; "
         "support: those within the bound (no clouds to verify on))\n");
   if (flags)
-    std::printf("  (precision, recall: of each clique against the file's inlier flags)\n");
+    std::printf(
+        "  (flag prec., flag rec.: each clique's precision and recall against the file's inlier "
+        "flags, not against the ground truth the diagnosis uses)\n");
 }
 
 void print_pose_and_refinement(const Registration& r) {

@@ -16,6 +16,17 @@ std::vector<Option> pair_options() {
   };
 }
 
+std::vector<Option> pair_set_options() {
+  return {
+      {"manifest", 1, "FILE",
+       "pairs manifest: 'SOURCE TARGET [gt=FILE] [source_labels=FILE] [target_labels=FILE] "
+       "[name=TEXT] [overlap=no]' per line, paths relative to it"},
+      {"kitti-root", 1, "DIR", "KITTI root holding sequences/ (with --pairs)"},
+      {"sequence", 1, "SEQ", "KITTI sequence (default 00)"},
+      {"pairs", 1, "FILE", "KITTI pairs file: 'source target' frame numbers per line"},
+  };
+}
+
 std::optional<PairSource> pair_source_from_args(const Args& args) {
   const int chosen = args.has("source") + args.has("kitti-root") + args.has("synthetic");
   if (chosen == 0) return std::nullopt;

@@ -18,6 +18,9 @@ std::vector<Option> pair_options();
 /// once or an incomplete one.
 std::optional<PairSource> pair_source_from_args(const Args& args);
 
+/// `--manifest`, `--kitti-root`, `--sequence`, `--pairs`: the options pair_set_from_args reads.
+std::vector<Option> pair_set_options();
+
 /// `--manifest FILE`, or `--kitti-root DIR --pairs FILE [--sequence SEQ]`: the set of pairs a
 /// `command` runs. Throws UsageError for both or neither.
 PairSet pair_set_from_args(const Args& args, const std::string& command);

@@ -207,9 +207,11 @@ void Studio::left_panel(float left, float H) {
     AppState& s = state_;
     section("Data", true, [&] { data_panel(s, *this); });
     section("Parameters", true,
-            [&] { parameters_panel(s.config, s.preset, params_, config_error_, *this); });
+            [&] { parameters_panel(s.config, s.preset, s.search.parameters, params_, config_error_,
+                             *this); });
     section("View", true, [&] {
       view_panel(s.view, camera_control(), s.show_help, snapshot_ && snapshot_->plan);
+      camera_views_panel(s.camera_views, camera_control(), *this);
     });
     section("History", false, [&] { history_panel(params_, runs_, *this); });
     section("Session", false, [&] {

@@ -33,6 +33,12 @@ const std::vector<Shortcut>& shortcuts() {
       {"Ctrl+Z / Ctrl+Y", "undo / redo a parameter change"},
       {"F1 or H", "show or hide this help"},
       {"mouse", "left drag orbits, right drag pans, wheel zooms"},
+      {"click", "pick the point under the mouse: its coordinates, class, label and distance to "
+                "the nearest target point (top right of the 3D view)"},
+      {"Shift+click", "pick a second point: the distance between the two [m]"},
+      {"click on nothing", "clear the picks"},
+      {"View panel", "save view, copy view / paste view: cameras kept in the session, or moved "
+                     "as JSON"},
   };
   return list;
 }
@@ -110,9 +116,9 @@ void Studio::help_overlay(float W, float H) {
       for (const Shortcut& s : shortcuts()) {
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
-        ImGui::TextColored(ImVec4(1.0f, 0.85f, 0.4f, 1.0f), "%s", s.keys);
+        ui::figure(s.keys, ImVec4(1.0f, 0.85f, 0.4f, 1.0f));
         ImGui::TableNextColumn();
-        ImGui::TextUnformatted(s.action);
+        ui::figure(s.action);
       }
       ImGui::EndTable();
     }

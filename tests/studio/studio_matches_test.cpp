@@ -154,6 +154,68 @@ TEST_CASE("a gedi-dev problem opened alone through the file browser: the back en
   CHECK_FALSE(has("unlabelled points"));
 }
 
+TEST_CASE("a matcher's clique stands out: members marked at both ends, the rest faint") {
+  TempDir tmp;
+  studio::AppState st = empty_files_state(tmp);
+  st.data.correspondences = gedi("03.txt");
+  st.data.ground_truth = gedi("03.T.txt");
+  st.have_data = true;
+  st.view.pose = studio::PoseShown::ground_truth;  // true members: lines of (almost) no length
+  UiDriver d(st, 1280, 800);
+  d.settle();
+  d.frames(2);
+  const auto snap = d.studio().worker().snapshot();
+  REQUIRE(snap);
+  REQUIRE(snap->ground_truth);
+  const int level = snap->selected;
+  REQUIRE(level >= 0);
+  const std::vector<int>& clique = snap->levels[static_cast<std::size_t>(level)].clique;
+  REQUIRE(clique.size() >= 3);
+  // The other matcher points are faint while the clique's lines are shown; all strong without.
+  CHECK(d.studio().scene().faint_keypoints() == snap->correspondences.size() - clique.size());
+  d.state().view.layers.correspondences = false;
+  d.frames(2);
+  CHECK(d.studio().scene().faint_keypoints() == 0);
+  d.state().view.layers.correspondences = true;
+  d.frames(2);
+
+  // Drawn as the 3D view draws them, on a 600 px view of the scene, one member at a time: each
+  // whose line is shorter than a pixel still shows a ring around its target point.
+  studio::Camera camera;
+  Eigen::Vector3f lo, hi;
+  REQUIRE(studio::shown_bounds(*snap, d.state().view, *snap->ground_truth, lo, hi));
+  camera.fit(lo, hi, 1.0f);
+  studio::ViewRect r{ImVec2(0, 0), 600, 600, camera.projection(1.0f) * camera.view()};
+  studio::Snapshot one = *snap;
+  int short_lines = 0, ringed = 0;
+  for (int v : clique) {
+    const Correspondence& c = snap->correspondences[static_cast<std::size_t>(v)];
+    Eigen::Vector2f a, b;
+    REQUIRE(studio::project_to_screen(r.view_projection,
+                                      studio::transform_point(*snap->ground_truth, c.p), 600, 600,
+                                      a));
+    REQUIRE(studio::project_to_screen(r.view_projection, c.q.cast<float>(), 600, 600, b));
+    if ((a - b).norm() >= 1.0f) continue;
+    ++short_lines;
+    one.levels[static_cast<std::size_t>(level)].clique = {v};
+    ImDrawList dl(ImGui::GetDrawListSharedData());
+    dl._ResetForNewFrame();
+    dl.PushClipRectFullScreen();
+    REQUIRE(studio::draw_correspondence_lines(&dl, r, one, d.state().view, *snap->ground_truth,
+                                              level, studio::ClassColors()) == 1);
+    // A line alone reaches its half width and antialiasing from the point (under 3.5 px): a
+    // vertex 4 to 8 px away is the ring's.
+    bool ring = false;
+    for (const ImDrawVert& vert : dl.VtxBuffer) {
+      const float dist = (Eigen::Vector2f(vert.pos.x, vert.pos.y) - b).norm();
+      ring = ring || (dist >= 4.0f && dist <= 8.0f);
+    }
+    ringed += ring;
+  }
+  CHECK(short_lines > 0);
+  CHECK(ringed == short_lines);
+}
+
 TEST_CASE("a gedi-dev problem verified on its clouds equals the CLI, and the session keeps it") {
   TempDir tmp;
   UiDriver d(empty_files_state(tmp), 1280, 800);

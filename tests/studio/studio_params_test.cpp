@@ -2,9 +2,12 @@
 // mark and reset), landmark classes added and removed, and sweeps over any one or two parameters
 // with the flip view between two settings.
 
+#include <algorithm>
 #include <catch2/catch.hpp>
+#include <cctype>
 #include <cmath>
 #include <fstream>
+#include <set>
 
 #include "panels/param_editor.hpp"
 #include "runners/bench_worker.hpp"
@@ -127,6 +130,75 @@ TEST_CASE("landmark classes: removed, added from the label scheme, the configura
   validate(d.state().config);
   d.settle();
   CHECK(d.studio().worker().status().error.empty());
+}
+
+TEST_CASE("a search narrows the parameter editor and the sweep's parameter list") {
+  TempDir tmp;
+  studio::AppState s = synthetic_state(tmp);
+  s.bench.path = PAGOR_SOURCE_DIR "/tests/studio/bench_pairs.txt";
+  UiDriver d(s, 1400, 1100);
+  d.settle();
+  d.open_all_nodes("Pagor Studio");
+  const auto params_shown = [&] {
+    int n = 0;
+    for (const auto& w : d.widgets()) n += w.label.find("###") != std::string::npos;
+    return n;
+  };
+  const int all = params_shown();
+  REQUIRE(all > 60);
+  const auto* find = d.find("find##parameters", "Pagor Studio");
+  REQUIRE(find);
+  // Every word, in key or description, case-insensitive: "Noise bound" finds gnc.noise_bound.
+  REQUIRE(d.type_into(find->id, U"Noise BOUND"));
+  d.frames(2);
+  CHECK(d.state().search.parameters == "Noise BOUND");
+  CHECK(d.find_param("gnc.noise_bound"));
+  CHECK_FALSE(d.find_param("verification.mu"));
+  const int narrowed = params_shown();
+  CHECK(narrowed >= 1);
+  CHECK(narrowed < 10);
+  CHECK_FALSE(d.texts("parameters match", "Pagor Studio").empty());
+  // A field found is edited as in its section.
+  const auto* nb = d.find_param("gnc.noise_bound");
+  REQUIRE(nb);
+  // Nothing matches: said so; cleared: every section again.
+  REQUIRE(d.type_into(d.find("find##parameters", "Pagor Studio")->id, U"no such words"));
+  d.frames(2);
+  CHECK(params_shown() == 0);
+  CHECK_FALSE(d.texts("0 of", "Pagor Studio").empty());
+  // (Typing replaces the selection; a blank search is no search.)
+  REQUIRE(d.type_into(d.find("find##parameters", "Pagor Studio")->id, U" "));
+  d.frames(2);
+  d.open_all_nodes("Pagor Studio");
+  CHECK(params_shown() == all);
+
+  // The sweep's parameter list.
+  REQUIRE(d.click_widget("benchmark view...", "Pagor Studio"));
+  d.frames(2);
+  REQUIRE(d.click_widget("open and run##bench", "Benchmark"));
+  settle_bench(d);
+  const auto* sweep_find = d.find("find##sweep", "Benchmark");
+  REQUIRE(sweep_find);
+  REQUIRE(d.type_into(sweep_find->id, U"Voxel"));
+  REQUIRE(d.click_widget("parameter", "Benchmark"));
+  d.frames(2);
+  // Listed: exactly the sweepable parameters whose key or description says "voxel".
+  std::set<std::string> expected, listed;
+  for (const ConfigField& f : config_fields(d.state().config)) {
+    std::string text = f.path + " " + f.info.doc;
+    std::transform(text.begin(), text.end(), text.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    const bool sweepable = f.kind == FieldKind::number || f.kind == FieldKind::integer ||
+                           f.kind == FieldKind::flag || f.kind == FieldKind::choice ||
+                           f.kind == FieldKind::numbers;
+    if (sweepable && text.find("voxel") != std::string::npos) expected.insert(f.path);
+  }
+  for (const auto& w : d.widgets())
+    if (w.kind == studio::ui::WidgetKind::selectable && w.label.find('.') != std::string::npos &&
+        w.label.find(' ') == std::string::npos)
+      listed.insert(w.label);
+  CHECK(expected.count("verification.voxel_size"));
+  CHECK(listed == expected);
 }
 
 TEST_CASE("a 2-D sweep over any parameters from the UI, and the flip view opens a pair with B") {

@@ -2,12 +2,15 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "pagor/errors.hpp"
 #include "state/app_state.hpp"
+#include "state/camera_views.hpp"
 #include "state/history.hpp"
 #include "studio_test_util.hpp"
 #include "widgets/number_format.hpp"
@@ -129,6 +132,106 @@ TEST_CASE("a session round-trips and writes numbers in their shortest exact form
   CHECK(r.view.diagnosis.contribution == studio::Contribution::ground_truth);
   CHECK(r.width == 1000);
   CHECK(r.height == 700);
+}
+
+TEST_CASE("camera views round-trip in the session and through the clipboard's JSON") {
+  TempDir tmp;
+  studio::AppState s;
+  studio::Camera a;
+  a.target = Eigen::Vector3f(1.5f, -2.25f, 0.5f);
+  a.distance = 33.3f;
+  a.yaw_deg = 12.5f;
+  a.pitch_deg = 20.0f;
+  studio::Camera b = a;
+  b.top_down = true;
+  s.camera_views = {{"street", a}, {studio::next_view_name({{"street", a}}), b}};
+  CHECK(s.camera_views[1].name == "view 1");
+  CHECK(studio::next_view_name(s.camera_views) == "view 2");
+  const std::string path = tmp.file("views.json");
+  studio::save_session(s, path);
+  studio::AppState r;
+  studio::load_session(path, r);
+  REQUIRE(r.camera_views.size() == 2);
+  CHECK(r.camera_views[0].name == "street");
+  CHECK(r.camera_views[0].camera.target == a.target);
+  CHECK(r.camera_views[0].camera.distance == a.distance);
+  CHECK(r.camera_views[0].camera.yaw_deg == a.yaw_deg);
+  CHECK_FALSE(r.camera_views[0].camera.top_down);
+  CHECK(r.camera_views[1].camera.top_down);
+
+  // "copy view" writes one line of JSON that "paste view" reads back exactly; a session's
+  // member pasted with its key is read too; anything else is an error naming the clipboard.
+  const std::string text = studio::camera_text(a);
+  CHECK(text.find('\n') == std::string::npos);
+  const studio::Camera back = studio::camera_from_text(text, studio::Camera{}, "the clipboard");
+  CHECK(back.target == a.target);
+  CHECK(back.distance == a.distance);
+  CHECK(back.pitch_deg == a.pitch_deg);
+  const studio::Camera keyed = studio::camera_from_text(
+      R"({"camera": {"distance": 7, "top_down": true}})", a, "the clipboard");
+  CHECK(keyed.distance == 7.0f);
+  CHECK(keyed.top_down);
+  CHECK(keyed.yaw_deg == a.yaw_deg);  // absent keys keep the camera's
+  const auto paste_error = [&](const std::string& t) {
+    try {
+      studio::camera_from_text(t, a, "the clipboard: camera");
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  CHECK_THAT(paste_error("/home/me/scan.pcd"),
+             Catch::Contains("the clipboard") && Catch::Contains("not a camera view"));
+  CHECK_THAT(paste_error(R"({"distance": -4})"), Catch::Contains("the clipboard: camera.distance"));
+  CHECK_THAT(paste_error(R"({"zoom": 2})"), Catch::Contains("zoom: unknown key"));
+  CHECK_THAT(paste_error(std::string(5000, ' ')), Catch::Contains("not a camera view"));
+}
+
+TEST_CASE("session reader rejects wrong camera views at their index and key") {
+  TempDir tmp;
+  const auto err = [&](const std::string& text) { return load_error(write(tmp, text)); };
+  CHECK_THAT(err(R"({"camera_views": {"name": "a"}})"), Catch::Contains("camera_views: expected a list"));
+  CHECK_THAT(err(R"({"camera_views": [{"name": "", "camera": {}}]})"),
+             Catch::Contains("camera_views[0].name"));
+  CHECK_THAT(err(R"({"camera_views": [{"name": "a", "camera": {}}, {"name": "b"}]})"),
+             Catch::Contains("camera_views[1]: no \"camera\""));
+  CHECK_THAT(err(R"({"camera_views": [{"name": "a", "camera": {"pitch_deg": 95}}]})"),
+             Catch::Contains("camera_views[0].camera.pitch_deg"));
+  std::string many = R"({"camera_views": [)";
+  for (int i = 0; i < 33; ++i) many += std::string(i ? "," : "") + R"({"name": "v", "camera": {}})";
+  CHECK_THAT(err(many + "]}"), Catch::Contains("33 views, at most 32"));
+}
+
+TEST_CASE("fit frames the whole box, top-down at any yaw and aspect, and in perspective") {
+  // A street 300 m long and 12 m wide, turned: every corner must land inside the viewport.
+  const Eigen::Vector3f lo(-150.0f, 20.0f, -2.0f), hi(150.0f, 32.0f, 6.0f);
+  for (const bool top_down : {true, false})
+    for (const float yaw : {-90.0f, -60.0f, 0.0f, 30.0f, 90.0f})
+      for (const float aspect : {0.5f, 1.0f, 1.6f, 3.0f}) {
+        studio::Camera c;
+        c.top_down = top_down;
+        c.yaw_deg = yaw;
+        c.fit(lo, hi, aspect);
+        const float h = 600.0f, w = h * aspect;
+        const Eigen::Matrix4f vp = c.projection(aspect) * c.view();
+        float reach = 0;  // the farthest corner from the centre, as a share of the half viewport
+        for (int k = 0; k < 8; ++k) {
+          const Eigen::Vector3f p((k & 1) ? hi.x() : lo.x(), (k & 2) ? hi.y() : lo.y(),
+                                  (k & 4) ? hi.z() : lo.z());
+          Eigen::Vector2f px;
+          REQUIRE(studio::project_to_screen(vp, p, w, h, px));
+          INFO("top_down " << top_down << ", yaw " << yaw << ", aspect " << aspect << ", corner "
+                           << k << " at " << px.transpose());
+          CHECK(px.x() >= 0.0f);
+          CHECK(px.x() <= w);
+          CHECK(px.y() >= 0.0f);
+          CHECK(px.y() <= h);
+          reach = std::max({reach, std::abs(px.x() - w / 2) / (w / 2),
+                            std::abs(px.y() - h / 2) / (h / 2)});
+        }
+        // Top-down the box fills the view (not a speck in the middle): its margin is 6 %.
+        if (top_down) CHECK(reach > 0.9f);
+      }
 }
 
 TEST_CASE("shortest: a float's shortest decimal as a double") {

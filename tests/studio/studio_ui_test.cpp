@@ -252,6 +252,59 @@ TEST_CASE("shortcuts") {
   CHECK(s.screenshot_path == "TTT.png");
 }
 
+TEST_CASE("camera views: saved and restored, copied and pasted as JSON; the help lists picking") {
+  TempDir tmp;
+  UiDriver d(synthetic_state(tmp), 1100, 800);
+  d.settle();
+  studio::AppState& s = d.state();
+  // Picking and measuring are in the help overlay and named under the View panel.
+  d.press_key(keys::F1);
+  CHECK_FALSE(d.texts("Shift+click", "Shortcuts").empty());
+  CHECK_FALSE(d.texts("distance between the two", "Shortcuts").empty());
+  CHECK_FALSE(d.texts("copy view / paste view", "Shortcuts").empty());
+  d.press_key(keys::Escape);
+  CHECK_FALSE(d.texts("Shift+click a second to measure", "Pagor Studio").empty());
+
+  s.camera.yaw_deg = 33.0f;
+  s.camera.distance = 61.0f;
+  s.camera.target = Eigen::Vector3f(4.0f, -3.0f, 1.0f);
+  const studio::Camera saved = s.camera;
+  REQUIRE(d.click_widget("save view", "Pagor Studio"));
+  REQUIRE(s.camera_views.size() == 1);
+  CHECK(s.camera_views[0].name == "view 1");
+  REQUIRE(d.click_widget("copy view", "Pagor Studio"));
+  CHECK(std::string(ImGui::GetClipboardText()) == studio::camera_text(saved));
+  // Moved away, then back with a click on the view's name.
+  s.camera.yaw_deg = -120.0f;
+  s.camera.distance = 9.0f;
+  d.frame();
+  REQUIRE(d.click_widget("view 1", "Pagor Studio"));
+  CHECK(s.camera.yaw_deg == saved.yaw_deg);
+  CHECK(s.camera.distance == saved.distance);
+  CHECK(s.camera.target == saved.target);
+  // Pasted JSON sets the camera; text that is not a camera is an error naming the clipboard, and
+  // the camera stays.
+  ImGui::SetClipboardText(R"({"distance": 25, "yaw_deg": 5, "top_down": true})");
+  REQUIRE(d.click_widget("paste view", "Pagor Studio"));
+  CHECK(s.camera.distance == 25.0f);
+  CHECK(s.camera.top_down);
+  d.frames(2);
+  CHECK(s.camera.distance == 25.0f);  // not fitted again over the pasted view
+  ImGui::SetClipboardText("/data/scan.pcd");
+  REQUIRE(d.click_widget("paste view", "Pagor Studio"));
+  CHECK(s.message.level == studio::MessageLevel::error);
+  CHECK(s.message.text.find("the clipboard") != std::string::npos);
+  CHECK(s.camera.distance == 25.0f);
+  // Kept in the session, and forgotten with its x.
+  d.press_key('S', true);
+  studio::AppState loaded;
+  studio::load_session(s.session_path, loaded);
+  REQUIRE(loaded.camera_views.size() == 1);
+  CHECK(loaded.camera_views[0].camera.yaw_deg == saved.yaw_deg);
+  REQUIRE(d.click_widget("x##view", "Pagor Studio"));
+  CHECK(s.camera_views.empty());
+}
+
 TEST_CASE("epsilon editing: clamped at the widget - insert and delete anywhere - sorted - undo") {
   TempDir tmp;
   UiDriver d(synthetic_state(tmp), 900, 1000);

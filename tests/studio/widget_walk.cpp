@@ -30,9 +30,11 @@ struct Saved {
   PairSource data;
   std::string pairs_file, session_path, screenshot_path, export_path;
   studio::BenchViewState bench;
+  studio::SearchState search;
 };
 Saved save(const studio::AppState& s) {
-  return {s.data, s.pairs_file, s.session_path, s.screenshot_path, s.export_path, s.bench};
+  return {s.data, s.pairs_file, s.session_path, s.screenshot_path, s.export_path, s.bench,
+          s.search};
 }
 void restore(UiDriver& d, const Saved& v, bool resubmit) {
   studio::AppState& s = d.state();
@@ -44,6 +46,7 @@ void restore(UiDriver& d, const Saved& v, bool resubmit) {
   s.session_path = v.session_path;
   s.screenshot_path = v.screenshot_path;
   s.export_path = v.export_path;
+  s.search = v.search;
   s.bench.path = v.bench.path;
   s.bench.kitti_root = v.bench.kitti_root;
   s.bench.sequence = v.bench.sequence;
@@ -76,7 +79,8 @@ void act_on_text(UiDriver& d, const WidgetRecord& w) {
       s.bench.config_path == expected || s.bench.filter == expected ||
       s.bench.plot_path == expected || s.bench.sweep_values == expected ||
       s.bench.sweep_values2 == expected || s.dialog.directory == expected ||
-      s.dialog.filter == expected || s.dialog.name == expected;
+      s.dialog.filter == expected || s.dialog.name == expected ||
+      s.search.parameters == expected || s.search.sweep == expected;
   // A parameter's text (a class name, a list as JSON) lands in the configuration, or is refused
   // with a message saying why.
   const bool parameter = config_to_json(s.config, -1).find(expected) != std::string::npos;

@@ -138,8 +138,8 @@ int levels_table(const Diagnosis& d, int shown, bool clouds) {
   const float h = ImGui::GetTextLineHeightWithSpacing() * (static_cast<float>(d.levels.size()) + 3);
   if (!ImGui::BeginTable("diag_levels", 10, flags, ImVec2(0, h))) return -1;
   ImGui::TableSetupScrollFreeze(1, 1);
-  for (const char* c : {"level", "\xce\xb5", "true", "consist.", "clique (true)", "prec./rec. [%]",
-                        "errors", "D [m]", "GNC (true)", "verts"})
+  for (const char* c : {"level", "\xce\xb5", "true", "consist.", "clique (true)",
+                        "truth prec./rec. [%]", "errors", "D [m]", "GNC (true)", "verts"})
     ImGui::TableSetupColumn(c);
   ImGui::TableHeadersRow();
   for (std::size_t l = 0; l < d.levels.size(); ++l)
@@ -242,6 +242,11 @@ void diagnosis_panel(const Snapshot* s, const std::string& stale_reason, ViewSta
   const bool clouds = s->source != nullptr;
   const int clicked = levels_table(d, shown, clouds);
   if (clicked >= 0) view.level = clicked;
+  ui::figure(
+      "truth prec./rec.: the clique's true members over its size / over the most consistent true "
+      "ones, by the ground-truth pose (pagor register's flag prec./rec. are against a matcher "
+      "file's inlier flags instead).",
+      kDim, true);
   // The rule the selection followed, as pagor register --correspondences names it.
   if (clouds)
     ui::figure_dim("* selected (lowest D). Shaded: the level the verdict is about.");

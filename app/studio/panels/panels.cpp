@@ -280,6 +280,8 @@ void view_panel(ViewState& v, CameraControl camera, bool& show_help, bool has_pl
   ImGui::SameLine();
   if (ui::button("help", ImVec2(0, 0), "Keyboard and mouse shortcuts (F1 or H)."))
     show_help = !show_help;
+  ui::figure("click a point in the 3D view to pick it, Shift+click a second to measure",
+             ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled), true);
 }
 
 }  // namespace pagor::studio

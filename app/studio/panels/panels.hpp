@@ -6,6 +6,7 @@
 
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "panels/exports.hpp"
 #include "panels/studio_actions.hpp"
@@ -46,11 +47,16 @@ void undo_redo_buttons(const ParamHistory& params, StudioActions& actions, const
 /// Every parameter of `config` (re-run on change): the preset it starts from, the label scheme,
 /// the pyramid's levels, then every field of the configuration's table (param_editor.hpp); why
 /// it is invalid, undo/redo and "defaults" (the preset, keeping the label scheme).
-void parameters_panel(Config& config, std::string& preset, const ParamHistory& params,
-                      const std::string& config_error, StudioActions& actions);
+void parameters_panel(Config& config, std::string& preset, std::string& search,
+                      const ParamHistory& params, const std::string& config_error,
+                      StudioActions& actions);
 /// Layers, sizes, colours, the source pose, the camera buttons. `has_plan`: the result has a
 /// floor plan (its layer can be toggled).
 void view_panel(ViewState& view, CameraControl camera, bool& show_help, bool has_plan);
+/// Camera views: "save view" keeps the camera under a name, a click on the name restores it (kept
+/// in the session); "copy view" / "paste view" move it through the clipboard as JSON.
+void camera_views_panel(std::vector<CameraView>& views, CameraControl camera,
+                        StudioActions& actions);
 /// The session and screenshot files, with save and load.
 void session_panel(SessionFiles files, StudioActions& actions);
 /// Undo/redo and the last runs with their outcome.

@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cctype>
 #include <optional>
+#include <sstream>
 #include <nlohmann/json.hpp>
 
 #include "pagor/errors.hpp"
@@ -264,6 +266,11 @@ std::string field_tooltip(const ConfigField& f, TrimKind trim) {
 
 namespace {
 
+std::string lower(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
 std::string section_of(const std::string& path) {
   return path.substr(0, path.find_first_of(".["));
 }
@@ -322,11 +329,38 @@ bool class_entries(Config& c, const std::vector<ConfigField>& fields, const Valu
 
 }  // namespace
 
-bool parameter_sections(Config& config, const Config& reference, StudioActions& actions) {
+bool field_matches(const ConfigField& f, const std::string& query) {
+  const std::string text = lower(f.path + " " + f.info.doc);
+  std::istringstream words(lower(query));
+  for (std::string w; words >> w;)
+    if (text.find(w) == std::string::npos) return false;
+  return true;
+}
+
+bool parameter_sections(Config& config, const Config& reference, const std::string& search,
+                        StudioActions& actions) {
   const std::vector<ConfigField> fields = config_fields(config);
   const Values v{config, reference, json::parse(config_to_json(config, -1)),
                  json::parse(config_to_json(reference, -1))};
   bool changed = false, moved = false;  // moved: a class was added or removed
+  if (search.find_first_not_of(" \t") != std::string::npos) {
+    // One list of the fields that match, whatever their section (the pyramid's TRIM and
+    // thresholds are drawn above).
+    std::size_t shown = 0, total = 0;
+    for (const ConfigField& f : fields) {
+      if (f.path == "graph.trim" || f.path == "graph.thresholds" ||
+          section_of(f.path) == "label_scheme")
+        continue;
+      ++total;
+      if (!field_matches(f, search)) continue;
+      ++shown;
+      changed |= field_row(config, f, v, actions);
+      if (changed) break;  // a class name changed: the paths may have moved
+    }
+    ui::figure(ui::format("%zu of %zu parameters match \"%s\"", shown, total, search.c_str()),
+               ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled), true);
+    return changed;
+  }
   Config::sections([&](auto, const FieldInfo& section) {
     const std::string key = section.key;
     if (moved || key == "label_scheme") return;  // the paths moved: drawn again next frame

@@ -32,10 +32,16 @@ std::string field_label(const ConfigField& field, TrimKind trim);
 /// The tooltip of a field: its documentation, its range with unit, its "off" value, its key path.
 std::string field_tooltip(const ConfigField& field, TrimKind trim);
 
+/// Whether a field matches a search: every word of `query` (case-insensitive) is in its key path
+/// or its documentation. An empty query matches every field.
+bool field_matches(const ConfigField& field, const std::string& query);
+
 /// The generated sections of every parameter but the label scheme and the pyramid's TRIM and
 /// thresholds (the Parameters panel draws those above). Edits go through set_field_number /
 /// set_field_json, so the configuration stays valid (a refused value is reported by notify()).
-/// True when something changed.
-bool parameter_sections(Config& config, const Config& reference, StudioActions& actions);
+/// With a non-empty `search`, the fields that match it (field_matches), in one list, instead of
+/// the sections. True when something changed.
+bool parameter_sections(Config& config, const Config& reference, const std::string& search,
+                        StudioActions& actions);
 
 }  // namespace pagor::studio

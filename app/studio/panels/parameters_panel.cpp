@@ -183,8 +183,9 @@ void undo_redo_buttons(const ParamHistory& params, StudioActions& actions, const
   ImGui::EndDisabled();
 }
 
-void parameters_panel(Config& config, std::string& preset, const ParamHistory& params,
-                      const std::string& config_error, StudioActions& actions) {
+void parameters_panel(Config& config, std::string& preset, std::string& search,
+                      const ParamHistory& params, const std::string& config_error,
+                      StudioActions& actions) {
   if (!config_error.empty()) {
     ImGui::PushTextWrapPos(0.0f);
     ImGui::TextColored(kRed, "invalid: %s", config_error.c_str());
@@ -195,7 +196,10 @@ void parameters_panel(Config& config, std::string& preset, const ParamHistory& p
   Config reference = preset_config(preset);
   reference.label_scheme = config.label_scheme;
   section("every parameter (* differs from the preset)");
-  changed |= parameter_sections(config, reference, actions);
+  ui::input_text("find##parameters", &search,
+                 "Only the parameters whose key or description holds every word typed here "
+                 "(case-insensitive), in one list; empty: every section.");
+  changed |= parameter_sections(config, reference, search, actions);
   undo_redo_buttons(params, actions, "");
   ImGui::SameLine();
   if (ui::button("defaults", ImVec2(0, 0),

@@ -9,6 +9,7 @@
 
 #include "pagor/errors.hpp"
 #include "pagor/eval/sweep.hpp"
+#include "panels/param_editor.hpp"
 #include "panels/plot_panel.hpp"
 #include "widgets/bench_plots.hpp"
 #include "widgets/timings.hpp"
@@ -54,18 +55,26 @@ std::string values_around(const ConfigField& f, const Config& c) {
   return out.empty() ? number_text(*v) : out;
 }
 
-// One dimension: the parameter (a combo over every sweepable path) and its values.
-void dimension_fields(const char* id, std::string& path, std::string& values, const Config& c) {
+// One dimension: the parameter (a combo over every sweepable path that matches `search`) and
+// its values.
+void dimension_fields(const char* id, std::string& path, std::string& values, const Config& c,
+                      const std::string& search) {
   ImGui::PushID(id);
   const std::vector<ConfigField> fields = config_fields(c);
   const ConfigField* current = find_field(fields, path);
   if (ui::begin_combo("parameter", path.empty() ? "(none)" : path.c_str(),
-                      "The parameter to sweep, by its key path (pagor config --describe).")) {
-    for (const ConfigField& f : fields)
-      if (sweepable(f.kind) && ui::selectable(f.path.c_str(), f.path == path)) {
+                      "The parameter to sweep, by its key path (pagor config --describe); the "
+                      "list holds those that match \"find\" above.")) {
+    int listed = 0;
+    for (const ConfigField& f : fields) {
+      if (!sweepable(f.kind) || !field_matches(f, search)) continue;
+      ++listed;
+      if (ui::selectable(f.path.c_str(), f.path == path)) {
         path = f.path;
         values = values_around(f, c);
       }
+    }
+    if (listed == 0) ImGui::TextDisabled("no parameter matches \"%s\"", search.c_str());
     ui::end_combo();
   }
   std::string tip = "Comma-separated values; threshold sets separated by ';' (0.02,0.04;0.05).";
@@ -206,7 +215,10 @@ void settings_table(AppState& state, const SweepResult& r, StudioActions& action
 void run_controls(AppState& state, BenchWorker& bench, const BenchStatus& st,
                   StudioActions& actions) {
   BenchViewState& v = state.bench;
-  dimension_fields("dim1", v.sweep_path, v.sweep_values, state.config);
+  ui::input_text("find##sweep", &state.search.sweep,
+                 "Narrow the parameter lists below to the keys or descriptions that hold every "
+                 "word typed here (case-insensitive).");
+  dimension_fields("dim1", v.sweep_path, v.sweep_values, state.config, state.search.sweep);
   bool two = !v.sweep_path2.empty();
   if (ui::checkbox("second parameter (2-D)##sweep", &two,
                    "Sweep every combination of two parameters.")) {
@@ -214,7 +226,8 @@ void run_controls(AppState& state, BenchWorker& bench, const BenchStatus& st,
       v.sweep_path2 = "gnc.noise_bound", v.sweep_values2 = "0.5,1,2";
     if (!two) v.sweep_path2.clear();
   }
-  if (two) dimension_fields("dim2", v.sweep_path2, v.sweep_values2, state.config);
+  if (two)
+    dimension_fields("dim2", v.sweep_path2, v.sweep_values2, state.config, state.search.sweep);
   if (ui::button("run sweep##sweep", ImVec2(0, 0),
                  "Every combination over the open set, reusing each pair's cached stages, with the "
                  "view's jobs (pairs at once).")) {

@@ -456,6 +456,12 @@ bool BenchWorker::evaluate_all(const std::vector<std::size_t>& order, const Conf
   std::atomic<bool> stopped{false};
   // What evaluate() does not catch (out of memory around a row) stops every job and is the
   // pass's error, never an exception leaving a thread.
+  const auto stop = [&](const std::string& what) {
+    stopped = true;
+    std::lock_guard<std::mutex> lock(mutex_);
+    status_.error = "the pass stopped: " + what;
+    status_.busy = false;
+  };
   const auto job = [&](int w) {
     try {
       while (!stopped) {
@@ -463,18 +469,10 @@ bool BenchWorker::evaluate_all(const std::vector<std::size_t>& order, const Conf
         if (!i) return;
         if (!evaluate(w, *i, config, gen)) stopped = true;
       }
+    } catch (const std::exception& e) {
+      stop(e.what());
     } catch (...) {
-      stopped = true;
-      std::string what = "unknown error";
-      try {
-        throw;
-      } catch (const std::exception& e) {
-        what = e.what();
-      } catch (...) {
-      }
-      std::lock_guard<std::mutex> lock(mutex_);
-      status_.error = "the pass stopped: " + what;
-      status_.busy = false;
+      stop("unknown error");
     }
   };
   std::vector<std::thread> threads;

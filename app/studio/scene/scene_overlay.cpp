@@ -171,11 +171,19 @@ int draw_correspondence_lines(ImDrawList* dl, const ViewRect& r, const Snapshot&
   std::vector<char> in_clique(s.correspondences.size(), 0);
   for (int v : clique) in_clique[static_cast<std::size_t>(v)] = 1;
   int drawn = 0;
-  const auto line = [&](const Correspondence& c, ImU32 color, float width, bool outline) {
+  // A clique member (`member`) is outlined and marked at both ends: a dot at the source point, a
+  // ring at the target point, so that one of zero length (a right pose puts p on q) still shows.
+  const auto line = [&](const Correspondence& c, ImU32 color, float width, bool member) {
     ImVec2 a, b;
     if (!to_screen(r, transform_point(pose, c.p), a) || !to_screen(r, c.q.cast<float>(), b)) return;
-    if (outline) dl->AddLine(a, b, IM_COL32(0, 0, 0, 200), width + 2.0f);
+    if (member) dl->AddLine(a, b, IM_COL32(0, 0, 0, 200), width + 2.0f);
     dl->AddLine(a, b, color, width);
+    if (member) {
+      const float ring = std::max(3.5f, width * 1.8f);
+      dl->AddCircle(b, ring + 1.0f, IM_COL32(0, 0, 0, 200), 16, 3.0f);
+      dl->AddCircle(b, ring, color, 16, 1.5f);
+      dl->AddCircleFilled(a, std::max(1.5f, width * 0.8f), color, 8);
+    }
     ++drawn;
   };
   const DiagnosisView& dv = view.diagnosis;

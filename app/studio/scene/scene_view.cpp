@@ -150,6 +150,7 @@ void SceneView::update(const Snapshot& s, const ViewState& view, const Transform
   // Landmarks: small; again when the snapshot, the level, the pose or the colouring change.
   const int level = shown_level(view, s.selected, static_cast<int>(s.levels.size()));
   std::string key = std::to_string(level) + (view.layers.all_correspondences ? "a" : "c") +
+                    (view.layers.correspondences ? "l" : "n") +
                     (view.color == ColorMode::by_class ? "k" : "s");
   for (int i = 0; i < 16; ++i) key += std::to_string(pose(i / 4, i % 4)) + ",";
   if (s.request == overlay_request_ && key == overlay_key_) return;
@@ -159,12 +160,25 @@ void SceneView::update(const Snapshot& s, const ViewState& view, const Transform
   std::vector<char> used_src(s.source_landmarks.landmarks.size(), 0),
       used_tgt(s.target_landmarks.landmarks.size(), 0);
   // A matcher's correspondences name keypoints of their own, not landmarks: their points p and q
-  // are drawn as keypoints (source under the pose), whether or not clouds came with them.
-  std::vector<float> matcher_src, matcher_tgt;
-  for (const auto& c : s.correspondences) {
+  // are drawn as keypoints (source under the pose), whether or not clouds came with them. With the
+  // clique's lines shown, its members stand out and the rest (often a thousand and more) are
+  // faint.
+  std::vector<char> in_clique(s.correspondences.size(), 0);
+  const bool dim_others = view.layers.correspondences && level >= 0;
+  if (dim_others)
+    for (int v : s.levels[static_cast<std::size_t>(level)].clique)
+      if (v >= 0 && static_cast<std::size_t>(v) < in_clique.size())
+        in_clique[static_cast<std::size_t>(v)] = 1;
+  const auto faint = [](Rgba c) { return Rgba{c[0], c[1], c[2], 60}; };
+  std::vector<float> matcher_src, matcher_tgt, strong_src, strong_tgt;  // strong: drawn last
+  for (std::size_t i = 0; i < s.correspondences.size(); ++i) {
+    const Correspondence& c = s.correspondences[i];
     if (c.origin == CorrespondenceOrigin::matcher) {
-      push(matcher_src, transform_point(pose, c.p), Palette::source);
-      push(matcher_tgt, c.q.cast<float>(), Palette::target);
+      const bool strong = !dim_others || in_clique[i];
+      push(strong ? strong_src : matcher_src, transform_point(pose, c.p),
+           strong ? Palette::source : faint(Palette::source));
+      push(strong ? strong_tgt : matcher_tgt, c.q.cast<float>(),
+           strong ? Palette::target : faint(Palette::target));
       continue;
     }
     if (c.source >= 0 && static_cast<std::size_t>(c.source) < used_src.size())
@@ -194,8 +208,11 @@ void SceneView::update(const Snapshot& s, const ViewState& view, const Transform
                                                  LandmarkKind::keypoint);
   std::vector<float> key_tgt = landmark_vertices(s.target_landmarks, used_tgt, false,
                                                  LandmarkKind::keypoint);
-  key_src.insert(key_src.end(), matcher_src.begin(), matcher_src.end());
-  key_tgt.insert(key_tgt.end(), matcher_tgt.begin(), matcher_tgt.end());
+  faint_keypoints_ = matcher_src.size() / kFloatsPerVertex;
+  for (const std::vector<float>* m : {&matcher_src, &strong_src})
+    key_src.insert(key_src.end(), m->begin(), m->end());
+  for (const std::vector<float>* m : {&matcher_tgt, &strong_tgt})
+    key_tgt.insert(key_tgt.end(), m->begin(), m->end());
   upload(keypoints_src_, key_src);
   upload(keypoints_tgt_, key_tgt);
 }

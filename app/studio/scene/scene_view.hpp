@@ -61,6 +61,9 @@ class SceneView {
   GLuint texture() const { return color_texture_; }
   /// Cloud uploads so far (a test of "no re-upload per frame").
   int cloud_uploads() const { return cloud_uploads_; }
+  /// A matcher's source points drawn faint at the last update: those outside the shown clique
+  /// while its lines are shown (0 otherwise).
+  std::size_t faint_keypoints() const { return faint_keypoints_; }
   /// Renders that drew (not served from the last picture), and those drawn thinned.
   int renders() const { return renders_; }
   int thinned_renders() const { return thinned_renders_; }
@@ -112,6 +115,7 @@ class SceneView {
   std::uint64_t overlay_request_ = 0;
   std::string overlay_key_;
   int cloud_uploads_ = 0;
+  std::size_t faint_keypoints_ = 0;
   std::uint64_t content_version_ = 0;  // counts uploads: a render key part
   std::vector<double> last_key_;
   Eigen::Matrix4f last_vp_ = Eigen::Matrix4f::Zero();

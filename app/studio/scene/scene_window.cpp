@@ -210,7 +210,7 @@ void scene_window(SceneView& scene, const Snapshot* s, const ViewState& view,
   const Transform pose = shown_source_pose(view, *s);
   if (!camera_control.fitted && s->request >= camera_control.fit_request) {
     Eigen::Vector3f lo, hi;
-    if (shown_bounds(*s, view, pose, lo, hi)) camera.fit(lo, hi);
+    if (shown_bounds(*s, view, pose, lo, hi)) camera.fit(lo, hi, float(w) / float(h));
     camera_control.fitted = true;
   }
   scene.update(*s, view, pose);

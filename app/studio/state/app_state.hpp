@@ -12,6 +12,7 @@
 #include "pagor/eval/dataset.hpp"
 #include "pagor/eval/pair_set.hpp"
 #include "state/camera.hpp"
+#include "state/camera_views.hpp"
 #include "state/message.hpp"
 
 namespace pagor::studio {
@@ -151,6 +152,12 @@ struct FileDialogState {
   std::string listing_error;  ///< why the directory could not be listed (empty: it was)
 };
 
+/// What the parameter lists are narrowed to (param_editor.hpp: field_matches); not saved.
+struct SearchState {
+  std::string parameters;  ///< the Parameters panel's every-parameter list
+  std::string sweep;       ///< the sweep's parameter choices
+};
+
 struct AppState {
   PairSource data;       ///< as the user wrote it; relative paths are taken from `base_dir`
   std::string base_dir;  ///< directory of the loaded session file (empty: working directory)
@@ -172,6 +179,7 @@ struct AppState {
   LayoutState layout;
   Camera camera;
   bool camera_fitted = false;  ///< false: fit to the data when it arrives
+  std::vector<CameraView> camera_views;  ///< saved with "save view", restored with a click
 
   std::string session_path = "pagor-session.json";
   std::string screenshot_path = "pagor-studio.png";
@@ -185,6 +193,7 @@ struct AppState {
   std::vector<std::string> recent;  ///< recently opened files, newest first (absolute)
   std::string recent_file;          ///< where `recent` is kept between runs (empty: not kept)
   bool show_help = false;           ///< the shortcut overlay (F1 or H)
+  SearchState search;               ///< the parameter lists' search fields
   int width = 1280, height = 720;   ///< window or image size [px]
 };
 

@@ -73,10 +73,27 @@ void Camera::zoom(float steps) {
   distance = std::clamp(distance * std::pow(0.88f, steps), 0.5f, 5000.0f);
 }
 
-void Camera::fit(const Eigen::Vector3f& lo, const Eigen::Vector3f& hi) {
+void Camera::fit(const Eigen::Vector3f& lo, const Eigen::Vector3f& hi, float aspect) {
   target = 0.5f * (lo + hi);
-  const float radius = std::max(1.0f, 0.5f * (hi - lo).norm());
-  distance = radius / std::tan(fov_deg * 0.5f * kDegToRad) * (top_down ? 0.75f : 0.9f);
+  aspect = std::isfinite(aspect) && aspect > 0 ? aspect : 1.0f;
+  const float tan_half = std::tan(fov_deg * 0.5f * kDegToRad);
+  // The box's corners on the screen's axes (right, up) and towards the camera (back); the view's
+  // directions do not depend on the distance. Straight down (orthographic) the half height shown
+  // is distance * tan_half; in perspective a corner at `back` towards the camera is seen within
+  // the frame from distance back + |right| / (tan_half * aspect) and back + |up| / tan_half.
+  const Eigen::Matrix4f V = view();
+  const Eigen::Vector3f right = V.block<1, 3>(0, 0).transpose(),
+                        up = V.block<1, 3>(1, 0).transpose(),
+                        back = V.block<1, 3>(2, 0).transpose();
+  float needed = 0.5f / tan_half;  // at least a metre across
+  for (int k = 0; k < 8; ++k) {
+    const Eigen::Vector3f c = Eigen::Vector3f((k & 1) ? hi.x() : lo.x(), (k & 2) ? hi.y() : lo.y(),
+                                              (k & 4) ? hi.z() : lo.z()) -
+                              target;
+    const float x = std::abs(c.dot(right)) / (tan_half * aspect), y = std::abs(c.dot(up)) / tan_half;
+    needed = std::max(needed, (top_down ? 0.0f : c.dot(back)) + std::max(x, y));
+  }
+  distance = std::clamp(needed * 1.06f, 0.5f, 5000.0f);  // a margin of 6 %
 }
 
 bool project_to_screen(const Eigen::Matrix4f& vp, const Eigen::Vector3f& p, float width,

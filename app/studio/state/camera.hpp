@@ -28,8 +28,10 @@ struct Camera {
   void pan(float dx, float dy, float height);
   /// Wheel steps: positive zooms in.
   void zoom(float steps);
-  /// Centres on the box [lo, hi] and sets the distance to see all of it.
-  void fit(const Eigen::Vector3f& lo, const Eigen::Vector3f& hi);
+  /// Centres on the box [lo, hi] and sets the distance to see all of it in a viewport of this
+  /// width / height: its bounding sphere in perspective; top-down, its corners at the camera's
+  /// yaw, so that the whole box is framed however long and however turned.
+  void fit(const Eigen::Vector3f& lo, const Eigen::Vector3f& hi, float aspect = 1.0f);
 };
 
 /// Projects a world point with a view-projection matrix to pixel coordinates (origin top-left) in

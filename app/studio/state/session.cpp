@@ -11,6 +11,7 @@
 #include "pagor/report.hpp"  // matrix_json: a transform as the report writes it
 #include "render/headless.hpp"
 #include "state/app_state.hpp"
+#include "state/camera_views.hpp"
 #include "state/session_json.hpp"
 #include "widgets/number_format.hpp"
 
@@ -22,8 +23,6 @@ using namespace session_json;
 
 constexpr long long kMaxFrame = 999999;           // KITTI frame numbers have six digits
 constexpr long long kMaxSeed = 9007199254740991;  // 2^53 - 1: exact in every JSON reader
-constexpr double kMaxCoordinate = 1e7;            // [m]
-constexpr float kMinDistance = 0.5f, kMaxDistance = 5000.0f;  // as Camera::zoom clamps [m]
 
 constexpr const char* kColorNames[] = {"class", "cloud", "height", "intensity", "residual"};
 
@@ -154,24 +153,6 @@ PairSource read_data(const json& d, const std::string& where,
   return src;
 }
 
-void read_camera(const json& c, const std::string& where, Camera& cam) {
-  if (!c.is_object()) throw InputError(where + ": expected an object");
-  reject_unknown(c, where, {"target", "distance", "yaw_deg", "pitch_deg", "top_down"});
-  if (const json* t = find(c, "target")) {
-    if (!t->is_array() || t->size() != 3) throw InputError(where + ".target: expected [x, y, z]");
-    for (int i = 0; i < 3; ++i) {
-      const json& x = (*t)[static_cast<std::size_t>(i)];
-      if (!x.is_number() || !(std::abs(x.get<double>()) <= kMaxCoordinate))
-        throw InputError(where + ".target[" + std::to_string(i) + "]: expected a number within " +
-                         "+-1e7 m, got " + x.dump());
-      cam.target[i] = static_cast<float>(x.get<double>());
-    }
-  }
-  cam.distance = get_float(c, "distance", where, cam.distance, kMinDistance, kMaxDistance);
-  cam.yaw_deg = get_float(c, "yaw_deg", where, cam.yaw_deg, -3600.0f, 3600.0f);
-  cam.pitch_deg = get_float(c, "pitch_deg", where, cam.pitch_deg, -89.9f, 89.9f);
-  cam.top_down = get_bool(c, "top_down", where, cam.top_down);
-}
 
 void read_diagnosis_view(const json& d, const std::string& where, ViewState& view) {
   if (!d.is_object()) throw InputError(where + ": expected an object");
@@ -246,18 +227,13 @@ json session_config(const AppState& s) {
 }  // namespace
 
 void save_session(const AppState& s, const std::string& path) {
-  const Camera& c = s.camera;
   json j = {{"schema", "pagor.session/1"},
             {"data", s.have_data ? data_json(s.data, s.inline_truth) : json()},
             {"pairs_file", s.pairs_file},
             {"export_path", s.export_path},
             {"config", session_config(s)},
-            {"camera",
-             {{"target", {number(c.target.x()), number(c.target.y()), number(c.target.z())}},
-              {"distance", number(c.distance)},
-              {"yaw_deg", number(c.yaw_deg)},
-              {"pitch_deg", number(c.pitch_deg)},
-              {"top_down", c.top_down}}},
+            {"camera", camera_json(s.camera)},
+            {"camera_views", camera_views_json(s.camera_views)},
             {"view",
              {{"layers",
                {{"source", s.view.layers.source},
@@ -300,8 +276,8 @@ void load_session(const std::string& path, AppState& s) {
   }
   if (!j.is_object()) throw InputError(path + ": expected a JSON object");
   reject_unknown(j, path + ":",
-                 {"schema", "data", "pairs_file", "export_path", "config", "camera", "view",
-                  "layout", "window", "benchmark"});
+                 {"schema", "data", "pairs_file", "export_path", "config", "camera", "camera_views",
+                  "view", "layout", "window", "benchmark"});
   const std::string schema = get_string(j, "schema", path + ":", "pagor.session/1");
   if (schema != "pagor.session/1")
     throw InputError(path + ": schema: expected \"pagor.session/1\", got \"" + schema + "\"");
@@ -332,6 +308,8 @@ void load_session(const std::string& path, AppState& s) {
   } else {
     next.camera_fitted = false;
   }
+  if (const json* v = find(j, "camera_views"))
+    next.camera_views = read_camera_views(*v, path + ": camera_views");
   if (const json* v = find(j, "view")) read_view(*v, path + ": view", next.view);
   if (const json* l = find(j, "layout")) {
     const std::string where = path + ": layout";

@@ -10,6 +10,7 @@
 #include "pagor/errors.hpp"
 #include "pagor/indoor/floor_projection.hpp"
 #include "pagor/io/atomic_file.hpp"
+#include "pagor/eval/pair_set.hpp"
 #include "pagor/io/clouds.hpp"
 
 namespace pagor {
@@ -341,13 +342,8 @@ void write_indoor_sequence(const std::string& dir, const IndoorSceneParams& para
     const std::string name = buf;
     write_kitti_bin(ray_cast_indoor(w, pose, lidar, rng),
                     (fs::path(dir) / "scans" / (name + ".bin")).string());
-    const Transform T = pose_transform(pose);
-    std::string gt;
-    for (int r = 0; r < 4; ++r) {
-      std::snprintf(buf, sizeof(buf), "%.9f %.9f %.9f %.9f\n", T(r, 0), T(r, 1), T(r, 2), T(r, 3));
-      gt += buf;
-    }
-    write_file_atomic((fs::path(dir) / "gt" / (name + ".txt")).string(), gt);
+    write_file_atomic((fs::path(dir) / "gt" / (name + ".txt")).string(),
+                      transform_file_text(pose_transform(pose)));
     std::snprintf(buf, sizeof(buf), "%.6f %.6f %.6f\n", pose.x(), pose.y(), pose.z());
     poses += buf;
     pairs += "scans/" + name + ".bin plan.json gt=gt/" + name + ".txt name=" + name + "\n";

@@ -1,6 +1,7 @@
 #include "pagor/eval/pair_set.hpp"
 
 #include <Eigen/LU>
+#include <cstdio>
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -154,6 +155,17 @@ void check_rigid(const Transform& T, const std::string& where) {
   if (std::abs(R.determinant() - 1.0) > kRigidTolerance)
     throw InputError(where + ": the rotation part has determinant " +
                      std::to_string(R.determinant()) + " (a reflection?); expected +1");
+}
+
+std::string transform_file_text(const Transform& T) {
+  std::string text;
+  char row[128];
+  for (int r = 0; r < 4; ++r) {
+    std::snprintf(row, sizeof(row), "%.17g %.17g %.17g %.17g\n", T(r, 0), T(r, 1), T(r, 2),
+                  T(r, 3));
+    text += row;
+  }
+  return text;
 }
 
 Transform read_transform_file(const std::string& path) {

@@ -63,6 +63,10 @@ std::string pair_fingerprint(const PairEntry& entry);
 /// last row is not (0 0 0 1), or the rotation is not orthonormal with determinant +1.
 Transform read_transform_file(const std::string& path);
 
+/// The text of a transform file: four rows of four numbers, each printed so that
+/// read_transform_file reads back the same double (%.17g).
+std::string transform_file_text(const Transform& T);
+
 /// Throws InputError (prefixed by `where`) when `T` is not a rigid transform: rotation
 /// orthonormal within 1e-3 and det +1, last row (0 0 0 1), all entries finite.
 void check_rigid(const Transform& T, const std::string& where);
