@@ -48,6 +48,9 @@ bool ImGuiRenderer::init(const Gl& gl, std::string& error) {
   return true;
 }
 
+void opaque_begin(const ImDrawList*, const ImDrawCmd*) {}
+void opaque_end(const ImDrawList*, const ImDrawCmd*) {}
+
 void ImGuiRenderer::render(const ImDrawData* data, int fb_width, int fb_height) {
   if (!data || fb_width <= 0 || fb_height <= 0) return;
   const Gl& gl = *gl_;
@@ -84,6 +87,13 @@ void ImGuiRenderer::render(const ImDrawData* data, int fb_width, int fb_height) 
                   list->IdxBuffer.Data, GL_STREAM_DRAW);
     for (int c = 0; c < list->CmdBuffer.Size; ++c) {
       const ImDrawCmd& cmd = list->CmdBuffer[c];
+      if (cmd.UserCallback == kOpaqueBegin || cmd.UserCallback == kOpaqueEnd) {
+        if (cmd.UserCallback == kOpaqueBegin)
+          gl.Disable(GL_BLEND);
+        else
+          gl.Enable(GL_BLEND);
+        continue;
+      }
       if (cmd.UserCallback) {
         cmd.UserCallback(list, &cmd);
         continue;

@@ -11,6 +11,14 @@
 
 namespace pagor::studio {
 
+/// Draw-list callbacks the renderer acts on: the commands between kOpaqueBegin and kOpaqueEnd are
+/// drawn without blending (an opaque picture, such as the 3D view's texture: the same pixels, and
+/// no read of what is under it, which software GL pays for per pixel).
+/// `ImGui::GetWindowDrawList()->AddCallback(kOpaqueBegin, nullptr)`.
+void opaque_begin(const ImDrawList*, const ImDrawCmd*);
+void opaque_end(const ImDrawList*, const ImDrawCmd*);
+inline const ImDrawCallback kOpaqueBegin = &opaque_begin, kOpaqueEnd = &opaque_end;
+
 class ImGuiRenderer {
  public:
   /// Builds the program, buffers and the font atlas texture. Returns false with `error` filled.

@@ -337,6 +337,9 @@ void SceneView::render(int width, int height, const Camera& camera, const ViewSt
   ++renders_;
   if (stride > 1) ++thinned_renders_;
   resize(width, height);
+  // Moving: also half the resolution (a quarter of the pixels to clear and fill), in the
+  // texture's bottom-left quarter, shown stretched (texture_share).
+  share_ = stride > 1 ? 0.5f : 1.0f;
   draw_scene(vp, view, pose, stride);
 }
 
@@ -344,10 +347,17 @@ void SceneView::draw_scene(const Eigen::Matrix4f& vp, const ViewState& view, con
                            int stride) {
   const Gl& gl = *gl_;
   gl.BindFramebuffer(GL_FRAMEBUFFER, fbo_);
-  gl.Viewport(0, 0, fb_width_, fb_height_);
+  const int w = std::max(1, static_cast<int>(std::lround(fb_width_ * share_))),
+            h = std::max(1, static_cast<int>(std::lround(fb_height_ * share_)));
+  gl.Viewport(0, 0, w, h);
+  gl.Enable(GL_SCISSOR_TEST);  // the clear too: only the share drawn
+  gl.Scissor(0, 0, w, h);
   const auto& bg = Palette::background;
   gl.ClearColor(bg[0] / 255.0f, bg[1] / 255.0f, bg[2] / 255.0f, 1.0f);
   gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  gl.Disable(GL_SCISSOR_TEST);
+  // Point sizes in the texture's pixels: at half the resolution, half the size (shown the same).
+  const auto px = [&](float size) { return std::max(1.0f, size * share_); };
   gl.Enable(GL_DEPTH_TEST);
   gl.DepthFunc(GL_LEQUAL);
   gl.Enable(GL_PROGRAM_POINT_SIZE);
@@ -359,25 +369,25 @@ void SceneView::draw_scene(const Eigen::Matrix4f& vp, const ViewState& view, con
   const bool by_cloud = view.color == ColorMode::by_cloud;
   const bool residual = view.color == ColorMode::residual;
   if (view.layers.target)
-    draw(target_, GL_POINTS, vp, view.point_size, false,
+    draw(target_, GL_POINTS, vp, px(view.point_size), false,
          by_cloud   ? &Palette::target
          : residual ? &Palette::plain
                     : nullptr,
          stride);
   if (view.layers.source && shown_contribution(view) != Contribution::off)
-    draw(contribution_, GL_POINTS, vp * contribution_pose_.cast<float>(), view.point_size + 1.0f,
+    draw(contribution_, GL_POINTS, vp * contribution_pose_.cast<float>(), px(view.point_size + 1.0f),
          false, nullptr, stride);
   else if (view.layers.source)
-    draw(source_, GL_POINTS, source_mvp, view.point_size, false,
+    draw(source_, GL_POINTS, source_mvp, px(view.point_size), false,
          by_cloud ? &Palette::source : nullptr, stride);
   // Landmarks on top of the clouds (lines are drawn over everything by the overlay).
   gl.DepthMask(GL_FALSE);
   gl.Disable(GL_DEPTH_TEST);
   if (view.layers.landmarks) {
-    draw(keypoints_tgt_, GL_POINTS, vp, view.landmark_size * 0.5f, true, nullptr);
-    draw(keypoints_src_, GL_POINTS, vp, view.landmark_size * 0.5f, true, nullptr);
-    draw(landmarks_tgt_, GL_POINTS, vp, view.landmark_size, true, nullptr);
-    draw(landmarks_src_, GL_POINTS, vp, view.landmark_size, true, nullptr);
+    draw(keypoints_tgt_, GL_POINTS, vp, px(view.landmark_size * 0.5f), true, nullptr);
+    draw(keypoints_src_, GL_POINTS, vp, px(view.landmark_size * 0.5f), true, nullptr);
+    draw(landmarks_tgt_, GL_POINTS, vp, px(view.landmark_size), true, nullptr);
+    draw(landmarks_src_, GL_POINTS, vp, px(view.landmark_size), true, nullptr);
   }
   gl.DepthMask(GL_TRUE);
   gl.BindVertexArray(0);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "pagor/graph/trim.hpp"
+#include "render/imgui_renderer.hpp"
 #include "scene/diagnosis_overlay.hpp"
 #include "scene/picking.hpp"
 #include "scene/plan_overlay.hpp"
@@ -217,8 +218,14 @@ void scene_window(SceneView& scene, const Snapshot* s, const ViewState& view,
   scene.render(w, h, camera, view, pose);
 
   const ImVec2 origin = ImGui::GetCursorScreenPos();
+  // The picture is opaque: drawn without blending. While the camera moves it may fill only a
+  // share of the texture (drawn at a lower resolution), shown stretched over the view.
+  const float share = scene.texture_share();
+  ImGui::GetWindowDrawList()->AddCallback(kOpaqueBegin, nullptr);
   ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(scene.texture())),
-               ImVec2(static_cast<float>(w), static_cast<float>(h)), ImVec2(0, 1), ImVec2(1, 0));
+               ImVec2(static_cast<float>(w), static_cast<float>(h)), ImVec2(0, share),
+               ImVec2(share, 0));
+  ImGui::GetWindowDrawList()->AddCallback(kOpaqueEnd, nullptr);
   const bool hovered = ImGui::IsItemHovered();
   ImDrawList* dl = ImGui::GetWindowDrawList();
   dl->PushClipRect(origin, ImVec2(origin.x + w, origin.y + h), true);
