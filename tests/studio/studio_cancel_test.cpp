@@ -6,6 +6,7 @@
 #include <fstream>
 #include <thread>
 
+#include "panels/benchmark_view.hpp"
 #include "runners/bench_worker.hpp"
 #include "studio_test_util.hpp"
 #include "ui_driver.hpp"
@@ -102,12 +103,18 @@ TEST_CASE("benchmark view: the cancel and resume buttons, driven") {
   REQUIRE(d.click_widget("open and run##bench", "Benchmark"));
   d.frame();
   REQUIRE(d.find("cancel##bench", "Benchmark"));  // four pairs take seconds
+  const studio::BenchStatus running = d.studio().bench().status();
+  if (running.busy) CHECK_THAT(studio::progress_line(running), Catch::Contains(" left (running)"));
   REQUIRE(d.click_widget("cancel##bench", "Benchmark"));
   wait_for(d.studio().bench(), [](const studio::BenchStatus& st) { return !st.busy; });
   d.frames(2);
   const studio::BenchStatus st = d.studio().bench().status();
   CHECK(st.cancelled);
   CHECK(st.done < st.total);
+  // Nothing is left to wait for: the line says cancelled and gives no time left.
+  CHECK_THAT(studio::progress_line(st),
+             Catch::Contains("(cancelled)") && !Catch::Contains("left") &&
+                 Catch::StartsWith(std::to_string(st.done) + "/4 pairs"));
   CHECK_FALSE(d.find("cancel##bench", "Benchmark"));
   CHECK_FALSE(d.texts("cancelled after", "Benchmark").empty());  // the reason, shown
   REQUIRE(d.click_widget("resume##bench", "Benchmark"));

@@ -131,18 +131,30 @@ void source_controls(AppState& state, BenchWorker& bench, StudioActions& actions
     state.main_view = MainView::pair;
 }
 
-// "3/40 pairs, 1.90 pairs/s, 19 s left (running); 1.58 s with 2 jobs". The rate and the time
-// left are timings too: hidden ("--") in regression renders.
+}  // namespace
+
 std::string progress_line(const BenchStatus& st) {
   const SetProgress p = st.pass_progress();
-  std::string text = ui::timings_shown()
-                         ? progress_text(p)
-                         : std::to_string(p.done) + "/" + std::to_string(p.total) + " pairs, " +
-                               ui::kHiddenTiming + " pairs/s, " + ui::kHiddenTiming + " s left";
-  text += st.busy ? " (running); " : "; ";
+  std::string text;
+  if (st.busy) {
+    text = ui::timings_shown() ? progress_text(p)
+                               : std::to_string(p.done) + "/" + std::to_string(p.total) +
+                                     " pairs, " + ui::kHiddenTiming + " pairs/s, " +
+                                     ui::kHiddenTiming + " s left";
+    text += " (running); ";
+  } else {  // nothing is left to wait for: no time left
+    const auto rate = p.rate();
+    text = std::to_string(p.done) + "/" + std::to_string(p.total) + " pairs, " +
+           (!ui::timings_shown() ? ui::kHiddenTiming
+            : rate              ? ui::format("%.2f", *rate)
+                                : std::string("n/a")) +
+           " pairs/s" + (st.cancelled ? " (cancelled); " : "; ");
+  }
   return text + ui::timing("%.2f s", st.pass_ms / 1000.0) + " with " + std::to_string(st.jobs) +
          (st.jobs == 1 ? " job" : " jobs");
 }
+
+namespace {
 
 // The number of pairs evaluated at once, and a button for one per core.
 void jobs_controls(BenchViewState& v, BenchWorker& bench) {
