@@ -158,13 +158,12 @@ struct SearchState {
   std::string sweep;       ///< the sweep's parameter choices
 };
 
-struct AppState {
-  PairSource data;       ///< as the user wrote it; relative paths are taken from `base_dir`
-  std::string base_dir;  ///< directory of the loaded session file (empty: working directory)
+/// What a session file holds (save_session writes this part only): the data, the parameters,
+/// the view, the camera and its saved views, the layout, the window and the benchmark view.
+struct SessionState {
+  PairSource data;  ///< as the user wrote it; relative paths are taken from `base_dir`
   bool have_data = false;
   std::string pairs_file;  ///< optional: a KITTI pairs file or a manifest to step through
-  PairSet pairs;           ///< read from pairs_file (read_step_pairs)
-  int pair_index = -1;     ///< the pair of `pairs` shown, -1: none of them
   /// A ground truth that came with the data without a file (a row of `pagor bench --out`
   /// results); dropped when other data is opened.
   std::optional<Transform> inline_truth;
@@ -178,14 +177,20 @@ struct AppState {
   ViewState view;
   LayoutState layout;
   Camera camera;
-  bool camera_fitted = false;  ///< false: fit to the data when it arrives
   std::vector<CameraView> camera_views;  ///< saved with "save view", restored with a click
 
-  std::string session_path = "pagor-session.json";
-  std::string screenshot_path = "pagor-studio.png";
   /// The pair view's exports (result JSON, levels and diagnosis CSV) go to <export_path>-<name>;
   /// the benchmark view has its own (bench.plot_path).
   std::string export_path = "pagor-pair";
+  int width = 1280, height = 720;  ///< window or image size [px]
+};
+
+/// What the UI holds between frames and no session keeps: messages, picks, the file browser,
+/// the recent files, the help overlay, the search fields, where files are saved to.
+struct UiState {
+  std::string session_path = "pagor-session.json";
+  std::string screenshot_path = "pagor-studio.png";
+  bool camera_fitted = false;  ///< false: fit to the data when it arrives
   Message message;  ///< the last message for the user (StudioActions::notify), in the status bar
   bool want_screenshot = false;
   std::vector<Pick> picks;          ///< at most two: coordinates, and the distance between
@@ -194,11 +199,19 @@ struct AppState {
   std::string recent_file;          ///< where `recent` is kept between runs (empty: not kept)
   bool show_help = false;           ///< the shortcut overlay (F1 or H)
   SearchState search;               ///< the parameter lists' search fields
-  int width = 1280, height = 720;   ///< window or image size [px]
 };
 
-/// Writes the state as a session file (schema pagor.session/1). Throws pagor::InputError.
-void save_session(const AppState& state, const std::string& path);
+/// The studio's whole state: the session's part, the UI's part, and what follows from the session
+/// (where its relative paths start, the pairs read from its pairs file).
+struct AppState : SessionState, UiState {
+  std::string base_dir;  ///< directory of the loaded session file (empty: working directory)
+  PairSet pairs;         ///< read from pairs_file (read_step_pairs)
+  int pair_index = -1;   ///< the pair of `pairs` shown, -1: none of them
+};
+
+/// Writes the session's part of the state as a session file (schema pagor.session/1). Throws
+/// pagor::InputError.
+void save_session(const SessionState& state, const std::string& path);
 
 /// Reads a session file into `state`. Data paths are kept as written; relative ones are taken
 /// from the session file's directory (`base_dir`). Throws pagor::InputError or

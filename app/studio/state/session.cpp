@@ -218,7 +218,7 @@ void read_view(const json& v, const std::string& where, ViewState& view) {
 namespace {
 
 // The configuration with the preset it starts from (the reference of resets and marks).
-json session_config(const AppState& s) {
+json session_config(const SessionState& s) {
   json c = json::parse(config_to_json(s.config));
   c["preset"] = s.preset;
   return c;
@@ -226,7 +226,7 @@ json session_config(const AppState& s) {
 
 }  // namespace
 
-void save_session(const AppState& s, const std::string& path) {
+void save_session(const SessionState& s, const std::string& path) {
   json j = {{"schema", "pagor.session/1"},
             {"data", s.have_data ? data_json(s.data, s.inline_truth) : json()},
             {"pairs_file", s.pairs_file},

@@ -9,7 +9,7 @@ namespace pagor::studio {
 
 using namespace session_json;
 
-json bench_json(const AppState& s) {
+json bench_json(const SessionState& s) {
   const BenchViewState& b = s.bench;
   return {{"shown", s.main_view == MainView::benchmark},
           {"open", b.open},

@@ -42,10 +42,11 @@ json number(float f);
 namespace pagor::studio {
 
 struct AppState;
+struct SessionState;
 
 /// The benchmark view's part of a session (session_bench.cpp): written, and read back with the
 /// same checks as the rest.
-nlohmann::json bench_json(const AppState& s);
+nlohmann::json bench_json(const SessionState& s);
 void read_bench(const nlohmann::json& j, const std::string& where, AppState& s);
 
 }  // namespace pagor::studio
