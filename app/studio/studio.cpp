@@ -252,7 +252,9 @@ void Studio::pair_view(float x, float w, float H) {
   // With a result the 3D view's picture covers the window: no background under it.
   if (ImGui::Begin(scene_title().c_str(), nullptr,
                    kPanelFlags | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse |
-                       (snapshot_ ? ImGuiWindowFlags_NoBackground : 0)))
+                       (snapshot_ && (snapshot_->target || !snapshot_->correspondences.empty())
+                            ? ImGuiWindowFlags_NoBackground
+                            : 0)))
     scene_window(scene_, snapshot_.get(), state_.view, camera_control(), state_.picks);
   ImGui::End();
   ImGui::PopStyleVar(2);

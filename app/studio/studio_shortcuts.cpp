@@ -113,12 +113,15 @@ void Studio::help_overlay(float W, float H) {
                    ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
                        ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoMove)) {
     if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) {
+      ImGui::TableSetupColumn("keys");
+      ImGui::TableSetupColumn("action", ImGuiTableColumnFlags_WidthFixed,
+                              std::min(520.0f, std::max(200.0f, W * 0.5f)));
       for (const Shortcut& s : shortcuts()) {
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
         ui::figure(s.keys, ImVec4(1.0f, 0.85f, 0.4f, 1.0f));
         ImGui::TableNextColumn();
-        ui::figure(s.action);
+        ui::figure(s.action, ImVec4(0, 0, 0, 0), true);
       }
       ImGui::EndTable();
     }

@@ -81,6 +81,8 @@ TEST_CASE("benchmark view: a cancelled sweep leaves no result, and the next swee
   CHECK_FALSE(worker.sweep_result());
   CHECK(st.sweep_error.rfind("the sweep was cancelled", 0) == 0);
   CHECK(st.sweep_done < st.sweep_total);
+  CHECK_FALSE(st.cancelled);  // the pass before it was whole: no "(cancelled)", no "resume"
+  CHECK(st.done == st.total);
   // The worker goes on: the same sweep again completes with a result for every setting.
   worker.sweep(settings, semreg_config());
   wait_for(worker, [&](const studio::BenchStatus& s) {
@@ -104,7 +106,8 @@ TEST_CASE("benchmark view: the cancel and resume buttons, driven") {
   d.frame();
   REQUIRE(d.find("cancel##bench", "Benchmark"));  // four pairs take seconds
   const studio::BenchStatus running = d.studio().bench().status();
-  if (running.busy) CHECK_THAT(studio::progress_line(running), Catch::Contains(" left (running)"));
+  REQUIRE(running.busy);
+  CHECK_THAT(studio::progress_line(running), Catch::Contains(" left (running)"));
   REQUIRE(d.click_widget("cancel##bench", "Benchmark"));
   wait_for(d.studio().bench(), [](const studio::BenchStatus& st) { return !st.busy; });
   d.frames(2);

@@ -158,9 +158,19 @@ TEST_CASE("a search narrows the parameter editor and the sweep's parameter list"
   CHECK(narrowed >= 1);
   CHECK(narrowed < 10);
   CHECK_FALSE(d.texts("parameters match", "Pagor Studio").empty());
-  // A field found is edited as in its section.
+  // A field found is edited as in its section; the list names it by its whole key path.
   const auto* nb = d.find_param("gnc.noise_bound");
   REQUIRE(nb);
+  CHECK(nb->label.rfind("gnc.noise_bound", 0) == 0);
+  REQUIRE(d.type_into_slider(nb->id, U"0.75"));
+  d.frames(2);
+  CHECK(d.state().config.gnc.noise_bound == Approx(0.75));
+  // A class's field, found among the classes by its key.
+  REQUIRE(d.type_into(d.find("find##parameters", "Pagor Studio")->id, U"classes[0] voxel"));
+  d.frames(2);
+  const auto* cv = d.find_param("landmarks.classes[0].voxel_size");
+  REQUIRE(cv);
+  CHECK(cv->label.rfind("landmarks.classes[0].voxel_size", 0) == 0);
   // Nothing matches: said so; cleared: every section again.
   REQUIRE(d.type_into(d.find("find##parameters", "Pagor Studio")->id, U"no such words"));
   d.frames(2);

@@ -285,6 +285,7 @@ TEST_CASE("camera views: saved and restored, copied and pasted as JSON; the help
   // Pasted JSON sets the camera; text that is not a camera is an error naming the clipboard, and
   // the camera stays.
   ImGui::SetClipboardText(R"({"distance": 25, "yaw_deg": 5, "top_down": true})");
+  s.camera_fitted = false;  // a fit pending (as after new data): the pasted view must stay
   REQUIRE(d.click_widget("paste view", "Pagor Studio"));
   CHECK(s.camera.distance == 25.0f);
   CHECK(s.camera.top_down);

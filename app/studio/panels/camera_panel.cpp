@@ -12,8 +12,6 @@ namespace pagor::studio {
 
 void camera_views_panel(std::vector<CameraView>& views, CameraControl camera,
                         StudioActions& actions) {
-  ImGui::TextUnformatted("camera views:");
-  ImGui::SameLine();
   ImGui::BeginDisabled(views.size() >= kMaxCameraViews);
   if (ui::button("save view", ImVec2(0, 0),
                  "Keep the camera as it is now under a name (kept in the session); a click on "

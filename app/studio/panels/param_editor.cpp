@@ -173,12 +173,16 @@ bool json_field(Config& c, const ConfigField& f, const Values& v, const std::str
   return set_json(c, f.path, shown, actions);
 }
 
-// One field's row: mark, widget, reset.
-bool field_row(Config& c, const ConfigField& f, const Values& v, StudioActions& actions) {
+// One field's row: mark, widget, reset. `whole_path`: labelled by its whole key path (a search's
+// flat list, where "voxel_size" of two classes would otherwise look the same).
+bool field_row(Config& c, const ConfigField& f, const Values& v, StudioActions& actions,
+               bool whole_path = false) {
   const json* now = v.current(f.path);
   const json* preset = v.preset(f.path);
   const bool modified = now && preset && *now != *preset;
-  const std::string label = (modified ? "* " : "") + field_label(f, c.graph.trim) + "###" + f.path;
+  std::string shown = field_label(f, c.graph.trim);
+  if (whole_path) shown = f.path + shown.substr(last_key(f.path).size());  // the unit kept
+  const std::string label = (modified ? "* " : "") + shown + "###" + f.path;
   const std::string tip =
       field_tooltip(f, c.graph.trim) +
       (preset ? "\npreset: " + preset->dump() : std::string("\n(not in the preset)"));
@@ -354,8 +358,8 @@ bool parameter_sections(Config& config, const Config& reference, const std::stri
       ++total;
       if (!field_matches(f, search)) continue;
       ++shown;
-      changed |= field_row(config, f, v, actions);
-      if (changed) break;  // a class name changed: the paths may have moved
+      changed |= field_row(config, f, v, actions, true);
+      if (changed) break;  // the configuration changed under the list: the rest next frame
     }
     ui::figure(ui::format("%zu of %zu parameters match \"%s\"", shown, total, search.c_str()),
                ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled), true);

@@ -48,9 +48,6 @@ bool ImGuiRenderer::init(const Gl& gl, std::string& error) {
   return true;
 }
 
-void opaque_begin(const ImDrawList*, const ImDrawCmd*) {}
-void opaque_end(const ImDrawList*, const ImDrawCmd*) {}
-
 void ImGuiRenderer::render(const ImDrawData* data, int fb_width, int fb_height) {
   if (!data || fb_width <= 0 || fb_height <= 0) return;
   const Gl& gl = *gl_;

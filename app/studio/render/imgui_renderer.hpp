@@ -5,6 +5,7 @@
 
 #include <imgui.h>
 
+#include <cstdint>
 #include <string>
 
 #include "render/gl.hpp"
@@ -15,9 +16,9 @@ namespace pagor::studio {
 /// drawn without blending (an opaque picture, such as the 3D view's texture: the same pixels, and
 /// no read of what is under it, which software GL pays for per pixel).
 /// `ImGui::GetWindowDrawList()->AddCallback(kOpaqueBegin, nullptr)`.
-void opaque_begin(const ImDrawList*, const ImDrawCmd*);
-void opaque_end(const ImDrawList*, const ImDrawCmd*);
-inline const ImDrawCallback kOpaqueBegin = &opaque_begin, kOpaqueEnd = &opaque_end;
+/// Sentinel values, as ImGui's ImDrawCallback_ResetRenderState: never called, told apart by value.
+inline const ImDrawCallback kOpaqueBegin = reinterpret_cast<ImDrawCallback>(std::intptr_t(-16)),
+                            kOpaqueEnd = reinterpret_cast<ImDrawCallback>(std::intptr_t(-17));
 
 class ImGuiRenderer {
  public:

@@ -353,7 +353,8 @@ void BenchWorker::run_pending_sweep() {
                 ? "the sweep was cancelled after " + std::to_string(status_.sweep_done) + " of " +
                       std::to_string(status_.sweep_total) + " runs"
                 : "the sweep was cancelled by a parameter change";
-    status_.cancelled = sweep_cancelled_;
+    // The pass before it was whole: `cancelled` (the pass's) stays as it was; the sweep's
+    // cancel is said by sweep_error.
     result.reset();
   } catch (const std::exception& e) {
     error = reason(e);

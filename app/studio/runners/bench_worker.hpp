@@ -76,7 +76,8 @@ struct BenchStatus {
   bool sweeping = false;                ///< a sweep is queued or running
   int sweep_done = 0, sweep_total = 0;  ///< (pair, setting) runs of the sweep
   std::string sweep_error;              ///< why the last sweep stopped
-  bool cancelled = false;  ///< the last pass or sweep was stopped by cancel() before its end
+  bool cancelled = false;  ///< the last pass was stopped by cancel() before its end (a sweep's
+                           ///< cancel is in sweep_error)
 
   /// How far the pass has come, for progress_text: every pair of a pass runs (none is reused).
   SetProgress pass_progress() const {

@@ -151,7 +151,9 @@ void SceneView::update(const Snapshot& s, const ViewState& view, const Transform
   const int level = shown_level(view, s.selected, static_cast<int>(s.levels.size()));
   std::string key = std::to_string(level) + (view.layers.all_correspondences ? "a" : "c") +
                     (view.layers.correspondences ? "l" : "n") +
-                    (view.color == ColorMode::by_class ? "k" : "s");
+                    (view.color == ColorMode::by_class ? "k" : "s") + "/" +
+                    view.diagnosis.class_name + "/" +
+                    std::to_string(static_cast<int>(view.diagnosis.truth)) + "/";
   for (int i = 0; i < 16; ++i) key += std::to_string(pose(i / 4, i % 4)) + ",";
   if (s.request == overlay_request_ && key == overlay_key_) return;
   overlay_request_ = s.request;
@@ -162,12 +164,13 @@ void SceneView::update(const Snapshot& s, const ViewState& view, const Transform
   // A matcher's correspondences name keypoints of their own, not landmarks: their points p and q
   // are drawn as keypoints (source under the pose), whether or not clouds came with them. With the
   // clique's lines shown, its members stand out and the rest (often a thousand and more) are
-  // faint.
+  // faint (so are the members whose lines the diagnosis filters hide).
   std::vector<char> in_clique(s.correspondences.size(), 0);
   const bool dim_others = view.layers.correspondences && level >= 0;
   if (dim_others)
     for (int v : s.levels[static_cast<std::size_t>(level)].clique)
-      if (v >= 0 && static_cast<std::size_t>(v) < in_clique.size())
+      if (v >= 0 && static_cast<std::size_t>(v) < in_clique.size() &&
+          diagnosis_keeps(s, view.diagnosis, static_cast<std::size_t>(v)))
         in_clique[static_cast<std::size_t>(v)] = 1;
   const auto faint = [](Rgba c) { return Rgba{c[0], c[1], c[2], 60}; };
   std::vector<float> matcher_src, matcher_tgt, strong_src, strong_tgt;  // strong: drawn last
@@ -349,6 +352,7 @@ void SceneView::draw_scene(const Eigen::Matrix4f& vp, const ViewState& view, con
   gl.BindFramebuffer(GL_FRAMEBUFFER, fbo_);
   const int w = std::max(1, static_cast<int>(std::lround(fb_width_ * share_))),
             h = std::max(1, static_cast<int>(std::lround(fb_height_ * share_)));
+  share_xy_ = Eigen::Vector2f(float(w) / float(fb_width_), float(h) / float(fb_height_));
   gl.Viewport(0, 0, w, h);
   gl.Enable(GL_SCISSOR_TEST);  // the clear too: only the share drawn
   gl.Scissor(0, 0, w, h);

@@ -58,8 +58,8 @@ class SceneView {
   void render(int width, int height, const Camera& camera, const ViewState& view,
               const Transform& source_pose);
   /// The share of the texture's width and height the last render filled, from its bottom-left
-  /// corner: 1, or 0.5 while the camera moves (shown stretched over the view).
-  float texture_share() const { return share_; }
+  /// corner: 1, or about 0.5 while the camera moves (shown stretched over the view).
+  Eigen::Vector2f texture_share() const { return share_xy_; }
   /// The colour texture of the last render (for ImGui::Image).
   GLuint texture() const { return color_texture_; }
   /// Cloud uploads so far (a test of "no re-upload per frame").
@@ -106,7 +106,8 @@ class SceneView {
   GLuint program_ = 0, fbo_ = 0, color_texture_ = 0, depth_rb_ = 0;
   GLint u_mvp_ = -1, u_point_size_ = -1, u_use_uniform_ = -1, u_color_ = -1, u_round_ = -1;
   int fb_width_ = 0, fb_height_ = 0;
-  float share_ = 1.0f;  ///< of the texture filled by the last render (texture_share)
+  float share_ = 1.0f;  ///< the resolution of the last render, of the view's
+  Eigen::Vector2f share_xy_ = Eigen::Vector2f::Ones();  ///< the texture it filled (texture_share)
   Buffer source_, target_, landmarks_src_, landmarks_tgt_, keypoints_src_, keypoints_tgt_;
   Buffer contribution_;  ///< drawn instead of the source when not empty
   Transform contribution_pose_ = Transform::Identity();  ///< the pose the contribution is under

@@ -220,11 +220,11 @@ void scene_window(SceneView& scene, const Snapshot* s, const ViewState& view,
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   // The picture is opaque: drawn without blending. While the camera moves it may fill only a
   // share of the texture (drawn at a lower resolution), shown stretched over the view.
-  const float share = scene.texture_share();
+  const Eigen::Vector2f share = scene.texture_share();
   ImGui::GetWindowDrawList()->AddCallback(kOpaqueBegin, nullptr);
   ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(scene.texture())),
-               ImVec2(static_cast<float>(w), static_cast<float>(h)), ImVec2(0, share),
-               ImVec2(share, 0));
+               ImVec2(static_cast<float>(w), static_cast<float>(h)), ImVec2(0, share.y()),
+               ImVec2(share.x(), 0));
   ImGui::GetWindowDrawList()->AddCallback(kOpaqueEnd, nullptr);
   const bool hovered = ImGui::IsItemHovered();
   ImDrawList* dl = ImGui::GetWindowDrawList();

@@ -92,8 +92,11 @@ void Camera::fit(const Eigen::Vector3f& lo, const Eigen::Vector3f& hi, float asp
                               target;
     const float x = std::abs(c.dot(right)) / (tan_half * aspect), y = std::abs(c.dot(up)) / tan_half;
     needed = std::max(needed, (top_down ? 0.0f : c.dot(back)) + std::max(x, y));
+    // Top-down, the eye is above the highest corner too (the near plane is in front of it).
+    if (top_down) needed = std::max(needed, c.dot(back) + 1.0f);
   }
-  distance = std::clamp(needed * 1.06f, 0.5f, 5000.0f);  // a margin of 6 %
+  // A margin of 6 %, 12 % top-down (a plan's outline would otherwise touch the view's edges).
+  distance = std::clamp(needed * (top_down ? 1.12f : 1.06f), 0.5f, 5000.0f);
 }
 
 bool project_to_screen(const Eigen::Matrix4f& vp, const Eigen::Vector3f& p, float width,

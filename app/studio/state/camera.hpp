@@ -29,8 +29,9 @@ struct Camera {
   /// Wheel steps: positive zooms in.
   void zoom(float steps);
   /// Centres on the box [lo, hi] and sets the distance to see all of it in a viewport of this
-  /// width / height: its bounding sphere in perspective; top-down, its corners at the camera's
-  /// yaw, so that the whole box is framed however long and however turned.
+  /// width / height: each of its corners within the frame at the camera's direction (perspective
+  /// and top-down), with a margin (6 %, top-down 12 %), so that the whole box is framed however long, tall or
+  /// turned.
   void fit(const Eigen::Vector3f& lo, const Eigen::Vector3f& hi, float aspect = 1.0f);
 };
 

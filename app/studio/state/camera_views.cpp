@@ -53,11 +53,15 @@ Camera camera_from_text(const std::string& text, const Camera& current, const st
   if (text.size() > kMaxCameraText)
     throw InputError(where + ": " + std::to_string(text.size()) +
                      " bytes, not a camera view (at most " + std::to_string(kMaxCameraText) + ")");
+  if (text.find_first_not_of(" \t\r\n") == std::string::npos)
+    throw InputError(where + ": empty, not a camera view (copy one with \"copy view\")");
   json j;
   try {
     j = parse_json_limited(text, where);
-  } catch (const ConfigError& e) {
-    throw InputError(std::string(e.what()) + " (not a camera view: copy one with \"copy view\")");
+  } catch (const ConfigError&) {
+    const std::string start = text.substr(0, 40);
+    throw InputError(where + ": not a camera view (copy one with \"copy view\"): \"" + start +
+                     (text.size() > start.size() ? "...\"" : "\"") + " is not JSON");
   }
   // A session's member pasted with its key: {"camera": {...}}.
   if (j.is_object() && j.size() == 1 && j.contains("camera")) j = j.at("camera");

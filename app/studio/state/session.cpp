@@ -308,6 +308,7 @@ void load_session(const std::string& path, AppState& s) {
   } else {
     next.camera_fitted = false;
   }
+  next.camera_views.clear();  // a session without views has none (not the previous session's)
   if (const json* v = find(j, "camera_views"))
     next.camera_views = read_camera_views(*v, path + ": camera_views");
   if (const json* v = find(j, "view")) read_view(*v, path + ": view", next.view);
