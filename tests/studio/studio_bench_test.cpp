@@ -273,14 +273,18 @@ TEST_CASE("benchmark view: cancel stops every job between pairs, and resume fini
   studio::BenchWorker worker;
   worker.set_jobs(2);
   worker.open(set, semreg_config());
-  worker.cancel();  // before its first pair: no job runs one
+  // At once: before its first pair no job runs one; a pair that fails at once (the broken one)
+  // may be done before the cancel arrives on a busy machine (seen in CI: 1 of 3).
+  worker.cancel();
   for (int i = 0; i < 60000 && !(worker.status().cancelled && !worker.status().busy); ++i)
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   studio::BenchStatus st = worker.status();
   CHECK(st.cancelled);
-  CHECK(st.done == 0);
-  CHECK(st.error == "cancelled after 0 of 3 pairs");
-  for (const studio::BenchRow& r : worker.rows()) CHECK_FALSE(r.current);
+  CHECK(st.done < st.total);
+  CHECK(st.error == "cancelled after " + std::to_string(st.done) + " of 3 pairs");
+  int current_at_cancel = 0;
+  for (const studio::BenchRow& r : worker.rows()) current_at_cancel += r.current;
+  CHECK(current_at_cancel == st.done);
   // Cancelled once the first pair is done: the jobs stop after the pairs in progress (or the
   // pass had finished), and the rows done are the count the status gives.
   worker.rerun();
