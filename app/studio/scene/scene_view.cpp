@@ -173,14 +173,14 @@ void SceneView::update(const Snapshot& s, const ViewState& view, const Transform
           diagnosis_keeps(s, view.diagnosis, static_cast<std::size_t>(v)))
         in_clique[static_cast<std::size_t>(v)] = 1;
   const auto faint = [](Rgba c) { return Rgba{c[0], c[1], c[2], 60}; };
-  std::vector<float> matcher_src, matcher_tgt, strong_src, strong_tgt;  // strong: drawn last
+  std::vector<float> faint_src, faint_tgt, strong_src, strong_tgt;  // strong: drawn last
   for (std::size_t i = 0; i < s.correspondences.size(); ++i) {
     const Correspondence& c = s.correspondences[i];
     if (c.origin == CorrespondenceOrigin::matcher) {
       const bool strong = !dim_others || in_clique[i];
-      push(strong ? strong_src : matcher_src, transform_point(pose, c.p),
+      push(strong ? strong_src : faint_src, transform_point(pose, c.p),
            strong ? Palette::source : faint(Palette::source));
-      push(strong ? strong_tgt : matcher_tgt, c.q.cast<float>(),
+      push(strong ? strong_tgt : faint_tgt, c.q.cast<float>(),
            strong ? Palette::target : faint(Palette::target));
       continue;
     }
@@ -211,10 +211,10 @@ void SceneView::update(const Snapshot& s, const ViewState& view, const Transform
                                                  LandmarkKind::keypoint);
   std::vector<float> key_tgt = landmark_vertices(s.target_landmarks, used_tgt, false,
                                                  LandmarkKind::keypoint);
-  faint_keypoints_ = matcher_src.size() / kFloatsPerVertex;
-  for (const std::vector<float>* m : {&matcher_src, &strong_src})
+  faint_keypoints_ = faint_src.size() / kFloatsPerVertex;
+  for (const std::vector<float>* m : {&faint_src, &strong_src})
     key_src.insert(key_src.end(), m->begin(), m->end());
-  for (const std::vector<float>* m : {&matcher_tgt, &strong_tgt})
+  for (const std::vector<float>* m : {&faint_tgt, &strong_tgt})
     key_tgt.insert(key_tgt.end(), m->begin(), m->end());
   upload(keypoints_src_, key_src);
   upload(keypoints_tgt_, key_tgt);

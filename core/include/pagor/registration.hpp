@@ -173,7 +173,7 @@ Registration register_correspondences(std::vector<Correspondence> matches, Point
 struct RegistrationContext {
   std::string source_name = "source", target_name = "target";
   bool diagnose = true;                        ///< diagnose when the pipeline has a ground truth
-  std::optional<MatchesFileInfo> matches_file;  ///< the correspondences file, when one was read
+  std::optional<MatchesFileInfo> matches_file = std::nullopt;  ///< the correspondences file, when read
 };
 
 /// The result of a pipeline that has run (every stage up to date).
