@@ -1,8 +1,11 @@
 // The project's PCD reader and LZF decoder against known answers: hand-made files of every DATA
-// kind, PCL's own binary_compressed writer, the real semreg-dev clouds, and malformed headers.
+// kind, PCL's own binary_compressed writer, the real semreg-dev clouds, and malformed headers;
+// and the project's PCD and PLY writers against PCL's readers.
 
 #include <pcl/PCLPointCloud2.h>
 #include <pcl/io/pcd_io.h>
+#include <pcl/io/ply_io.h>
+#include <pcl/point_types.h>
 
 #include <catch2/catch.hpp>
 #include <cstring>
@@ -10,6 +13,7 @@
 #include <sstream>
 
 #include "pagor/errors.hpp"
+#include "pagor/io/clouds.hpp"
 #include "io/lzf.hpp"
 #include "io/pcd_reader.hpp"
 #include "support/test_util.hpp"
@@ -182,6 +186,53 @@ TEST_CASE("PCD binary_compressed written by PCL decodes to PCL's cloud") {
                                          -0.5f * static_cast<float>(i / 100)));
     CHECK(c.labels[i] == i % 7);
   }
+}
+
+TEST_CASE("PCD and PLY written by save_cloud read back in PCL as written") {
+  PointCloud cloud;
+  for (int i = 0; i < 300; ++i) {
+    cloud.points.emplace_back(0.25f * static_cast<float>(i), -3.0f + 0.001f * static_cast<float>(i),
+                              12.0f);
+    cloud.intensities.push_back(0.5f * static_cast<float>(i % 9));
+    cloud.labels.push_back(static_cast<std::uint32_t>(i % 40) + 70000u);
+  }
+  test::TempDir dir;
+  for (const char* name : {"c.pcd", "c.ply"}) {
+    INFO(name);
+    const std::string path = dir.file(name);
+    save_cloud(cloud, path);
+    pcl::PointCloud<pcl::PointXYZI> xyzi;
+    pcl::PointCloud<pcl::PointXYZL> xyzl;
+    if (std::string(name) == "c.pcd") {
+      REQUIRE(pcl::io::loadPCDFile(path, xyzi) == 0);
+      REQUIRE(pcl::io::loadPCDFile(path, xyzl) == 0);
+    } else {
+      REQUIRE(pcl::io::loadPLYFile(path, xyzi) == 0);
+      REQUIRE(pcl::io::loadPLYFile(path, xyzl) == 0);
+    }
+    REQUIRE(xyzi.size() == cloud.size());
+    REQUIRE(xyzl.size() == cloud.size());
+    for (std::size_t i = 0; i < cloud.size(); ++i) {
+      CHECK(xyzi[i].getVector3fMap() == cloud.points[i]);
+      CHECK(xyzi[i].intensity == cloud.intensities[i]);
+      CHECK(xyzl[i].label == cloud.labels[i]);
+    }
+    // And the project's reader gives the cloud back.
+    const LoadedCloud back = load_cloud(path);
+    REQUIRE(back.cloud.size() == cloud.size());
+    CHECK(back.cloud.labels == cloud.labels);
+    CHECK(back.cloud.intensities == cloud.intensities);
+  }
+  // Without intensities or labels: x y z only.
+  PointCloud bare;
+  bare.points = {Eigen::Vector3f(1, 2, 3), Eigen::Vector3f(-4, 5, -6)};
+  save_cloud(bare, dir.file("b.pcd"));
+  const std::string bytes = read_file(dir.file("b.pcd"));
+  CHECK(bytes.find("FIELDS x y z\n") != std::string::npos);
+  pcl::PointCloud<pcl::PointXYZ> xyz;
+  REQUIRE(pcl::io::loadPCDFile(dir.file("b.pcd"), xyz) == 0);
+  REQUIRE(xyz.size() == 2);
+  CHECK(xyz[1].getVector3fMap() == bare.points[1]);
 }
 
 TEST_CASE("PCD: the real semreg-dev clouds parse with their declared point counts") {

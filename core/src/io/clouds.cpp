@@ -1,10 +1,5 @@
 #include "pagor/io/clouds.hpp"
 
-#include <pcl/PCLPointCloud2.h>
-#include <pcl/io/pcd_io.h>
-#include <pcl/io/ply_io.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -74,29 +69,19 @@ void drop_unusable(LoadedCloud& out) {
   if (c.has_labels()) c.labels.resize(kept);
 }
 
-pcl::PCLPointCloud2 to_blob(const PointCloud& cloud) {
-  pcl::PCLPointCloud2 blob;
-  auto add_field = [&](const char* name, std::uint8_t type) {
-    pcl::PCLPointField f;
-    f.name = name;
-    f.offset = blob.point_step;
-    f.datatype = type;
-    f.count = 1;
-    blob.fields.push_back(f);
-    blob.point_step += 4;
-  };
-  add_field("x", pcl::PCLPointField::FLOAT32);
-  add_field("y", pcl::PCLPointField::FLOAT32);
-  add_field("z", pcl::PCLPointField::FLOAT32);
-  if (cloud.has_intensities()) add_field("intensity", pcl::PCLPointField::FLOAT32);
-  if (cloud.has_labels()) add_field("label", pcl::PCLPointField::UINT32);
-  blob.width = static_cast<std::uint32_t>(cloud.size());
-  blob.height = 1;
-  blob.is_dense = true;
-  blob.row_step = blob.point_step * blob.width;
-  blob.data.resize(blob.row_step);
+// PCD and PLY are written by the project itself, as binary files PCL and other readers load:
+// x y z as float32, then intensity (float32) and label (uint32) when the cloud has them. (PCL's
+// writers were the only use of its io component, which loads ~120 shared libraries, VTK and Qt
+// among them, into every process that links the core.)
+static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__,
+              "the binary PCD and PLY bodies are written in the host's byte order");
+
+// The body of both formats: one record a point, the fields in the header's order.
+std::string binary_points(const PointCloud& cloud) {
+  const std::size_t step = 12 + (cloud.has_intensities() ? 4 : 0) + (cloud.has_labels() ? 4 : 0);
+  std::string body(cloud.size() * step, '\0');
   for (std::size_t i = 0; i < cloud.size(); ++i) {
-    std::uint8_t* base = blob.data.data() + i * blob.point_step;
+    char* base = body.data() + i * step;
     std::memcpy(base, cloud.points[i].data(), 12);
     std::size_t off = 12;
     if (cloud.has_intensities()) {
@@ -105,7 +90,32 @@ pcl::PCLPointCloud2 to_blob(const PointCloud& cloud) {
     }
     if (cloud.has_labels()) std::memcpy(base + off, &cloud.labels[i], 4);
   }
-  return blob;
+  return body;
+}
+
+std::string pcd_header(const PointCloud& cloud) {
+  std::string fields = "x y z", sizes = "4 4 4", types = "F F F", counts = "1 1 1";
+  const auto add = [&](const char* name, const char* type) {
+    fields += std::string(" ") + name;
+    sizes += " 4";
+    types += std::string(" ") + type;
+    counts += " 1";
+  };
+  if (cloud.has_intensities()) add("intensity", "F");
+  if (cloud.has_labels()) add("label", "U");
+  const std::string n = std::to_string(cloud.size());
+  return "# .PCD v0.7 - Point Cloud Data file format\nVERSION 0.7\nFIELDS " + fields +
+         "\nSIZE " + sizes + "\nTYPE " + types + "\nCOUNT " + counts + "\nWIDTH " + n +
+         "\nHEIGHT 1\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS " + n + "\nDATA binary\n";
+}
+
+std::string ply_header(const PointCloud& cloud) {
+  std::string h = "ply\nformat binary_little_endian 1.0\ncomment written by pagor\nelement vertex " +
+                  std::to_string(cloud.size()) +
+                  "\nproperty float x\nproperty float y\nproperty float z\n";
+  if (cloud.has_intensities()) h += "property float intensity\n";
+  if (cloud.has_labels()) h += "property uint label\n";
+  return h + "end_header\n";
 }
 
 std::string replace_extension(const std::string& path, const std::string& ext) {
@@ -190,21 +200,9 @@ void save_cloud(const PointCloud& cloud, const std::string& path) {
   }
   if (ext != ".pcd" && ext != ".ply")
     throw InputError(path + ": unknown point-cloud extension '" + ext + "' (use .bin, .pcd, .ply)");
-  const pcl::PCLPointCloud2 blob = to_blob(cloud);
-  // PCL writes the file itself: into a name beside it, renamed into place once complete.
-  const std::string tmp = sibling_path(path, ".tmp-" + std::to_string(::getpid()));
-  int status = 0;
-  if (ext == ".pcd") {
-    pcl::PCDWriter writer;
-    status = writer.writeBinary(tmp, blob);
-  } else {
-    pcl::PLYWriter writer;
-    status = writer.writeBinary(tmp, blob);
-  }
-  if (status < 0 || std::rename(tmp.c_str(), path.c_str()) != 0) {
-    std::remove(tmp.c_str());
-    throw InputError(path + ": cannot write " + ext.substr(1) + " file");
-  }
+  // Whole or not at all (write_file_atomic): an interrupted write leaves the previous file.
+  write_file_atomic(path, (ext == ".pcd" ? pcd_header(cloud) : ply_header(cloud)) +
+                              binary_points(cloud));
 }
 
 LoadedCloud load_cloud(const std::string& path, const std::string& labels_path) {
