@@ -56,13 +56,13 @@ TEST_CASE("InputQueue: one logical key event a frame, chords whole, typing after
   // Frame 1: the chord Ctrl+A.
   q.feed(io);
   CHECK(io.KeyCtrl);
-  CHECK(io.KeysDown['A']);
+  CHECK(io.KeysDown[int{'A'}]);
   REQUIRE(q.presses().size() == 1);
   CHECK((q.presses()[0].key == 'A' && q.presses()[0].ctrl));
   // Frame 2: A and Ctrl released, Home pressed without Ctrl.
   q.feed(io);
   CHECK_FALSE(io.KeyCtrl);
-  CHECK_FALSE(io.KeysDown['A']);
+  CHECK_FALSE(io.KeysDown[int{'A'}]);
   CHECK(io.KeysDown[keys::Home]);
   // Frame 3: Home released, Shift+End.
   q.feed(io);

@@ -73,7 +73,7 @@ ColorScale height_scale(const Snapshot& s) {
 }
 
 ColorScale intensity_scale(const Snapshot& s) {
-  ColorScale c{"intensity (unitless)", 0, 1, false};
+  ColorScale c{"intensity (unitless)", 0, 1, false, ""};
   std::vector<float> v;
   for (const auto* cloud : {s.source.get(), s.target.get()})
     if (cloud && cloud->has_intensities()) {

@@ -113,12 +113,12 @@ struct BenchViewState {
 
 /// A point picked in the 3D view (click; Shift+click adds a second to measure between).
 struct Pick {
-  bool source = false;       ///< picked from the source cloud (else the target)
-  std::size_t index = 0;     ///< the point's index in its cloud
-  Eigen::Vector3f at;        ///< where it is drawn: the target frame [m]
-  Eigen::Vector3f raw;       ///< its coordinates in its own cloud's frame [m]
-  std::string class_name;    ///< its class under the label scheme ("" without labels)
-  long label = -1;           ///< its raw label's semantic id (-1 without labels)
+  bool source = false;           ///< picked from the source cloud (else the target)
+  std::size_t index = 0;         ///< the point's index in its cloud
+  Eigen::Vector3f at{0, 0, 0};   ///< where it is drawn: the target frame [m]
+  Eigen::Vector3f raw{0, 0, 0};  ///< its coordinates in its own cloud's frame [m]
+  std::string class_name;        ///< its class under the label scheme ("" without labels)
+  long label = -1;               ///< its raw label's semantic id (-1 without labels)
   float nearest_target = 0;  ///< distance to the nearest target point [m] (the target itself: 0)
 };
 

@@ -76,13 +76,19 @@ void bound_slope(std::vector<double>& s, const Grid& g, double rise) {
   for (bool changed = true; changed;) {
     changed = false;
     for (int y = 0; y < g.ny; ++y)
-      for (int x = 0; x < g.nx; ++x)
-        changed |= relax(x, y, -1, 0, rise) | relax(x, y, 0, -1, rise) |
-                   relax(x, y, -1, -1, diagonal) | relax(x, y, 1, -1, diagonal);
+      for (int x = 0; x < g.nx; ++x) {  // every neighbour relaxed, in this order
+        changed |= relax(x, y, -1, 0, rise);
+        changed |= relax(x, y, 0, -1, rise);
+        changed |= relax(x, y, -1, -1, diagonal);
+        changed |= relax(x, y, 1, -1, diagonal);
+      }
     for (int y = g.ny - 1; y >= 0; --y)
-      for (int x = g.nx - 1; x >= 0; --x)
-        changed |= relax(x, y, 1, 0, rise) | relax(x, y, 0, 1, rise) | relax(x, y, 1, 1, diagonal) |
-                   relax(x, y, -1, 1, diagonal);
+      for (int x = g.nx - 1; x >= 0; --x) {
+        changed |= relax(x, y, 1, 0, rise);
+        changed |= relax(x, y, 0, 1, rise);
+        changed |= relax(x, y, 1, 1, diagonal);
+        changed |= relax(x, y, -1, 1, diagonal);
+      }
   }
 }
 

@@ -9,7 +9,6 @@
 namespace pagor {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 // Correlation peaks scored by E, and of those the best refined locally: each costs one search of
 // the counted points per step (a scene repeating along two axes, turned or not, has at most four
 // look-alikes within the range worth a look; beyond them the peaks are echoes of the same).
