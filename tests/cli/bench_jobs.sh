@@ -7,6 +7,7 @@ set -u
 PAGOR=$1 KITTI=$2 MANIFEST=$3 CONFIG=$4 WORK=$5
 rm -rf "$WORK" && mkdir -p "$WORK"
 fail() { echo "FAIL: $*"; exit 1; }
+. "$(dirname "$0")/kill_mid_run.sh"
 # A results file without its times: every key ending in _ms (timings_ms, the diagnosis' time_ms,
 # each level's clique_time_ms) removed.
 untimed() { sed -E 's/"[a-z_]*_ms":(\{[^}]*\}|[-+.0-9eE]+),?//g' "$1"; }
@@ -38,24 +39,14 @@ grep -q "^missing .*failed: .*nope.pcd" "$WORK/missing.log" || fail "no failed r
 echo "bench: a failing pair fails its row only"
 
 # 3. Killed with --jobs 2 after the first finished pair, then resumed with --jobs 2.
-cfg="$WORK/slow.json"  # seconds per pair, so that the kill lands mid-run (as bench_resume.sh)
-finer='{"verification": {"voxel_size": 0.1}, "refinement": {"max_points": 100000}}'
-echo "${PAGOR_TEST_SLOW_PAIR_CONFIG:-$finer}" >"$cfg"
+cfg="$WORK/slow.json"
+write_slow_pair_config "$cfg"
 ref="$WORK/ref.jsonl" out="$WORK/killed.jsonl"
 "$PAGOR" bench --kitti-root "$KITTI" --pairs "$KITTI/pairs_00_dev.txt" --config "$cfg" --out "$ref" >"$WORK/ref.log" 2>&1 ||
   fail "reference run: $(tail -1 "$WORK/ref.log")"
 "$PAGOR" bench --kitti-root "$KITTI" --pairs "$KITTI/pairs_00_dev.txt" --config "$cfg" --jobs 2 --out "$out" >"$WORK/killed.log" 2>&1 &
-pid=$!
-for _ in $(seq 1 6000); do
-  [ -s "$out.partial" ] && break
-  kill -0 $pid 2>/dev/null || break
-  sleep 0.05
-done
-kill -9 $pid 2>/dev/null
-wait $pid 2>/dev/null
+kill_after_first_pair $! "$out"
 [ ! -e "$out" ] || fail "the killed run wrote $out"
-[ -s "$out.partial" ] || fail "no finished pair in $out.partial"
-[ "$(tail -c 1 "$out.partial" | od -An -c | tr -d ' ')" = '\n' ] || fail "$out.partial ends inside a line"
 [ "$(grep -o '"pair":"[^"]*"' "$out.partial" | sort | uniq -d)" = "" ] || fail "a pair twice in $out.partial"
 done_before=$(wc -l <"$out.partial")
 "$PAGOR" bench --kitti-root "$KITTI" --pairs "$KITTI/pairs_00_dev.txt" --config "$cfg" --jobs 2 --out "$out" --resume >"$WORK/resumed.log" 2>&1 ||

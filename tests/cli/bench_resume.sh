@@ -7,28 +7,15 @@ set -u
 PAGOR=$1 KITTI=$2 WORK=$3
 rm -rf "$WORK" && mkdir -p "$WORK"
 fail() { echo "FAIL: $*"; exit 1; }
+. "$(dirname "$0")/kill_mid_run.sh"
 
 out="$WORK/results.jsonl"
 echo '{"previous": "run"}' >"$out"
-# A finer verification grid makes each pair take long enough (seconds) that the kill lands
-# between pairs: with the defaults the three pairs take well under a second. An instrumented
-# build's tests set PAGOR_TEST_SLOW_PAIR_CONFIG to {}: there the defaults take seconds already.
 cfg="$WORK/slow.json"
-finer='{"verification": {"voxel_size": 0.1}, "refinement": {"max_points": 100000}}'
-echo "${PAGOR_TEST_SLOW_PAIR_CONFIG:-$finer}" >"$cfg"
+write_slow_pair_config "$cfg"
 "$PAGOR" bench --kitti-root "$KITTI" --pairs "$KITTI/pairs_00_dev.txt" --config "$cfg" --out "$out" >"$WORK/run1.log" 2>&1 &
-pid=$!
-# Wait for the first finished pair, then kill without warning.
-for _ in $(seq 1 6000); do
-  [ -s "$out.partial" ] && break
-  kill -0 $pid 2>/dev/null || break
-  sleep 0.05
-done
-kill -9 $pid 2>/dev/null
-wait $pid 2>/dev/null
+kill_after_first_pair $! "$out"
 [ "$(cat "$out")" = '{"previous": "run"}' ] || fail "the killed run changed $out"
-[ -s "$out.partial" ] || fail "no finished pair in $out.partial"
-[ "$(tail -c 1 "$out.partial" | od -An -c | tr -d ' ')" = '\n' ] || fail "$out.partial ends inside a line"
 done_before=$(wc -l <"$out.partial")
 echo "killed after $done_before finished pair(s); $out intact"
 

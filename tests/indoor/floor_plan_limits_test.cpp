@@ -15,21 +15,11 @@ using namespace pagor;
 namespace {
 
 std::string svg_error(const std::string& text) {
-  try {
-    parse_floor_plan_svg(text, "plan.svg");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no error";
+  return test::input_error_of([&] { parse_floor_plan_svg(text, "plan.svg"); });
 }
 
 std::string sample_error(const FloorPlan& plan, double spacing) {
-  try {
-    sample_floor_plan(plan, spacing);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no error";
+  return test::input_error_of([&] { sample_floor_plan(plan, spacing); });
 }
 
 }  // namespace

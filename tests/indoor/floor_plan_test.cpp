@@ -5,8 +5,8 @@
 
 #include "pagor/config.hpp"
 #include "pagor/errors.hpp"
-#include "pagor/indoor/floor_plan.hpp"
 #include "pagor/front/landmarks.hpp"
+#include "pagor/indoor/floor_plan.hpp"
 #include "support/test_util.hpp"
 
 using namespace pagor;
@@ -18,21 +18,11 @@ const char* kPlan = R"({"format": "pagor.floor_plan/1",
   "columns": [{"center": [3, 2], "radius": 0.3}, {"center": [7, 2], "radius": 0.25}]})";
 
 std::string json_error(const std::string& text) {
-  try {
-    parse_floor_plan_json(text, "plan.json");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no error";
+  return test::input_error_of([&] { parse_floor_plan_json(text, "plan.json"); });
 }
 
 std::string svg_error(const std::string& text) {
-  try {
-    parse_floor_plan_svg(text, "plan.svg");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no error";
+  return test::input_error_of([&] { parse_floor_plan_svg(text, "plan.svg"); });
 }
 
 }  // namespace

@@ -43,6 +43,20 @@ Problem make_problem(int n, double outlier_ratio, PoseModel model, std::uint64_t
   return pr;
 }
 
+// GNC-TLS under `model` with a 0.1 m noise bound: a valid estimate within the tolerances of `pr`'s
+// planted pose.
+PoseEstimate solve_within_tolerance(const Problem& pr, PoseModel model) {
+  GncParams params;
+  params.model = model;
+  params.noise_bound = 0.1;
+  const PoseEstimate e = estimate_pose_gnc(pr.p, pr.q, params);
+  REQUIRE(e.valid);
+  const PoseError err = pose_error(e.T_target_source, pr.T);
+  CHECK(err.translation < kTranslationTol);
+  CHECK(err.rotation_deg < kRotationTolDeg);
+  return e;
+}
+
 }  // namespace
 
 TEST_CASE("GNC-TLS recovers a known pose with 70 % outliers, in SE(3) and SE(2)") {
@@ -50,14 +64,7 @@ TEST_CASE("GNC-TLS recovers a known pose with 70 % outliers, in SE(3) and SE(2)"
     for (std::uint64_t seed : {1u, 2u, 3u, 4u, 5u}) {
       INFO((model == PoseModel::se3 ? "SE(3)" : "SE(2)") << ", seed " << seed);
       const Problem pr = make_problem(100, 0.7, model, seed);
-      GncParams params;
-      params.model = model;
-      params.noise_bound = 0.1;
-      const PoseEstimate e = estimate_pose_gnc(pr.p, pr.q, params);
-      REQUIRE(e.valid);
-      const PoseError err = pose_error(e.T_target_source, pr.T);
-      CHECK(err.translation < kTranslationTol);
-      CHECK(err.rotation_deg < kRotationTolDeg);
+      const PoseEstimate e = solve_within_tolerance(pr, model);
       // The inliers found are the planted ones.
       int planted_found = 0;
       for (int i : e.inliers) planted_found += i < pr.inliers;
@@ -75,14 +82,7 @@ TEST_CASE("4-DoF GNC recovers yaw and a 3-D translation, level, from 2 correspon
   for (std::uint64_t seed : {1u, 2u, 3u}) {
     INFO("seed " << seed);
     const Problem pr = make_problem(100, 0.7, PoseModel::four_dof, seed);
-    GncParams params;
-    params.model = PoseModel::four_dof;
-    params.noise_bound = 0.1;
-    const PoseEstimate e = estimate_pose_gnc(pr.p, pr.q, params);
-    REQUIRE(e.valid);
-    const PoseError err = pose_error(e.T_target_source, pr.T);
-    CHECK(err.translation < kTranslationTol);
-    CHECK(err.rotation_deg < kRotationTolDeg);
+    const PoseEstimate e = solve_within_tolerance(pr, PoseModel::four_dof);
     CHECK(e.T_target_source(2, 3) == Approx(1.5).margin(kTranslationTol));  // height kept
     CHECK(e.T_target_source(2, 2) == Approx(1.0));                          // roll, pitch 0
   }

@@ -43,3 +43,19 @@ def kitti_frame(frame):
     """Paths of a KITTI frame's scan and labels."""
     seq = KITTI_DIR / "sequences" / "00"
     return seq / "velodyne" / f"{frame:06d}.bin", seq / "labels" / f"{frame:06d}.label"
+
+
+@pytest.fixture(scope="module")
+def manifest(tmp_path_factory):
+    """A pairs manifest of four semreg-dev pairs (bench_rows.NAMES)."""
+    from bench_rows import write_manifest
+    return write_manifest(tmp_path_factory.mktemp("pairs") / "pairs.txt")
+
+
+@pytest.fixture(scope="module")
+def reference(manifest, tmp_path_factory):
+    """The CLI's lines for the manifest's pairs (pagor bench --out)."""
+    from bench_rows import cli_rows
+    if not os.environ.get("PAGOR_CLI"):
+        pytest.skip("PAGOR_CLI is not set (ctest sets it)")
+    return cli_rows(manifest, tmp_path_factory.mktemp("cli") / "cli.jsonl")

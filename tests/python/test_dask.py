@@ -9,8 +9,7 @@ from pathlib import Path
 import pytest
 
 import pagor
-from bench_rows import (NAMES, SEMREG_CONFIG, cli_rows, have_semreg, read_rows, untimed,
-                        write_manifest)
+from bench_rows import NAMES, SEMREG_CONFIG, have_semreg, read_rows, untimed
 
 distributed = pytest.importorskip("distributed")
 pytestmark = pytest.mark.skipif(not have_semreg(), reason="no semreg-dev data")
@@ -29,18 +28,6 @@ def cluster(tmp_path_factory):
                                   dashboard_address=None, silence_logs=40) as c:
         with distributed.Client(c) as client:
             yield client, marker
-
-
-@pytest.fixture(scope="module")
-def manifest(tmp_path_factory):
-    return write_manifest(tmp_path_factory.mktemp("pairs") / "pairs.txt")
-
-
-@pytest.fixture(scope="module")
-def reference(manifest, tmp_path_factory):
-    if not os.environ.get("PAGOR_CLI"):
-        pytest.skip("PAGOR_CLI is not set (ctest sets it)")
-    return cli_rows(manifest, tmp_path_factory.mktemp("cli") / "cli.jsonl")
 
 
 def test_rows_through_dask_equal_the_tools(cluster, manifest, reference):

@@ -11,22 +11,9 @@ import pytest
 
 import pagor
 from bench_rows import (NAMES, SEMREG_CONFIG, cli_rows, have_semreg, pair_dicts, read_rows,
-                        untimed, write_manifest)
+                        untimed)
 
 pytestmark = pytest.mark.skipif(not have_semreg(), reason="no semreg-dev data")
-
-
-@pytest.fixture(scope="module")
-def manifest(tmp_path_factory):
-    return write_manifest(tmp_path_factory.mktemp("pairs") / "pairs.txt")
-
-
-@pytest.fixture(scope="module")
-def reference(manifest, tmp_path_factory):
-    """The CLI's lines for the four pairs."""
-    if not os.environ.get("PAGOR_CLI"):
-        pytest.skip("PAGOR_CLI is not set (ctest sets it)")
-    return cli_rows(manifest, tmp_path_factory.mktemp("cli") / "cli.jsonl")
 
 
 @pytest.fixture(scope="module")

@@ -91,10 +91,14 @@ TEST_CASE("benchmark view: a parameter change re-evaluates the set as a fresh ru
   CHECK(worker.status().done == 2);
 }
 
-TEST_CASE("benchmark view: a sweep over the open set equals core run_sweep") {
+// A sweep over mu in {0.5, 1} on the small set, in the view's worker with `jobs` jobs, gives what
+// core run_sweep gives with one: per setting the successes and upper bound, per pair the name,
+// verdict, selected level and score.
+void check_sweep_equals_core(int jobs) {
   TempDir tmp;
   const PairSet set = read_pair_manifest(small_manifest(tmp));
   studio::BenchWorker worker;
+  worker.set_jobs(jobs);
   worker.open(set, semreg_config());
   SweepGrid grid;
   grid.add("verification.mu", {0.5, 1.0});
@@ -104,16 +108,27 @@ TEST_CASE("benchmark view: a sweep over the open set equals core run_sweep") {
     std::this_thread::sleep_for(std::chrono::milliseconds(100));
   const auto record = worker.sweep_result();
   REQUIRE(record);
-  const SweepResult* got = &record->result;
+  CHECK(worker.status().sweep_done == worker.status().sweep_total);
+  CHECK(worker.status().sweep_total == 4);
   const SweepResult want = run_sweep(set, settings);
-  REQUIRE(got->settings.size() == want.settings.size());
+  const SweepResult& got = record->result;
+  REQUIRE(got.settings.size() == want.settings.size());
   for (std::size_t k = 0; k < want.settings.size(); ++k) {
-    CHECK(got->settings[k].summary.successes == want.settings[k].summary.successes);
-    CHECK(got->settings[k].summary.upper_bound == want.settings[k].summary.upper_bound);
-    for (std::size_t p = 0; p < set.pairs.size(); ++p)
-      CHECK(got->settings[k].outcomes[p].selected_level ==
-            want.settings[k].outcomes[p].selected_level);
+    CHECK(got.settings[k].summary.successes == want.settings[k].summary.successes);
+    CHECK(got.settings[k].summary.upper_bound == want.settings[k].summary.upper_bound);
+    for (std::size_t p = 0; p < set.pairs.size(); ++p) {
+      const PairOutcome& g = got.settings[k].outcomes[p];
+      const PairOutcome& w = want.settings[k].outcomes[p];
+      CHECK(g.name == w.name);
+      CHECK(g.accepted == w.accepted);
+      CHECK(g.selected_level == w.selected_level);
+      CHECK(g.score == w.score);
+    }
   }
+}
+
+TEST_CASE("benchmark view: a sweep over the open set equals core run_sweep") {
+  check_sweep_equals_core(1);
 }
 
 // The small manifest and a pair whose source file is empty (its row fails on its own account).
@@ -236,35 +251,7 @@ TEST_CASE("the pair queue: a job's kept pairs first, then the unkept, then anoth
 }
 
 TEST_CASE("benchmark view: a sweep with two jobs equals core run_sweep with one") {
-  TempDir tmp;
-  const PairSet set = read_pair_manifest(small_manifest(tmp));
-  studio::BenchWorker worker;
-  worker.set_jobs(2);
-  worker.open(set, semreg_config());
-  SweepGrid grid;
-  grid.add("verification.mu", {0.5, 1.0});
-  const auto settings = sweep_settings(semreg_config(), grid);
-  worker.sweep(settings, semreg_config());
-  for (int i = 0; i < 6000 && (worker.status().sweeping || !worker.sweep_result()); ++i)
-    std::this_thread::sleep_for(std::chrono::milliseconds(100));
-  const auto record = worker.sweep_result();
-  REQUIRE(record);
-  CHECK(worker.status().sweep_done == worker.status().sweep_total);
-  CHECK(worker.status().sweep_total == 4);
-  const SweepResult want = run_sweep(set, settings);
-  const SweepResult& got = record->result;
-  REQUIRE(got.settings.size() == want.settings.size());
-  for (std::size_t k = 0; k < want.settings.size(); ++k) {
-    CHECK(got.settings[k].summary.successes == want.settings[k].summary.successes);
-    for (std::size_t p = 0; p < set.pairs.size(); ++p) {
-      const PairOutcome& g = got.settings[k].outcomes[p];
-      const PairOutcome& w = want.settings[k].outcomes[p];
-      CHECK(g.name == w.name);
-      CHECK(g.accepted == w.accepted);
-      CHECK(g.selected_level == w.selected_level);
-      CHECK(g.score == w.score);
-    }
-  }
+  check_sweep_equals_core(2);
 }
 
 TEST_CASE("benchmark view: cancel stops every job between pairs, and resume finishes") {
@@ -463,11 +450,7 @@ TEST_CASE("every widget of the benchmark view, driven") {
   REQUIRE(d.click_widget("benchmark view...", "Pagor Studio"));
   d.frames(2);
   REQUIRE(d.click_widget("open and run##bench", "Benchmark"));
-  const auto settle_bench = [&] {
-    for (int i = 0; i < 2400 && !d.studio().bench().wait_idle(0.05); ++i) d.frame();
-    d.frames(2);
-  };
-  settle_bench();
+  d.settle_bench();
   CHECK(d.studio().bench().status().done == 2);
   // A row opens its pair in the pair view; the data panel leads back with the table kept.
   REQUIRE(d.click_widget("03##bench_row0"));
@@ -495,7 +478,7 @@ TEST_CASE("every widget of the benchmark view, driven") {
       // The cancel buttons would stop the sweep this test applies below (studio_cancel_test
       // drives them).
       [](const studio::ui::WidgetRecord& w) { return w.label.rfind("cancel", 0) == 0; });
-  settle_bench();
+  d.settle_bench();
   // A sweep's table applies a setting to the session. The walk clicks 'run sweep' at a moment
   // its order and the build's speed decide (the set may be reopening, or the swept parameter
   // one that re-runs the front end per setting, which takes minutes in a sanitizer build), so

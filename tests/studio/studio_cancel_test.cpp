@@ -121,8 +121,7 @@ TEST_CASE("benchmark view: the cancel and resume buttons, driven") {
   CHECK_FALSE(d.find("cancel##bench", "Benchmark"));
   CHECK_FALSE(d.texts("cancelled after", "Benchmark").empty());  // the reason, shown
   REQUIRE(d.click_widget("resume##bench", "Benchmark"));
-  for (int i = 0; i < 2400 && !d.studio().bench().wait_idle(0.05); ++i) d.frame();
-  d.frames(2);
+  d.settle_bench();
   CHECK(d.studio().bench().status().done == 4);
   CHECK_FALSE(d.find("resume##bench", "Benchmark"));
 }

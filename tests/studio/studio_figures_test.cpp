@@ -41,13 +41,6 @@ Pipeline cli_run(const PairSource& src, const Config& config) {
   return p;
 }
 
-// The benchmark view's sweep and rows wait for the bench worker.
-void settle_bench(UiDriver& d) {
-  for (int i = 0; i < 6000 && !d.studio().bench().wait_idle(0.05); ++i) d.frame();
-  for (int i = 0; i < 6000 && d.studio().bench().status().sweeping; ++i) d.frame();
-  d.frames(3);
-}
-
 }  // namespace
 
 #ifdef PAGOR_HAVE_KITTI
@@ -125,12 +118,7 @@ TEST_CASE(
   s.bench.sweep_values = "0.5,1.5";
   UiDriver d(s, 1400, 1000);
   d.settle();
-  REQUIRE(d.click_widget("benchmark view...", "Pagor Studio"));
-  d.frames(2);
-  REQUIRE(d.click_widget("open and run##bench", "Benchmark"));
-  settle_bench(d);
-  REQUIRE(d.click_widget("run sweep##sweep", "Benchmark"));
-  settle_bench(d);
+  d.run_bench_and_sweep();
   REQUIRE(d.studio().bench().sweep_result());
   CHECK_FALSE(d.texts("the sweep below is of these parameters", "Benchmark").empty());
   CHECK(d.texts("STALE", "Benchmark").empty());
@@ -152,7 +140,7 @@ TEST_CASE(
   CHECK(d.texts("STALE", "Benchmark").empty());
   // Another set: stale.
   REQUIRE(d.click_widget("open and run##bench", "Benchmark"));
-  settle_bench(d);
+  d.settle_bench();
   CHECK_FALSE(d.texts("another pair set", "Benchmark").empty());
 }
 
@@ -221,7 +209,7 @@ TEST_CASE("6: rows of bench results show their diagnosis and open with their own
   UiDriver d(s, 1400, 900);
   d.studio().open_benchmark_now();
   d.settle();
-  settle_bench(d);
+  d.settle_bench();
   CHECK_FALSE(d.texts(o.diagnosis, "Benchmark").empty());
   REQUIRE(d.click_widget(o.name + "##bench_row0", "Benchmark"));
   d.settle();
@@ -249,7 +237,7 @@ TEST_CASE("7: an undefined ratio is n/a in the studio as in the CLI") {
   s.main_view = studio::MainView::benchmark;
   UiDriver d(s, 1400, 900);
   d.studio().open_benchmark_now();
-  settle_bench(d);
+  d.settle_bench();
   const auto summary = d.texts("success 0/0", "Benchmark");
   REQUIRE(summary.size() == 1);
   CHECK(summary[0].find("success 0/0 (n/a), upper bound 0/0 (n/a)") != std::string::npos);

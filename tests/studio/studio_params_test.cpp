@@ -24,12 +24,6 @@ bool marked(const studio::ui::WidgetRecord& w) {
   return w.label.rfind("* ", 0) == 0;
 }
 
-void settle_bench(UiDriver& d) {
-  for (int i = 0; i < 6000 && !d.studio().bench().wait_idle(0.05); ++i) d.frame();
-  for (int i = 0; i < 6000 && d.studio().bench().status().sweeping; ++i) d.frame();
-  d.frames(3);
-}
-
 }  // namespace
 
 TEST_CASE("every number of the catalog gets a widget over its own range and scale") {
@@ -186,7 +180,7 @@ TEST_CASE("a search narrows the parameter editor and the sweep's parameter list"
   REQUIRE(d.click_widget("benchmark view...", "Pagor Studio"));
   d.frames(2);
   REQUIRE(d.click_widget("open and run##bench", "Benchmark"));
-  settle_bench(d);
+  d.settle_bench();
   const auto* sweep_find = d.find("find##sweep", "Benchmark");
   REQUIRE(sweep_find);
   REQUIRE(d.type_into(sweep_find->id, U"Voxel"));
@@ -222,12 +216,7 @@ TEST_CASE("a 2-D sweep over any parameters from the UI, and the flip view opens 
   s.bench.sweep_values2 = "0.3,1";
   UiDriver d(s, 1400, 1100);
   d.settle();
-  REQUIRE(d.click_widget("benchmark view...", "Pagor Studio"));
-  d.frames(2);
-  REQUIRE(d.click_widget("open and run##bench", "Benchmark"));
-  settle_bench(d);
-  REQUIRE(d.click_widget("run sweep##sweep", "Benchmark"));
-  settle_bench(d);
+  d.run_bench_and_sweep();
   const auto record = d.studio().bench().sweep_result();
   REQUIRE(record);
   const SweepResult& r = record->result;
@@ -276,7 +265,8 @@ TEST_CASE("a 2-D sweep over any parameters from the UI, and the flip view opens 
   }
 }
 
-TEST_CASE("a value typed into a slider is applied once, when the field is left, not per keystroke") {
+TEST_CASE(
+    "a value typed into a slider is applied once, when the field is left, not per keystroke") {
   TempDir tmp;
   UiDriver d(synthetic_state(tmp), 900, 1000);
   d.settle();

@@ -37,17 +37,16 @@ std::string utf8(const std::u32string& text) {
   return out;
 }
 
+}  // namespace
+
 ImVec2 centre(const WidgetRecord& w) {
   return ImVec2((w.min.x + w.max.x) * 0.5f, (w.min.y + w.max.y) * 0.5f);
 }
 
-// Where to click to focus a field or grab a slider: inside its frame, not on its label.
 ImVec2 frame_point(const WidgetRecord& w, float fraction) {
   return ImVec2(w.min.x + std::clamp(fraction, 0.0f, 1.0f) * std::max(1.0f, w.frame_w - 6) + 3,
                 (w.min.y + w.max.y) * 0.5f);
 }
-
-}  // namespace
 
 void set_context(const std::string& what) {
   g_context = what;
@@ -136,6 +135,22 @@ void UiDriver::settle(double timeout_s) {
     frame();
   }
   frames(2);
+}
+
+void UiDriver::settle_bench() {
+  set_context("waiting for the benchmark view after: " + action_);
+  for (int i = 0; i < 6000 && !studio_->bench().wait_idle(0.05); ++i) frame();
+  for (int i = 0; i < 6000 && studio_->bench().status().sweeping; ++i) frame();
+  frames(3);
+}
+
+void UiDriver::run_bench_and_sweep() {
+  REQUIRE(click_widget("benchmark view...", "Pagor Studio"));
+  frames(2);
+  REQUIRE(click_widget("open and run##bench", "Benchmark"));
+  settle_bench();
+  REQUIRE(click_widget("run sweep##sweep", "Benchmark"));
+  settle_bench();
 }
 
 void UiDriver::resize(int width, int height) {

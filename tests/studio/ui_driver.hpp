@@ -29,6 +29,11 @@ constexpr int Enter = 257, Escape = 256, Backspace = 259, Tab = 258, Left = 263,
 
 /// The action being performed, printed when an assertion aborts the process.
 void set_context(const std::string& what);
+/// The centre of a widget's box.
+ImVec2 centre(const studio::ui::WidgetRecord& w);
+/// Where to click to focus a field or grab a slider: inside its frame (at `fraction` of its
+/// width), not on its label.
+ImVec2 frame_point(const studio::ui::WidgetRecord& w, float fraction);
 
 class UiDriver {
  public:
@@ -49,6 +54,10 @@ class UiDriver {
   void idle(float seconds = 0.35f);
   /// Frames until the worker has nothing pending (fails after `timeout_s`).
   void settle(double timeout_s = 240);
+  /// Frames until the benchmark view's worker is idle and its sweep, if any, has ended.
+  void settle_bench();
+  /// From the main window: opens the benchmark view, runs its set, then its sweep, each settled.
+  void run_bench_and_sweep();
   void resize(int width, int height);
   int width() const { return width_; }
   int height() const { return height_; }

@@ -13,19 +13,6 @@ namespace {
 using studio::ui::WidgetKind;
 using studio::ui::WidgetRecord;
 
-ImVec2 centre(const WidgetRecord& w) {
-  return ImVec2((w.min.x + w.max.x) * 0.5f, (w.min.y + w.max.y) * 0.5f);
-}
-
-ImVec2 frame_point(const WidgetRecord& w, float fraction) {
-  return ImVec2(w.min.x + std::clamp(fraction, 0.0f, 1.0f) * std::max(1.0f, w.frame_w - 6) + 3,
-                (w.min.y + w.max.y) * 0.5f);
-}
-
-}  // namespace
-
-namespace {
-
 struct Saved {
   PairSource data;
   std::string pairs_file, session_path, screenshot_path, export_path;

@@ -5,6 +5,8 @@
 #include <random>
 #include <string>
 
+#include "pagor/errors.hpp"
+
 namespace pagor::test {
 
 /// Whether this build runs under AddressSanitizer: tests whose brute-force references are
@@ -20,6 +22,17 @@ constexpr bool kSanitized = true;
 #else
 constexpr bool kSanitized = false;
 #endif
+
+/// The message of the InputError that `f()` throws, or "no error".
+template <class F>
+std::string input_error_of(const F& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
 
 /// A fresh directory under the system temp dir, removed when it goes out of scope.
 class TempDir {

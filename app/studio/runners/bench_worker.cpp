@@ -118,17 +118,21 @@ void BenchWorker::show_results(std::vector<PairOutcome> outcomes, const std::str
   changed_.notify_all();
 }
 
+void BenchWorker::start_pass_locked() {
+  for (BenchRow& r : rows_) r.current = false;
+  status_.done = 0;
+  status_.error.clear();
+  ++status_.generation;
+  cancel_ = true;  // the pass in flight ends at its next pair; the worker starts the new one
+}
+
 void BenchWorker::set_config(const Config& config) {
   {
     std::lock_guard<std::mutex> lock(mutex_);
     if (!rerunnable_) return;
     if (config_to_json(config, -1) == config_to_json(config_, -1)) return;
     config_ = config;
-    for (BenchRow& r : rows_) r.current = false;
-    status_.done = 0;
-    status_.error.clear();
-    ++status_.generation;
-    cancel_ = true;
+    start_pass_locked();
   }
   changed_.notify_all();
 }
@@ -152,11 +156,7 @@ void BenchWorker::rerun() {
   {
     std::lock_guard<std::mutex> lock(mutex_);
     if (!rerunnable_) return;
-    for (BenchRow& r : rows_) r.current = false;
-    status_.done = 0;
-    status_.error.clear();
-    ++status_.generation;
-    cancel_ = true;
+    start_pass_locked();
   }
   changed_.notify_all();
 }

@@ -138,6 +138,8 @@ class BenchWorker {
  private:
   void loop();
   void run_pending_sweep();
+  /// Marks every row stale and starts a new pass (a changed configuration, a re-run; mutex held).
+  void start_pass_locked();
   /// Reads the plan `pending_plan_` names, if any (worker thread).
   void load_pending_plan();
   /// Takes a new set, and builds the runners anew when there is one or the jobs changed

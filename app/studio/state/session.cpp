@@ -55,29 +55,23 @@ json diagnosis_view_json(const DiagnosisView& d) {
 }
 
 json data_json(const PairSource& d, const std::optional<Transform>& inline_truth) {
-  if (d.kind == PairSource::Kind::files && inline_truth)
-    return {{"kind", "files"},
-            {"source", d.source},
-            {"source_labels", d.source_labels},
-            {"target", d.target},
-            {"target_labels", d.target_labels},
-            {"ground_truth", d.ground_truth},
-            {"correspondences", d.correspondences},
-            {"ground_truth_T", matrix_json(*inline_truth)}};
   switch (d.kind) {
     case PairSource::Kind::kitti:
       return {{"kind", "kitti"},
               {"kitti_root", d.kitti_root},
               {"sequence", d.sequence},
               {"pair", {d.source_frame, d.target_frame}}};
-    case PairSource::Kind::files:
-      return {{"kind", "files"},
-              {"source", d.source},
-              {"source_labels", d.source_labels},
-              {"target", d.target},
-              {"target_labels", d.target_labels},
-              {"ground_truth", d.ground_truth},
-              {"correspondences", d.correspondences}};
+    case PairSource::Kind::files: {
+      json j = {{"kind", "files"},
+                {"source", d.source},
+                {"source_labels", d.source_labels},
+                {"target", d.target},
+                {"target_labels", d.target_labels},
+                {"ground_truth", d.ground_truth},
+                {"correspondences", d.correspondences}};
+      if (inline_truth) j["ground_truth_T"] = matrix_json(*inline_truth);
+      return j;
+    }
     case PairSource::Kind::synthetic:
       return {{"kind", "synthetic"}, {"seed", d.synthetic_seed}};
   }
@@ -152,7 +146,6 @@ PairSource read_data(const json& d, const std::string& where,
   }
   return src;
 }
-
 
 void read_diagnosis_view(const json& d, const std::string& where, ViewState& view) {
   if (!d.is_object()) throw InputError(where + ": expected an object");

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <random>
 
+#include "eval/planar_pose.hpp"
+
 namespace pagor {
 namespace {
 
@@ -70,14 +72,6 @@ void add_floor(World& w, const Eigen::Vector2d& lo, const Eigen::Vector2d& hi, d
   const int ny = static_cast<int>(std::round((hi.y() - lo.y()) / spacing));
   for (int i = 0; i <= nx; ++i)
     for (int j = 0; j <= ny; ++j) w.add(lo.x() + i * spacing, lo.y() + j * spacing, 0.0, kRoad);
-}
-
-Transform planar_pose(double x, double y, double yaw) {
-  Transform T = Transform::Identity();
-  T.block<3, 3>(0, 0) = Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
-  T(0, 3) = x;
-  T(1, 3) = y;
-  return T;
 }
 
 // The half turn about the vertical through (x, y).

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <random>
 
+#include "eval/planar_pose.hpp"
+
 namespace pagor {
 namespace {
 
@@ -93,14 +95,6 @@ void add_building(Sampled& s, const Eigen::Vector2d& c, double yaw, const Eigen:
         along_x ? Eigen::Vector3d(width, depth, height) : Eigen::Vector3d(depth, width, height);
     add_box(s, c + R * local, yaw, dsize, spacing, kBuilding, -1);
   }
-}
-
-Transform planar_pose(double x, double y, double yaw) {
-  Transform T = Transform::Identity();
-  T.block<3, 3>(0, 0) = Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
-  T(0, 3) = x;
-  T(1, 3) = y;
-  return T;
 }
 
 PointCloud observe(const Sampled& s, const std::vector<SyntheticObject>& objects, bool source,

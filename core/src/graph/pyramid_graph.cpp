@@ -118,27 +118,22 @@ PAGOR_AVX2_CLONES int prefilter(const Packed& c, int i, int j0, int n, bool rati
   const float* qy = c.fx[4].data() + j0;
   const float* qz = c.fx[5].data() + j0;
   unsigned char pass[kBlock];
-  // Two branch-free loops (one per TRIM kind), so that the compiler runs them on vector lanes.
-  if (ratio) {
+  // One branch-free loop per TRIM kind (`consistent` is inlined into each), so that the compiler
+  // runs it on vector lanes.
+  const auto scan = [&](const auto& consistent) {
     for (int t = 0; t < n; ++t) {
       const float dpx = pxi - px[t], dpy = pyi - py[t], dpz = pzi - pz[t];
       const float dqx = qxi - qx[t], dqy = qyi - qy[t], dqz = qzi - qz[t];
       const float a2 = dpx * dpx + dpy * dpy + dpz * dpz;
       const float b2 = dqx * dqx + dqy * dqy + dqz * dqz;
       const float lo = a2 < b2 ? a2 : b2, hi = a2 < b2 ? b2 : a2;
-      pass[t] = static_cast<unsigned char>((lo >= min_sq) & (hi <= ratio_sq * lo + ratio_slack));
+      pass[t] = static_cast<unsigned char>((lo >= min_sq) & consistent(lo, hi));
     }
-  } else {
-    for (int t = 0; t < n; ++t) {
-      const float dpx = pxi - px[t], dpy = pyi - py[t], dpz = pzi - pz[t];
-      const float dqx = qxi - qx[t], dqy = qyi - qy[t], dqz = qzi - qz[t];
-      const float a2 = dpx * dpx + dpy * dpy + dpz * dpz;
-      const float b2 = dqx * dqx + dqy * dqy + dqz * dqz;
-      const float lo = a2 < b2 ? a2 : b2, hi = a2 < b2 ? b2 : a2;
-      pass[t] =
-          static_cast<unsigned char>((lo >= min_sq) & (std::sqrt(hi) - std::sqrt(lo) <= diff));
-    }
-  }
+  };
+  if (ratio)
+    scan([&](float lo, float hi) { return hi <= ratio_sq * lo + ratio_slack; });
+  else
+    scan([&](float lo, float hi) { return std::sqrt(hi) - std::sqrt(lo) <= diff; });
   int k = 0;
   for (int t = 0; t < n; ++t) {
     keep[k] = j0 + t;
