@@ -337,7 +337,7 @@ void Pipeline::judge_acceptance() {
                               : config_.gnc.model;
   if (!refinement_.applied) {
     acceptance_ = judge_selection(*verifier_, poses_, verification_, config_.verification,
-                                  config_.acceptance, model);
+                                  config_.acceptance, model, threads_);
     return;
   }
   // Judge the pose the user gets: the refined one, with its own D.
@@ -348,7 +348,7 @@ void Pipeline::judge_acceptance() {
   verification.scores[sel] = refinement_.score_after;
   verification.selected_distances = refinement_.distances_after;
   acceptance_ = judge_selection(*verifier_, candidates, verification, config_.verification,
-                                config_.acceptance, model);
+                                config_.acceptance, model, threads_);
 }
 
 std::optional<Transform> Pipeline::selected_transform() const {

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <fstream>
+#include <mutex>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -290,6 +291,43 @@ TEST_CASE("pairs on two worker threads give the outcomes of one, rows in set ord
   }
   CHECK_FALSE(got[3].loaded);  // the missing pair fails its row only
   CHECK_THAT(got[3].load_error, Catch::Contains("/nonexistent/cloud.pcd"));
+}
+
+TEST_CASE("the last pairs of a parallel set take the cores the idle workers leave") {
+  // 5 pairs on 2 workers: the first four share the workers, the last one, alone, gets both; on 3
+  // workers the last two get one each (3 / 2) and the last one all three.
+  for (const auto& [jobs, want] : {std::pair{2, std::vector<int>{1, 1, 1, 1, 2}},
+                                   std::pair{3, std::vector<int>{1, 1, 1, 1, 3}},
+                                   std::pair{1, std::vector<int>{1, 1, 1, 1, 1}}}) {
+    std::vector<std::size_t> order{4, 3, 2, 1, 0};
+    std::vector<int> share(order.size(), 0);
+    std::vector<std::size_t> taken;
+    std::mutex mutex;
+    run_parallel(
+        jobs, order,
+        [&](int, std::size_t i, int s, const std::atomic<bool>*) {
+          const std::lock_guard<std::mutex> lock(mutex);
+          share[i] = s;
+          taken.push_back(i);
+        },
+        [](std::size_t) {});
+    std::vector<int> by_position;
+    for (std::size_t i : order) by_position.push_back(share[i]);
+    INFO("jobs " << jobs);
+    CHECK(by_position == want);
+  }
+  // A pair run on more threads than its runner's gives the same outcome.
+  const PairSet set = synthetic_set();
+  SetRunner one(set), other(set);
+  const PairOutcome a = one.run(0, synthetic_config());
+  const PairOutcome b = other.run(0, synthetic_config(), nullptr, 3);
+  CHECK(same_result(a, b));
+  CHECK(without_timings(a.report_json) == without_timings(b.report_json));
+  // A kept pipeline re-run with other threads too.
+  Config changed = synthetic_config();
+  changed.verification.mu = 0.5;
+  CHECK(without_timings(one.run(0, changed).report_json) ==
+        without_timings(other.run(0, changed, nullptr, 2).report_json));
 }
 
 TEST_CASE("parallel pairs: reused outcomes are not run, a cancel stops them, jobs parse") {

@@ -153,3 +153,20 @@ TEST_CASE("a malformed poses.txt names the file and line") {
   std::ofstream(dir.file("sequences/01/poses.txt")) << "1 0 0 0 0 1 0 0 0 0 1 0\n";
   CHECK_THROWS_WITH(KittiSequence(dir.file(""), "01"), Catch::Contains("no 'Tr:' line"));
 }
+
+TEST_CASE("a sequence opened again sees its poses file as it is now") {
+  // The poses are parsed once for each content of the file: rewritten with the same size (and
+  // possibly the same time), the new poses are read.
+  test::TempDir dir;
+  std::filesystem::create_directories(dir.file("sequences/02"));
+  std::ofstream(dir.file("sequences/02/calib.txt")) << "Tr: 1 0 0 0 0 1 0 0 0 0 1 0\n";
+  std::ofstream(dir.file("sequences/02/poses.txt")) << "1 0 0 1 0 1 0 0 0 0 1 0\n";
+  const KittiSequence first(dir.file(""), "02");
+  CHECK(first.camera_pose(0)(0, 3) == 1.0);
+  CHECK(KittiSequence(dir.file(""), "02").camera_pose(0)(0, 3) == 1.0);
+  std::ofstream(dir.file("sequences/02/poses.txt")) << "1 0 0 2 0 1 0 0 0 0 1 0\n";
+  CHECK(KittiSequence(dir.file(""), "02").camera_pose(0)(0, 3) == 2.0);
+  CHECK(first.camera_pose(0)(0, 3) == 1.0);  // an opened sequence keeps what it read
+  std::ofstream(dir.file("sequences/02/poses.txt")) << "1 0 0 2 0 1 0 0 0 0 1\n";
+  CHECK_THROWS_WITH(KittiSequence(dir.file(""), "02"), Catch::Contains("poses.txt:1"));
+}

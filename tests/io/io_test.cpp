@@ -42,6 +42,27 @@ TEST_CASE("KITTI .bin and .label round trip") {
   CHECK(semantic_id(r.cloud.labels[7]) == 2);
 }
 
+TEST_CASE("a KITTI scan and its labels longer than one read come back whole") {
+  // 10,001 points: 160 kB of points and 40 kB of labels, read in pieces of 64 kB.
+  test::TempDir dir;
+  PointCloud c;
+  for (int i = 0; i < 10001; ++i) {
+    c.points.emplace_back(0.5f * i, -0.25f * i, 1.0f + 1e-3f * i);
+    c.intensities.push_back(static_cast<float>(i % 256) / 255.0f);
+    c.labels.push_back(static_cast<std::uint32_t>(i * 2654435761u));
+  }
+  save_cloud(c, dir.file("long.bin"));
+  const PointCloud r = read_kitti_bin(dir.file("long.bin"));
+  const std::vector<std::uint32_t> labels = read_kitti_labels(dir.file("long.label"));
+  REQUIRE(r.size() == c.size());
+  CHECK(r.points == c.points);
+  CHECK(r.intensities == c.intensities);
+  CHECK(labels == c.labels);
+  write_bytes(dir.file("long_odd.bin"), std::string(160016 + 3, '\0'));
+  CHECK_THROWS_WITH(read_kitti_bin(dir.file("long_odd.bin")),
+                    Catch::Contains("160019 bytes is not a multiple of 16"));
+}
+
 TEST_CASE("PCD and PLY round trip, with and without labels") {
   test::TempDir dir;
   for (const char* ext : {".pcd", ".ply"}) {

@@ -119,7 +119,7 @@ TEST_CASE("voxel downsampling equals a straightforward map-based reference") {
   }
 }
 
-TEST_CASE("the grid's nearest neighbour agrees with a linear scan, off the grid too") {
+TEST_CASE("the grid's nearest neighbour, and whether there is one, agree with a linear scan") {
   // The search skips cells whose box is farther than the best so far: it must still find the
   // nearest point strictly within the radius, for queries inside, beside and far off the grid.
   std::mt19937_64 rng(23);
@@ -149,6 +149,7 @@ TEST_CASE("the grid's nearest neighbour agrees with a linear scan, off the grid 
           const auto [got, d2] = grid.nearest(q, radius);
           INFO("cell " << cell << " radius " << radius << " query " << q.transpose()
                        << (grid.dense() ? " (dense)" : " (hashed)"));
+          REQUIRE(grid.any_within(q, radius) == (ref >= 0));
           REQUIRE(d2 == ref_d2);
           REQUIRE((got >= 0) == (ref >= 0));
           if (ref >= 0)

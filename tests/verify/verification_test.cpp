@@ -202,6 +202,39 @@ TEST_CASE("distances of flagged points only: theirs as for all points, the other
   CHECK_THROWS_AS(verifier.distances(T, 1.0f, std::vector<char>(n + 1, 1)), InputError);
 }
 
+TEST_CASE("points counted within a radius are those whose nearest target point is closer") {
+  // count_within stops at the first target point it finds; it must count exactly the flagged
+  // points whose nearest distance is below the radius, on one thread or several, on the grid and
+  // on the kd-tree (a radius too large for a grid).
+  const SyntheticScene scene = make_synthetic_scene();
+  const Verifier verifier(scene.source, scene.target, 0.5);
+  const std::size_t n = verifier.source_points().size();
+  std::vector<char> only(n, 0);
+  for (std::size_t i = 0; i < n; i += 2) only[i] = 1;
+  for (const Transform& T : {scene.T_target_source, perturbed(scene.T_target_source, 0.4, 3.0),
+                             Transform(Transform::Identity())})
+    for (float radius : {0.25f, 0.5f, 1.0f, 3.0f, 1000.0f}) {
+      const Eigen::Matrix3f R = T.block<3, 3>(0, 0).cast<float>();
+      const Eigen::Vector3f t = T.block<3, 1>(0, 3).cast<float>();
+      std::size_t expected = 0;
+      for (std::size_t i = 0; i < n; ++i) {
+        if (!only[i]) continue;
+        const Eigen::Vector3f q = R * verifier.source_points()[i] + t;
+        bool near = false;
+        for (const Eigen::Vector3f& p : verifier.target_points())
+          near = near || (p - q).squaredNorm() < radius * radius;
+        expected += near;
+      }
+      INFO("radius " << radius);
+      CHECK(verifier.count_within(T, radius, only) == expected);
+      CHECK(verifier.count_within(T, radius, only, 3) == expected);
+      if (radius == 1.0f) CHECK(expected > 0);
+    }
+  CHECK(verifier.count_within(scene.T_target_source, 1.0f, std::vector<char>(n, 0)) == 0);
+  CHECK_THROWS_AS(verifier.count_within(Transform::Identity(), 1.0f, std::vector<char>(n + 1, 1)),
+                  InputError);
+}
+
 TEST_CASE("one verifier searched from several threads at once, with growing bounds, agrees") {
   // The grid is built lazily and replaced by a coarser one when a larger bound comes; threads
   // that still search an older grid must see it intact (run under ThreadSanitizer too).

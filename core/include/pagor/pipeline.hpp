@@ -58,7 +58,8 @@ using ProgressFn = std::function<void(Stage stage, double fraction)>;
 
 class Pipeline {
  public:
-  /// `threads` is used by the stages that parallelise (graph construction, verification).
+  /// `threads` is used by the stages that parallelise (the two clouds' landmarks, graph
+  /// construction, verification, refinement, acceptance); the results do not depend on it.
   explicit Pipeline(Config config = default_config(), int threads = 1);
 
   /// Sets both clouds; every stage becomes stale. `label_scheme`, when given, is the numbering of
@@ -78,6 +79,7 @@ class Pipeline {
   /// Throws ConfigError (the current configuration is kept).
   void set_config(const Config& config);
   void set_threads(int threads) { threads_ = threads < 1 ? 1 : threads; }
+  int threads() const { return threads_; }
 
   const Config& config() const { return config_; }
   /// Whether there is something to run on: clouds, matches or both.

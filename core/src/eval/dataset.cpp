@@ -7,16 +7,40 @@
 #include "pagor/indoor/floor_projection.hpp"
 #include "pagor/io/kitti.hpp"
 
+#include "util/parallel.hpp"
+
 namespace pagor {
 
-LoadedPair load_pair(const PairSource& src, const IndoorParams& indoor) {
+namespace {
+
+// Calls load_source() and load_target(), at once when threads > 1; an error of the source's is
+// the one thrown when both fail, as one after the other.
+template <class Source, class Target>
+void load_both(int threads, const Source& load_source, const Target& load_target) {
+  parallel_ranges(threads, 2, 1, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k) {
+      if (k == 0)
+        load_source();
+      else
+        load_target();
+    }
+  });
+}
+
+}  // namespace
+
+LoadedPair load_pair(const PairSource& src, const IndoorParams& indoor, int threads) {
   LoadedPair out;
   switch (src.kind) {
     case PairSource::Kind::files:
       if (src.source.empty() || src.target.empty())
         throw InputError("a file pair needs both a source and a target cloud");
-      out.source = load_cloud(src.source, src.source_labels);
-      if (is_floor_plan_path(src.target)) {
+      if (!is_floor_plan_path(src.target)) {
+        load_both(
+            threads, [&] { out.source = load_cloud(src.source, src.source_labels); },
+            [&] { out.target = load_cloud(src.target, src.target_labels); });
+      } else {
+        out.source = load_cloud(src.source, src.source_labels);
         out.plan = read_floor_plan(src.target);
         try {
           out.target.cloud = sample_floor_plan(*out.plan, indoor.plan_spacing);
@@ -31,16 +55,15 @@ LoadedPair load_pair(const PairSource& src, const IndoorParams& indoor) {
         } catch (const InputError& e) {
           throw InputError(src.source + ": " + e.what());
         }
-      } else {
-        out.target = load_cloud(src.target, src.target_labels);
       }
       out.source_name = src.source;
       out.target_name = src.target;
       break;
     case PairSource::Kind::kitti: {
       const KittiSequence seq(src.kitti_root, src.sequence);
-      out.source = seq.load_frame(src.source_frame);
-      out.target = seq.load_frame(src.target_frame);
+      load_both(
+          threads, [&] { out.source = seq.load_frame(src.source_frame); },
+          [&] { out.target = seq.load_frame(src.target_frame); });
       out.source_name = seq.scan_path(src.source_frame);
       out.target_name = seq.scan_path(src.target_frame);
       out.T_target_source_gt = seq.ground_truth(src.source_frame, src.target_frame);

@@ -67,8 +67,10 @@ std::size_t SetRunner::estimate_bytes(const Pipeline& p) {
   return bytes;
 }
 
-PairOutcome SetRunner::run(std::size_t i, const Config& config, const std::atomic<bool>* cancel) {
+PairOutcome SetRunner::run(std::size_t i, const Config& config, const std::atomic<bool>* cancel,
+                           int threads) {
   if (cancel && cancel->load()) throw Cancelled();
+  if (threads <= 0) threads = threads_;
   const PairEntry& entry = set_.pairs.at(i);
   Slot& slot = *slots_[i];
   std::array<int, kStageCount> before{};
@@ -76,6 +78,7 @@ PairOutcome SetRunner::run(std::size_t i, const Config& config, const std::atomi
   if (slot.pipeline) {
     for (int s = 0; s < kStageCount; ++s) before[s] = slot.pipeline->runs(static_cast<Stage>(s));
     slot.pipeline->set_config(config);
+    slot.pipeline->set_threads(threads);
     try {  // the pair's own failure fails the pair, as in run_pair
       slot.pipeline->run(ProgressFn{}, cancel);
     } catch (const InputError& e) {
@@ -91,7 +94,7 @@ PairOutcome SetRunner::run(std::size_t i, const Config& config, const std::atomi
     }
     o = pair_outcome(*slot.pipeline, entry, slot.source_name, slot.target_name);
   } else {
-    auto pipeline = std::make_unique<Pipeline>(config, threads_);
+    auto pipeline = std::make_unique<Pipeline>(config, threads);
     o = run_pair(*pipeline, entry, cancel);
     if (!o.loaded) return o;
     slot.pipeline = std::move(pipeline);
@@ -226,7 +229,7 @@ std::vector<std::unique_ptr<SetRunner>> make_runners(const PairSet& set, int job
 }
 
 void run_parallel(int jobs, const std::vector<std::size_t>& order,
-                  const std::function<void(int, std::size_t, const std::atomic<bool>*)>& work,
+                  const std::function<void(int, std::size_t, int, const std::atomic<bool>*)>& work,
                   const std::function<void(std::size_t)>& finished,
                   const std::atomic<bool>* cancel) {
   std::mutex mutex;
@@ -236,16 +239,22 @@ void run_parallel(int jobs, const std::vector<std::size_t>& order,
   int running = 0;
   std::exception_ptr error;
   std::atomic<bool> stop{false};
+  const int n = std::max(1, std::min<int>(jobs, static_cast<int>(order.size())));
   const auto worker = [&](int w) {
     for (;;) {
       std::size_t i;
+      int share = 1;
       {
         const std::lock_guard<std::mutex> lock(mutex);
         if (stop || next == order.size()) break;
+        // The calls left, this one included, split the workers between them: the workers that
+        // find nothing left to take lend their cores.
+        share = std::max(1, n / static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(n),
+                                                                       order.size() - next)));
         i = order[next++];
       }
       try {
-        work(w, i, &stop);
+        work(w, i, share, &stop);
       } catch (...) {
         const std::lock_guard<std::mutex> lock(mutex);
         if (!error) error = std::current_exception();
@@ -260,7 +269,6 @@ void run_parallel(int jobs, const std::vector<std::size_t>& order,
     --running;
     changed.notify_all();
   };
-  const int n = std::max(1, std::min<int>(jobs, static_cast<int>(order.size())));
   std::vector<std::thread> threads;
   running = n;
   for (int w = 0; w < n; ++w) threads.emplace_back(worker, w);
@@ -326,8 +334,9 @@ std::vector<PairOutcome> run_set(std::vector<std::unique_ptr<SetRunner>>& runner
   flush();  // the reused pairs before the first one to run
   run_parallel(
       static_cast<int>(runners.size()), to_run,
-      [&](int w, std::size_t i, const std::atomic<bool>* stop) {
-        out[i] = runners[static_cast<std::size_t>(w)]->run(i, config, stop);
+      [&](int w, std::size_t i, int share, const std::atomic<bool>* stop) {
+        SetRunner& runner = *runners[static_cast<std::size_t>(w)];
+        out[i] = runner.run(i, config, stop, runner.threads() * share);
       },
       [&](std::size_t i) {
         has[i] = true;

@@ -9,6 +9,7 @@
 #include <string_view>
 
 #include "io/cloud_frame.hpp"
+#include "io/read_pieces.hpp"
 #include "io/pcd_reader.hpp"
 #include "io/ply_reader.hpp"
 #include "pagor/errors.hpp"
@@ -148,31 +149,69 @@ std::string file_extension(const std::string& path) {
   return ext;
 }
 
+namespace {
+
+// Reads `path` as records of `record` bytes, handing them to add(bytes, count) as they arrive
+// (no copy of the whole file: on a virtual machine its fresh pages cost more than the reading).
+// Returns the records read; throws InputError when the size is not a whole number of records.
+template <class Reserve, class Add>
+std::size_t read_records(const std::string& path, const char* what, std::size_t record,
+                         const char* layout, const Reserve& reserve, const Add& add) {
+  char partial[16];
+  std::size_t carry = 0, count = 0;
+  const std::uint64_t total = read_file_pieces(
+      path, what, kMaxCloudFileBytes,
+      [&](std::uint64_t size) { reserve(static_cast<std::size_t>(size / record)); },
+      [&](const char* data, std::size_t n) {
+        if (carry > 0) {  // a record split between two pieces
+          const std::size_t take = std::min(record - carry, n);
+          std::memcpy(partial + carry, data, take);
+          carry += take, data += take, n -= take;
+          if (carry < record) return;
+          add(partial, std::size_t{1}), ++count, carry = 0;
+        }
+        const std::size_t whole = n / record;
+        if (whole > 0) add(data, whole), count += whole;
+        carry = n - whole * record;
+        std::memcpy(partial, data + whole * record, carry);
+      });
+  if (carry > 0)
+    throw InputError(path + ": size " + std::to_string(total) + " bytes is not a multiple of " +
+                     std::to_string(record) + " (" + layout + ")");
+  return count;
+}
+
+}  // namespace
+
 PointCloud read_kitti_bin(const std::string& path) {
-  const std::string bytes = read_file(path, "scan", kMaxCloudFileBytes);
-  if (bytes.size() % kKittiPointBytes != 0)
-    throw InputError(path + ": size " + std::to_string(bytes.size()) +
-                     " bytes is not a multiple of 16 (float32 x, y, z, reflectance per point)");
-  const std::size_t n = bytes.size() / kKittiPointBytes;
   PointCloud cloud;
-  cloud.points.resize(n);
-  cloud.intensities.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    float v[4];
-    std::memcpy(v, bytes.data() + i * kKittiPointBytes, kKittiPointBytes);
-    cloud.points[i] = Eigen::Vector3f(v[0], v[1], v[2]);
-    cloud.intensities[i] = v[3];
-  }
+  read_records(
+      path, "scan", kKittiPointBytes, "float32 x, y, z, reflectance per point",
+      [&](std::size_t n) {
+        cloud.points.reserve(n);
+        cloud.intensities.reserve(n);
+      },
+      [&](const char* bytes, std::size_t count) {
+        for (std::size_t i = 0; i < count; ++i, bytes += kKittiPointBytes) {
+          float v[4];
+          std::memcpy(v, bytes, kKittiPointBytes);
+          cloud.points.emplace_back(v[0], v[1], v[2]);
+          cloud.intensities.push_back(v[3]);
+        }
+      });
   return cloud;
 }
 
 std::vector<std::uint32_t> read_kitti_labels(const std::string& path) {
-  const std::string bytes = read_file(path, "label file", kMaxCloudFileBytes);
-  if (bytes.size() % sizeof(std::uint32_t) != 0)
-    throw InputError(path + ": size " + std::to_string(bytes.size()) +
-                     " bytes is not a multiple of 4 (one uint32 per point)");
-  std::vector<std::uint32_t> labels(bytes.size() / sizeof(std::uint32_t));
-  if (!labels.empty()) std::memcpy(labels.data(), bytes.data(), bytes.size());
+  std::vector<std::uint32_t> labels;
+  read_records(
+      path, "label file", sizeof(std::uint32_t), "one uint32 per point",
+      [&](std::size_t n) { labels.reserve(n); },
+      [&](const char* bytes, std::size_t count) {
+        const std::size_t at = labels.size();
+        labels.resize(at + count);
+        std::memcpy(labels.data() + at, bytes, count * sizeof(std::uint32_t));
+      });
   return labels;
 }
 

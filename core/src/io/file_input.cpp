@@ -10,6 +10,7 @@
 #include <cstring>
 #include <vector>
 
+#include "io/read_pieces.hpp"
 #include "pagor/errors.hpp"
 
 namespace pagor {
@@ -98,8 +99,14 @@ std::string read_file(const std::string& path, const std::string& what, std::uin
   std::size_t done = 0;
   for (;;) {  // to the end of the file, which may have grown or shrunk since it was opened
     if (done == bytes.size()) {
+      // Full: the end is probed with a small read before the string grows (growing copies it).
+      char more[4096];
+      const std::size_t n = read_some(f.fd, more, sizeof(more), path, what);
+      if (n == 0) break;
       if (bytes.size() > max_bytes) throw too_large(path, what, "growing", max_bytes);
-      bytes.resize(bytes.size() + 65536);
+      bytes.append(more, n);
+      done += n;
+      continue;
     }
     const std::size_t n = read_some(f.fd, &bytes[done], bytes.size() - done, path, what);
     if (n == 0) break;
@@ -110,27 +117,53 @@ std::string read_file(const std::string& path, const std::string& what, std::uin
   return bytes;
 }
 
-std::string file_fingerprint(const std::string& path, const std::string& what,
-                             std::uint64_t max_bytes) {
+std::uint64_t read_file_pieces(const std::string& path, const std::string& what,
+                               std::uint64_t max_bytes,
+                               const std::function<void(std::uint64_t size)>& opened,
+                               const std::function<void(const char*, std::size_t)>& consume) {
   std::uint64_t size = 0;
   Fd f;
   f.fd = open_regular(path, what, max_bytes, size);
-  // FNV-1a over 8-byte words (the tail zero-padded): not cryptographic, but any change of a
-  // byte changes it with near certainty.
-  std::uint64_t h = 0xcbf29ce484222325ull, total = 0;
-  std::vector<char> buf(std::size_t{1} << 20);
+  if (opened) opened(size);
+  // On the stack: a buffer from the heap would be fresh pages for every file (a page fault each,
+  // dear in a virtual machine).
+  char buf[kFilePieceBytes];
+  std::uint64_t total = 0;
   for (;;) {
-    const std::size_t n = read_some(f.fd, buf.data(), buf.size(), path, what);
+    const std::size_t n = read_some(f.fd, buf, sizeof(buf), path, what);
     if (n == 0) break;
     total += n;
     if (total > max_bytes) throw too_large(path, what, "growing", max_bytes);
-    for (std::size_t i = 0; i < n; i += 8) {
-      std::uint64_t word = 0;
-      std::memcpy(&word, buf.data() + i, std::min<std::size_t>(8, n - i));
-      h = (h ^ word) * 0x100000001b3ull;
-      h ^= h >> 29;
-    }
+    consume(buf, n);
   }
+  return total;
+}
+
+std::string file_fingerprint(const std::string& path, const std::string& what,
+                             std::uint64_t max_bytes) {
+  // FNV-1a over 8-byte words (the tail zero-padded): not cryptographic, but any change of a
+  // byte changes it with near certainty. Words are counted from the file's start, whatever the
+  // pieces the reads return.
+  std::uint64_t h = 0xcbf29ce484222325ull;
+  std::uint64_t word = 0;
+  std::size_t filled = 0;  // bytes of `word` set
+  const auto mix = [&] {
+    h = (h ^ word) * 0x100000001b3ull;
+    h ^= h >> 29;
+    word = 0;
+    filled = 0;
+  };
+  const std::uint64_t total =
+      read_file_pieces(path, what, max_bytes, {}, [&](const char* data, std::size_t n) {
+        for (std::size_t i = 0; i < n;) {
+          const std::size_t take = std::min<std::size_t>(8 - filled, n - i);
+          std::memcpy(reinterpret_cast<char*>(&word) + filled, data + i, take);
+          filled += take;
+          i += take;
+          if (filled == 8) mix();
+        }
+      });
+  if (filled > 0) mix();
   char out[48];
   std::snprintf(out, sizeof(out), "%llu:%016llx", static_cast<unsigned long long>(total),
                 static_cast<unsigned long long>(h));

@@ -1,10 +1,14 @@
 #include "pagor/io/kitti.hpp"
 
 #include <Eigen/LU>
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <map>
+#include <memory>
+#include <mutex>
 #include <sstream>
 #include <string_view>
 
@@ -42,25 +46,63 @@ std::vector<std::string_view> split_words(std::string_view line) {
 }
 
 // Twelve finite numbers forming a rigid 3x4 transform [R | t] (R orthonormal with det +1, to
-// the precision KITTI's files are written with). `where` is "file:line: what".
-Transform rigid_3x4(const std::vector<std::string_view>& w, const std::string& where) {
+// the precision KITTI's files are written with). `where()` is "file:line: what", made only for
+// an error (a sequence's poses file has thousands of lines).
+template <class Where>
+Transform rigid_3x4(const std::vector<std::string_view>& w, const Where& where) {
   if (w.size() != 12)
-    throw InputError(where + " needs 12 numbers (a 3x4 transform), got " +
+    throw InputError(where() + " needs 12 numbers (a 3x4 transform), got " +
                      std::to_string(w.size()));
   double v[12];
   for (int k = 0; k < 12; ++k) {
     const auto x = parse::to_double(w[static_cast<std::size_t>(k)]);
     if (!x || !std::isfinite(*x))
-      throw InputError(where + ": value " + std::to_string(k + 1) + " is not a finite number");
+      throw InputError(where() + ": value " + std::to_string(k + 1) + " is not a finite number");
     v[k] = *x;
   }
   const Transform T = transform_from_3x4(v);
   const Eigen::Matrix3d R = T.block<3, 3>(0, 0);
   const double orth = (R.transpose() * R - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
   if (!(orth <= kRotationTolerance) || !(std::abs(R.determinant() - 1.0) <= kRotationTolerance))
-    throw InputError(where + " is not a rigid transform (its rotation part is not orthonormal " +
+    throw InputError(where() + " is not a rigid transform (its rotation part is not orthonormal " +
                      "with determinant 1)");
   return T;
+}
+
+// The poses of `path`, read in place line by line.
+std::vector<Transform> read_poses(const std::string& path) {
+  const std::string text = read_file(path, "poses file", kMaxTextFileBytes);
+  std::vector<Transform> poses;
+  poses.reserve(static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) + 1);
+  int line_no = 0;
+  for (std::size_t begin = 0; begin < text.size();) {
+    const std::size_t end = std::min(text.find('\n', begin), text.size());
+    ++line_no;
+    const auto w = split_words(std::string_view(text).substr(begin, end - begin));
+    begin = end + 1;
+    if (w.empty()) continue;
+    poses.push_back(
+        rigid_3x4(w, [&] { return path + ":" + std::to_string(line_no) + ": the pose"; }));
+  }
+  if (poses.empty()) throw InputError(path + ": no poses");
+  return poses;
+}
+
+// The poses of `path`, parsed once a process for each content the file has had (known by its
+// fingerprint, read in small pieces): a set of KITTI pairs opens the sequence for every pair, and
+// parsing 4,541 poses took 5 ms.
+std::shared_ptr<const std::vector<Transform>> poses_of(const std::string& path) {
+  static std::mutex mutex;
+  static std::map<std::string, std::shared_ptr<const std::vector<Transform>>> parsed;
+  const std::string key = path + "\n" + file_fingerprint(path, "poses file", kMaxTextFileBytes);
+  {
+    const std::lock_guard<std::mutex> lock(mutex);
+    const auto it = parsed.find(key);
+    if (it != parsed.end()) return it->second;
+  }
+  auto poses = std::make_shared<const std::vector<Transform>>(read_poses(path));
+  const std::lock_guard<std::mutex> lock(mutex);
+  return parsed.emplace(key, std::move(poses)).first->second;
 }
 
 }  // namespace
@@ -79,27 +121,18 @@ KittiSequence::KittiSequence(const std::string& root, const std::string& sequenc
   if (!std::filesystem::is_directory(dir_, ec))
     throw InputError(dir_ + ": no such sequence directory (expected <root>/sequences/<seq>)");
 
-  const std::string poses_path = dir_ + "/poses.txt";
-  std::istringstream poses = open_text(poses_path, "poses file");
-  std::string line;
-  int line_no = 0;
-  while (std::getline(poses, line)) {
-    ++line_no;
-    const auto w = split_words(line);
-    if (w.empty()) continue;
-    poses_.push_back(rigid_3x4(w, poses_path + ":" + std::to_string(line_no) + ": the pose"));
-  }
-  if (poses_.empty()) throw InputError(poses_path + ": no poses");
+  poses_ = poses_of(dir_ + "/poses.txt");
 
   const std::string calib_path = dir_ + "/calib.txt";
   std::istringstream calib = open_text(calib_path, "calibration file");
-  line_no = 0;
+  std::string line;
+  int line_no = 0;
   bool found = false;
   while (std::getline(calib, line)) {
     ++line_no;
     if (line.rfind("Tr:", 0) != 0) continue;
     T_cam_velo_ = rigid_3x4(split_words(std::string_view(line).substr(3)),
-                            calib_path + ":" + std::to_string(line_no) + ": Tr");
+                            [&] { return calib_path + ":" + std::to_string(line_no) + ": Tr"; });
     found = true;
   }
   if (!found) throw InputError(calib_path + ": no 'Tr:' line (Velodyne-to-cam0 transform)");
@@ -128,10 +161,10 @@ LoadedCloud KittiSequence::load_frame(int frame) const {
 }
 
 const Transform& KittiSequence::camera_pose(int frame) const {
-  if (frame < 0 || static_cast<std::size_t>(frame) >= poses_.size())
+  if (frame < 0 || static_cast<std::size_t>(frame) >= poses_->size())
     throw InputError(dir_ + "/poses.txt: no pose for frame " + std::to_string(frame) + " (" +
-                     std::to_string(poses_.size()) + " poses)");
-  return poses_[static_cast<std::size_t>(frame)];
+                     std::to_string(poses_->size()) + " poses)");
+  return (*poses_)[static_cast<std::size_t>(frame)];
 }
 
 Transform KittiSequence::ground_truth(int source_frame, int target_frame) const {

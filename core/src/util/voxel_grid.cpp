@@ -294,6 +294,19 @@ std::pair<int, float> RadiusGrid::nearest(const Eigen::Vector3f& q, float radius
   return best;
 }
 
+bool RadiusGrid::any_within(const Eigen::Vector3f& q, float radius) const {
+  const float r2 = radius * radius;
+  bool found = false;
+  // Once found, a bound of 0 skips every cell left (their gaps are >= 0).
+  for_cells_near(
+      q, [&] { return found ? 0.0f : r2; },
+      [&](int begin, int end) {
+        for (int i = begin; i < end && !found; ++i)
+          found = (sorted_[static_cast<std::size_t>(i)] - q).squaredNorm() < r2;
+      });
+  return found;
+}
+
 void RadiusGrid::within(const Eigen::Vector3f& q, float radius, std::vector<int>& index,
                         std::vector<float>& distance_sq) const {
   const float r2 = radius * radius;

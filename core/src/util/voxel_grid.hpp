@@ -51,6 +51,10 @@ class RadiusGrid {
   /// input point `exclude`: its input index and squared distance, or -1 and radius^2.
   std::pair<int, float> nearest(const Eigen::Vector3f& q, float radius, int exclude = -1) const;
 
+  /// Whether some point is strictly closer than `radius` [m] (at most the cell) to `q`: the
+  /// search stops at the first it finds.
+  bool any_within(const Eigen::Vector3f& q, float radius) const;
+
   /// Cell size actually used [m].
   float cell() const { return cell_; }
 

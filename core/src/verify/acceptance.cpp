@@ -6,6 +6,7 @@
 
 #include "pagor/front/ground.hpp"
 #include "pagor/verify/evaluation.hpp"
+#include "util/parallel.hpp"
 #include "verify/ambiguity.hpp"
 
 namespace pagor {
@@ -53,17 +54,22 @@ double overlap_of(const std::vector<float>& dist, const std::vector<char>& count
 // alignment loses most of its overlap, one that aligns only what slides along itself (a facade, a
 // hedge, the road) or what matches anything (vegetation) keeps it.
 double sharpness_of(const Verifier& verifier, const Transform& T, const std::vector<char>& counts,
-                    double overlap, double step, const AcceptanceParams& params) {
-  double shifted = 0.0;
-  for (const Eigen::Vector2d& dir : {Eigen::Vector2d(1, 0), Eigen::Vector2d(-1, 0),
-                                     Eigen::Vector2d(0, 1), Eigen::Vector2d(0, -1)}) {
-    Transform moved = T;
-    moved.block<2, 1>(0, 3) += step * dir;
-    // Only the points overlap_of counts are searched (on KITTI, skipping the ground halved this).
-    const auto bound = static_cast<float>(params.inlier_distance);
-    shifted = std::max(shifted, overlap_of(verifier.distances(moved, bound, counts), counts,
-                                           params.inlier_distance));
-  }
+                    double overlap, double step, const AcceptanceParams& params, int threads) {
+  std::size_t counted = 0;
+  for (char c : counts) counted += c != 0;
+  if (counted == 0) return 0.0;
+  const Eigen::Vector2d dirs[4] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+  std::size_t kept[4] = {0, 0, 0, 0};
+  // Only the points overlap_of counts are searched (on KITTI, skipping the ground halved this).
+  parallel_ranges(threads, 4, 1, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k) {
+      Transform moved = T;
+      moved.block<2, 1>(0, 3) += step * dirs[k];
+      kept[k] = verifier.count_within(moved, static_cast<float>(params.inlier_distance), counts);
+    }
+  });
+  const double shifted =
+      static_cast<double>(*std::max_element(kept, kept + 4)) / static_cast<double>(counted);
   return overlap > 0 ? 1.0 - shifted / overlap : 0.0;
 }
 
@@ -136,7 +142,7 @@ std::string candidate_name(std::size_t level, const Transform& T, const Transfor
 void judge_ambiguity(Acceptance& a, const Verifier& verifier,
                      const std::vector<PoseEstimate>& candidates, const VerificationResult& v,
                      const std::vector<char>& counts, double mu, const EvaluationParams& distinct,
-                     const AcceptanceParams& params) {
+                     const AcceptanceParams& params, int threads) {
   const auto sel = static_cast<std::size_t>(v.selected);
   AmbiguityInput in;
   in.verifier = &verifier;
@@ -152,6 +158,7 @@ void judge_ambiguity(Acceptance& a, const Verifier& verifier,
   in.inlier_distance = params.inlier_distance;
   in.distinct = distinct;
   in.search_range = params.ambiguity_range;
+  in.threads = threads;
   const bool reuse = v.selected_distances.size() == counts.size() &&
                      v.distance_bound >= 2 * params.inlier_distance;
   if (reuse) in.selected_distances = &v.selected_distances;
@@ -183,7 +190,7 @@ void judge_ambiguity(Acceptance& a, const Verifier& verifier,
 Acceptance judge_selection(const Verifier& verifier, const std::vector<PoseEstimate>& candidates,
                            const VerificationResult& verification,
                            const VerificationParams& verification_params,
-                           const AcceptanceParams& params, PoseModel model) {
+                           const AcceptanceParams& params, PoseModel model, int threads) {
   const EvaluationParams distinct = params.distinct();  // what counts as another answer
   Acceptance a;
   if (verification.selected < 0) {
@@ -203,7 +210,7 @@ Acceptance judge_selection(const Verifier& verifier, const std::vector<PoseEstim
   const std::vector<char> counts = structure_points(points, params);
   a.overlap = overlap_of(d, counts, params.inlier_distance);
   a.sharpness =
-      sharpness_of(verifier, T, counts, a.overlap, distinct.max_translation_error, params);
+      sharpness_of(verifier, T, counts, a.overlap, distinct.max_translation_error, params, threads);
   a.inliers = static_cast<int>(candidates[sel].inliers.size());
   const double full = verification_params.mu * static_cast<double>(d.size());
   a.margin = margin_of(candidates, verification, sel, full, distinct);
@@ -212,7 +219,7 @@ Acceptance judge_selection(const Verifier& verifier, const std::vector<PoseEstim
   // searches of the points).
   if (a.reason.empty() && params.max_ambiguity < kAmbiguityOff)
     judge_ambiguity(a, verifier, candidates, verification, counts, verification_params.mu, distinct,
-                    params);
+                    params, threads);
   a.accepted = a.reason.empty();
   return a;
 }

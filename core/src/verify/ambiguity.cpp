@@ -6,6 +6,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "util/parallel.hpp"
+
 namespace pagor {
 namespace {
 
@@ -61,8 +63,13 @@ class Occupancy {
     frame_.lower = lo;
     for (int k = 0; k < 3; ++k) size_[k] = static_cast<int>((hi[k] - lo[k]) / cell_) + 1;
     occupied_.assign(static_cast<std::size_t>(size_[0]) * size_[1] * size_[2], 0);
+    along_y_ = occupied_;
     for (std::size_t i = 0; i < points.size(); ++i)
-      if (counts[i]) occupied_[index(key(points[i].cast<double>()))] = 1;
+      if (counts[i]) {
+        const Eigen::Vector3i k = key(points[i].cast<double>());
+        occupied_[index(k)] = 1;
+        along_y_[(static_cast<std::size_t>(k.z()) * size_[0] + k.x()) * size_[1] + k.y()] = 1;
+      }
   }
 
   const Frame& frame() const { return frame_; }
@@ -73,12 +80,15 @@ class Occupancy {
     return {static_cast<int>(std::floor(f.x())), static_cast<int>(std::floor(f.y())),
             static_cast<int>(std::floor(f.z()))};
   }
-  bool inside(const Eigen::Vector3i& k) const {
-    for (int a = 0; a < 3; ++a)
-      if (k[a] < 0 || k[a] >= size_[a]) return false;
-    return true;
+  int size(int axis) const { return size_[axis]; }
+  /// The cells along `axis` (0 or 1) through `k`, one flag each (size(axis) of them), or null
+  /// when k's other two indices are off the grid.
+  const char* row(int axis, const Eigen::Vector3i& k) const {
+    const int other = 1 - axis;
+    if (k[other] < 0 || k[other] >= size_[other] || k.z() < 0 || k.z() >= size_[2]) return nullptr;
+    return axis == 0 ? &occupied_[index({0, k.y(), k.z()})]
+                     : &along_y_[(static_cast<std::size_t>(k.z()) * size_[0] + k.x()) * size_[1]];
   }
-  bool at(const Eigen::Vector3i& k) const { return inside(k) && occupied_[index(k)] != 0; }
 
  private:
   std::size_t index(const Eigen::Vector3i& k) const {
@@ -87,7 +97,8 @@ class Occupancy {
   double cell_;
   Frame frame_;
   int size_[3] = {0, 0, 0};
-  std::vector<char> occupied_;
+  std::vector<char> occupied_;  // x fastest
+  std::vector<char> along_y_;   // the same, y fastest
 };
 
 // A peak of a correlation profile: the pose it stands for and how many cells agree there.
@@ -125,19 +136,25 @@ void profile_peaks(const Verifier& verifier, const std::vector<char>& counts, co
     // Per shift the raw agreement and the agreement per comparable cell (those the shift keeps
     // within the target's grid): the latter finds the peaks without the fall-off of a shrinking
     // overlap (walls that slide along themselves agree less at every step away).
+    // Each cell adds its row of the target's occupancy to the shifts that keep it on the grid.
+    std::vector<int> agree(static_cast<std::size_t>(2 * K + 1), 0);
+    std::vector<int> comparable(static_cast<std::size_t>(2 * K + 2), 0);  // as differences
+    for (const Eigen::Vector3i& cell : cells) {
+      const char* row = occ.row(axis, cell);
+      const int x = cell[axis], lo = std::max(-K, -x), hi = std::min(K, occ.size(axis) - 1 - x);
+      if (!row || lo > hi) continue;
+      int* out = agree.data() + K;
+      for (int k = lo; k <= hi; ++k) out[k] += row[x + k];
+      ++comparable[static_cast<std::size_t>(lo + K)];
+      --comparable[static_cast<std::size_t>(hi + K + 1)];
+    }
     std::vector<double> raw(static_cast<std::size_t>(2 * K + 1), 0.0), rate = raw;
-    for (int k = -K; k <= K; ++k) {
-      Eigen::Vector3i step = Eigen::Vector3i::Zero();
-      step[axis] = k;
-      double agree = 0, comparable = 0;
-      for (const Eigen::Vector3i& cell : cells) {
-        agree += occ.at(cell + step);
-        comparable += occ.inside(cell + step);
-      }
-      raw[static_cast<std::size_t>(k + K)] = agree;
+    for (int k = -K, open = 0; k <= K; ++k) {
+      const auto at = static_cast<std::size_t>(k + K);
+      open += comparable[at];
+      raw[at] = agree[at];
       // Shifts that leave less than half of the cells comparable tell little.
-      rate[static_cast<std::size_t>(k + K)] =
-          comparable >= 0.5 * static_cast<double>(cells.size()) ? agree / comparable : 0.0;
+      rate[at] = open >= 0.5 * static_cast<double>(cells.size()) ? agree[at] / double(open) : 0.0;
     }
     for (int k = -K; k <= K; ++k) {
       const double v = rate[static_cast<std::size_t>(k + K)];
@@ -229,18 +246,23 @@ class Comparison {
   /// (points only `T` aligns + prior) / (points only the selected pose aligns + prior); 0 when
   /// `T` puts most of what the selected pose aligns where the target did not look.
   double ratio(const Transform& T) const {
-    const std::vector<float> d = in_.verifier->distances(T, 2 * r_, seen_);
+    // Only the points that can tell the poses apart are searched: those the selected pose aligns
+    // (does T leave them beyond 2 r?) and those it leaves beyond 2 r (does T align them?).
     const auto& src = in_.verifier->source_points();
-    std::size_t only_sel = 0, only_alt = 0, judged = 0;
+    std::vector<char> aligned(src.size(), 0), unaligned(src.size(), 0);
+    std::size_t judged = 0;
     for (std::size_t i = 0; i < src.size(); ++i) {
-      if (!seen_[i] || !footprint_.covers(apply(T, src[i]))) continue;
-      judged += d_sel_[i] <= r_;
-      only_sel += d_sel_[i] <= r_ && d[i] > 2 * r_;
-      only_alt += d[i] <= r_ && d_sel_[i] > 2 * r_;
+      if (!seen_[i] || (d_sel_[i] > r_ && d_sel_[i] <= 2 * r_)) continue;
+      if (!footprint_.covers(apply(T, src[i]))) continue;
+      aligned[i] = d_sel_[i] <= r_;
+      unaligned[i] = !aligned[i];
+      judged += aligned[i];
     }
     // A pose that puts most of the evidence where the target did not look is no competitor (in a
     // 30 m hall, a pose moved 17 m kept a handful of points, and matched them).
     if (2 * judged < aligned_) return 0.0;
+    const std::size_t only_sel = judged - in_.verifier->count_within(T, 2 * r_, aligned);
+    const std::size_t only_alt = in_.verifier->count_within(T, r_, unaligned);
     return (static_cast<double>(only_alt) + kPriorPoints) /
            (static_cast<double>(only_sel) + kPriorPoints);
   }
@@ -283,17 +305,19 @@ std::string describe(const Transform& alt, const Transform& selected, bool turne
 // Moves T in the horizontal plane by steps of `step` [m] while its ratio improves; halves the step
 // once.
 Transform climb(const Comparison& cmp, Transform T, double& e, double step) {
+  const Eigen::Vector2d dirs[4] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
   // At most four moves a step size: the alternative is a peak of the correlation already, within
-  // a cell of its best; on a plateau (a wall sliding along itself) it is not chased back.
+  // a cell of its best; on a plateau (a wall sliding along itself) it is not chased back. The way
+  // back of the last move is not tried again: it scored less.
   for (int round = 0; round < 2; ++round, step /= 2)
-    for (int moves = 0, better = 1; better && moves < 4; ++moves) {
+    for (int moves = 0, better = 1, back = -1; better && moves < 4; ++moves) {
       better = 0;
-      for (const Eigen::Vector2d& dir : {Eigen::Vector2d(1, 0), Eigen::Vector2d(-1, 0),
-                                         Eigen::Vector2d(0, 1), Eigen::Vector2d(0, -1)}) {
-        const Transform next = moved(T, step * dir);
+      for (int d = 0; d < 4; ++d) {
+        if (d == back) continue;
+        const Transform next = moved(T, step * dirs[d]);
         const double en = cmp.ratio(next);
         if (en > e) {
-          T = next, e = en, better = 1;
+          T = next, e = en, better = 1, back = d ^ 1;
           break;
         }
       }
@@ -315,36 +339,51 @@ AcceptanceAlternative find_best_alternative(const AmbiguityInput& in,
   const auto offer = [&](const Transform& T, double ratio, std::string description) {
     if (best.description.empty() || ratio > best.ratio) best = {T, std::move(description), ratio};
   };
+  // The searches run as tasks over `threads` (a search of the points is too short to split; the
+  // offers are made in the same order whatever the threads).
+  const auto each = [&](std::size_t n, const auto& f) {
+    parallel_ranges(in.threads, n, 1, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i) f(i);
+    });
+  };
+  std::vector<double> e(candidates.size(), 0.0);
+  each(candidates.size(), [&](std::size_t i) {
+    if (distinct(candidates[i])) e[i] = cmp.ratio(candidates[i]);
+  });
   for (std::size_t i = 0; i < candidates.size(); ++i)
-    if (distinct(candidates[i])) offer(candidates[i], cmp.ratio(candidates[i]), names[i]);
+    if (distinct(candidates[i])) offer(candidates[i], e[i], names[i]);
 
   // Repetitions: correlation peaks of the pose and of its half turn.
-  std::vector<Peak> peaks;
   const double separation = in.distinct.max_translation_error;
-  profile_peaks(*in.verifier, *in.counts, in.T_selected, occ, in.search_range, separation, false,
-                peaks);
-  const Transform turned = half_turn(in.T_selected, cmp.aligned_centre());
-  profile_peaks(*in.verifier, *in.counts, turned, occ, in.search_range, separation, true, peaks);
+  const Transform poses[2] = {in.T_selected, half_turn(in.T_selected, cmp.aligned_centre())};
+  std::vector<Peak> found[2];
+  each(2, [&](std::size_t k) {
+    profile_peaks(*in.verifier, *in.counts, poses[k], occ, in.search_range, separation, k == 1,
+                  found[k]);
+  });
+  std::vector<Peak> peaks = std::move(found[0]);
+  peaks.insert(peaks.end(), found[1].begin(), found[1].end());
   peaks.erase(
       std::remove_if(peaks.begin(), peaks.end(), [&](const Peak& p) { return !distinct(p.T); }),
       peaks.end());
   std::sort(peaks.begin(), peaks.end(),
             [](const Peak& a, const Peak& b) { return a.agreement > b.agreement; });
   if (peaks.size() > kPeaksScored) peaks.resize(kPeaksScored);
-  std::vector<double> e(peaks.size());
+  e.assign(peaks.size(), 0.0);
   std::vector<std::size_t> order(peaks.size());
-  for (std::size_t i = 0; i < peaks.size(); ++i) {
-    e[i] = cmp.ratio(peaks[i].T);
-    order[i] = i;
-  }
+  each(peaks.size(), [&](std::size_t i) { e[i] = cmp.ratio(peaks[i].T); });
+  for (std::size_t i = 0; i < peaks.size(); ++i) order[i] = i;
   std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return e[a] > e[b]; });
-  for (std::size_t r = 0; r < order.size(); ++r) {
+  // The best few moved to their own optimum: a peak is found on a grid of mu / 2.
+  std::vector<Transform> moved_to(peaks.size());
+  for (std::size_t i = 0; i < peaks.size(); ++i) moved_to[i] = peaks[i].T;
+  each(std::min(kPeaksRefined, order.size()), [&](std::size_t r) {
     const std::size_t i = order[r];
-    Transform T = peaks[i].T;
-    // The best few moved to their own optimum: a peak is found on a grid of mu / 2.
-    if (r < kPeaksRefined) T = climb(cmp, T, e[i], occ.cell() / 2);
-    if (distinct(T)) offer(T, e[i], describe(T, in.T_selected, peaks[i].turned));
-  }
+    moved_to[i] = climb(cmp, peaks[i].T, e[i], occ.cell() / 2);
+  });
+  for (std::size_t i : order)
+    if (distinct(moved_to[i]))
+      offer(moved_to[i], e[i], describe(moved_to[i], in.T_selected, peaks[i].turned));
   return best;
 }
 

@@ -43,6 +43,7 @@ struct AmbiguityInput {
   double inlier_distance = 0.5;  ///< a point counts as aligned within this [m]
   EvaluationParams distinct;     ///< a pose within this of the selected one is the same answer
   double search_range = 40.0;    ///< furthest shift searched along an axis [m]
+  int threads = 1;               ///< threads for the searches of the points (same result)
 };
 
 /// The best distinct alternative among `candidates` (the other levels', described by `names`) and

@@ -9,6 +9,7 @@
 
 #include "pagor/errors.hpp"
 #include "pagor/util/kdtree.hpp"
+#include "util/parallel.hpp"
 #include "util/voxel_grid.hpp"
 
 namespace pagor {
@@ -127,6 +128,30 @@ std::vector<float> Verifier::distances(const Transform& T, float bound,
   return d;
 }
 
+std::size_t Verifier::count_within(const Transform& T, float radius, const std::vector<char>& only,
+                                   int threads) const {
+  const std::size_t n = impl_->source.size();
+  if (only.size() != n)
+    throw InputError("Verifier::count_within: " + std::to_string(only.size()) + " flags for " +
+                     std::to_string(n) + " source points");
+  if (impl_->target.empty() || !(radius > 0.0f)) return 0;
+  const RadiusGrid* grid = impl_->grid_for(radius);
+  const Eigen::Matrix3f R = T.block<3, 3>(0, 0).cast<float>();
+  const Eigen::Vector3f t = T.block<3, 1>(0, 3).cast<float>();
+  std::atomic<std::size_t> total{0};
+  parallel_ranges(threads, n, 1024, [&](std::size_t begin, std::size_t end) {
+    std::size_t count = 0;
+    for (std::size_t i = begin; i < end; ++i) {
+      if (!only[i]) continue;
+      const Eigen::Vector3f q = R * impl_->source[i] + t;
+      count +=
+          grid ? grid->any_within(q, radius) : impl_->tree().nearest(q, radius * radius).first >= 0;
+    }
+    total += count;
+  });
+  return total;
+}
+
 double Verifier::score(const Transform& T, double mu, ScoreKind kind, int threads,
                        std::vector<float>* distances) const {
   const std::size_t n = impl_->source.size();
@@ -137,19 +162,9 @@ double Verifier::score(const Transform& T, double mu, ScoreKind kind, int thread
   const float bound = kind == ScoreKind::nearest ? HUGE_VALF : static_cast<float>(mu);
   if (!impl_->target.empty()) {
     const RadiusGrid* grid = impl_->grid_for(bound);
-    threads = std::max(1, std::min<int>(threads, static_cast<int>(n / 1024) + 1));
-    if (threads == 1) {
-      impl_->nearest(T, 0, n, bound, grid, d.data());
-    } else {
-      std::vector<std::thread> pool;
-      for (int k = 0; k < threads; ++k)
-        pool.emplace_back([&, k] {
-          impl_->nearest(T, n * static_cast<std::size_t>(k) / static_cast<std::size_t>(threads),
-                         n * static_cast<std::size_t>(k + 1) / static_cast<std::size_t>(threads),
-                         bound, grid, d.data());
-        });
-      for (auto& t : pool) t.join();
-    }
+    parallel_ranges(threads, n, 1024, [&](std::size_t begin, std::size_t end) {
+      impl_->nearest(T, begin, end, bound, grid, d.data());
+    });
   }
   double D = 0.0;
   for (float x : d) {

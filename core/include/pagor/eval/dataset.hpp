@@ -52,7 +52,8 @@ struct LoadedPair {
 /// Loads a pair. A file pair whose target is a floor plan (`.json` or `.svg`, floor_plan.hpp) is
 /// an indoor pair: the plan is sampled into points and the scan projected to the floor with its
 /// columns found, both by `indoor` (floor_projection.hpp). Throws InputError naming the file.
-LoadedPair load_pair(const PairSource& src, const IndoorParams& indoor = {});
+/// `threads` > 1 loads the two clouds at once (the same pair; of two errors, the source's).
+LoadedPair load_pair(const PairSource& src, const IndoorParams& indoor = {}, int threads = 1);
 
 /// The label scheme a pair's own description sets (PairSource::label_scheme), if any.
 std::optional<LabelScheme> pair_label_scheme(const PairSource& src);

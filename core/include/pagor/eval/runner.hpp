@@ -31,6 +31,7 @@ class SetRunner {
   SetRunner& operator=(const SetRunner&) = delete;
 
   const PairSet& set() const { return set_; }
+  int threads() const { return threads_; }
   std::size_t size() const { return set_.pairs.size(); }
 
   /// Runs pair `i` with `config`. A kept pipeline re-runs only the stages the configuration
@@ -40,8 +41,11 @@ class SetRunner {
   /// Cancelled when `cancel` becomes true, and a ConfigError (a work budget the configuration
   /// exceeds: the same for every pair) as it comes.
   /// Afterwards the pair's pipeline is kept when it fits the cache budget, and the last pair
-  /// run is always kept (consecutive runs of one pair reuse it).
-  PairOutcome run(std::size_t i, const Config& config, const std::atomic<bool>* cancel = nullptr);
+  /// run is always kept (consecutive runs of one pair reuse it). `threads` > 0 runs this pair on
+  /// that many threads instead of the runner's (a parallel set's last pairs take the cores its
+  /// idle workers leave); the outcome is the same.
+  PairOutcome run(std::size_t i, const Config& config, const std::atomic<bool>* cancel = nullptr,
+                  int threads = 0);
 
   /// Memory the kept pipelines may hold besides the last one [bytes] (default 0).
   void set_cache_budget(std::size_t bytes);
@@ -127,14 +131,17 @@ std::vector<PairOutcome> run_set(std::vector<std::unique_ptr<SetRunner>>& runner
 /// `jobs` runners over `set`, each with `threads` for its pipelines' parallel stages.
 std::vector<std::unique_ptr<SetRunner>> make_runners(const PairSet& set, int jobs, int threads = 1);
 
-/// Runs `work(worker, i)` for each i of `order` on `jobs` threads (worker: 0 .. jobs - 1, each
-/// thread its own), and `finished(i)` on the calling thread, one at a time, as each returns. The
+/// Runs `work(worker, i, share)` for each i of `order` on `jobs` threads (worker: 0 .. jobs - 1,
+/// each thread its own), and `finished(i)` on the calling thread, one at a time, as each returns.
+/// `share` is the workers' count each call may use: 1 while every worker has work, more for the
+/// last calls once fewer are left than workers (the last of 3 pairs on 2 workers gets both). The
 /// `stop` given to `work` becomes true when `cancel` does or another call has thrown; the first
 /// exception is rethrown here once every thread has ended. What both run parallel set loops on.
-void run_parallel(
-    int jobs, const std::vector<std::size_t>& order,
-    const std::function<void(int worker, std::size_t i, const std::atomic<bool>* stop)>& work,
-    const std::function<void(std::size_t i)>& finished, const std::atomic<bool>* cancel = nullptr);
+void run_parallel(int jobs, const std::vector<std::size_t>& order,
+                  const std::function<void(int worker, std::size_t i, int share,
+                                           const std::atomic<bool>* stop)>& work,
+                  const std::function<void(std::size_t i)>& finished,
+                  const std::atomic<bool>* cancel = nullptr);
 
 /// The worker threads `text` asks for: a whole number >= 1, or "auto" for the machine's cores.
 /// Throws InputError naming `what` (e.g. "--jobs") otherwise.

@@ -3,6 +3,7 @@
 /// Reader for KITTI / SemanticKITTI sequences laid out as
 /// `<root>/sequences/<seq>/{velodyne,labels,poses.txt,calib.txt}`.
 
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -22,7 +23,7 @@ class KittiSequence {
   const std::string& root() const { return root_; }
   const std::string& sequence() const { return sequence_; }
   const std::string& directory() const { return dir_; }
-  std::size_t pose_count() const { return poses_.size(); }
+  std::size_t pose_count() const { return poses_->size(); }
 
   /// `<dir>/velodyne/NNNNNN.bin`.
   std::string scan_path(int frame) const;
@@ -45,7 +46,7 @@ class KittiSequence {
 
  private:
   std::string root_, sequence_, dir_;
-  std::vector<Transform> poses_;
+  std::shared_ptr<const std::vector<Transform>> poses_;  // shared by the sequence's openings
   Transform T_cam_velo_ = Transform::Identity();
 };
 

@@ -161,9 +161,10 @@ struct Acceptance {
 };
 
 /// Judges the selection of `verification` among `candidates`. No selection: not accepted.
+/// `threads` > 1 splits the searches of the points over threads (same verdict).
 Acceptance judge_selection(const Verifier& verifier, const std::vector<PoseEstimate>& candidates,
                            const VerificationResult& verification,
                            const VerificationParams& verification_params,
-                           const AcceptanceParams& params, PoseModel model);
+                           const AcceptanceParams& params, PoseModel model, int threads = 1);
 
 }  // namespace pagor

@@ -78,6 +78,12 @@ class Verifier {
   std::vector<float> distances(const Transform& T_target_source, float bound,
                                const std::vector<char>& only) const;
 
+  /// How many of the points i with only[i] != 0, moved by T, have a target point strictly closer
+  /// than `radius` [m]: what a count of aligned points needs, without the nearest one (a search
+  /// stops at the first point it finds). `threads` > 1 splits the points (same count).
+  std::size_t count_within(const Transform& T_target_source, float radius,
+                           const std::vector<char>& only, int threads = 1) const;
+
   /// Nearest downsampled target point to `q` strictly closer than sqrt(`max_distance_sq`) [m^2]:
   /// its index in target_points() and squared distance; index -1 when there is none.
   std::pair<int, float> nearest_target(const Eigen::Vector3f& q, float max_distance_sq) const;
