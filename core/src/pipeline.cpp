@@ -232,7 +232,8 @@ void Pipeline::run_stage(Stage stage) {
     case Stage::verification_prep:
       refiner_.reset();  // it refers to the verifier
       verifier_.reset();
-      if (has_clouds_) verifier_.emplace(source_, target_, config_.verification.voxel_size);
+      if (has_clouds_)
+        verifier_.emplace(source_, target_, config_.verification.voxel_size, threads_);
       break;
     case Stage::verification:
       verification_ =
@@ -261,12 +262,13 @@ void Pipeline::run_stage(Stage stage) {
 void Pipeline::run_correspondences() {
   if (matches_.empty()) {
     correspondences_ =
-        match_landmarks(source_landmarks_, target_landmarks_, config_.correspondences);
+        match_landmarks(source_landmarks_, target_landmarks_, config_.correspondences, threads_);
     return;
   }
   CorrespondenceSet landmark_ones;
   if (uses_landmarks())
-    landmark_ones = match_landmarks(source_landmarks_, target_landmarks_, config_.correspondences);
+    landmark_ones =
+        match_landmarks(source_landmarks_, target_landmarks_, config_.correspondences, threads_);
   correspondences_ = with_matches(matches_, std::move(landmark_ones),
                                   static_cast<int>(source_landmarks_.landmarks.size()),
                                   static_cast<int>(target_landmarks_.landmarks.size()));

@@ -231,6 +231,9 @@ TEST_CASE("points counted within a radius are those whose nearest target point i
       if (radius == 1.0f) CHECK(expected > 0);
     }
   CHECK(verifier.count_within(scene.T_target_source, 1.0f, std::vector<char>(n, 0)) == 0);
+  const Verifier two(scene.source, scene.target, 0.5, 2);  // the clouds downsampled at once
+  CHECK(two.source_points() == verifier.source_points());
+  CHECK(two.target_points() == verifier.target_points());
   CHECK_THROWS_AS(verifier.count_within(Transform::Identity(), 1.0f, std::vector<char>(n + 1, 1)),
                   InputError);
 }

@@ -79,13 +79,17 @@ struct Verifier::Impl {
   }
 };
 
-Verifier::Verifier(const PointCloud& source, const PointCloud& target, double voxel_size)
+Verifier::Verifier(const PointCloud& source, const PointCloud& target, double voxel_size,
+                   int threads)
     : impl_(std::make_unique<Impl>()) {
   const auto t0 = std::chrono::steady_clock::now();
-  impl_->source =
-      voxel_downsample(source.points, voxel_size, nullptr, /*with_voxel_of=*/false).points;
-  impl_->target =
-      voxel_downsample(target.points, voxel_size, nullptr, /*with_voxel_of=*/false).points;
+  parallel_ranges(threads, 2, 1, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k)
+      (k == 0 ? impl_->source : impl_->target) =
+          voxel_downsample((k == 0 ? source : target).points, voxel_size, nullptr,
+                           /*with_voxel_of=*/false)
+              .points;
+  });
   impl_->build_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }

@@ -91,8 +91,9 @@ CorrespondenceSet with_matches(std::vector<Correspondence> matches,
 /// landmark with every target landmark of the class, scored by how alike their extents are.
 /// Keypoint classes: descriptor nearest neighbours (mutual when configured), scored by descriptor
 /// distance. When the total exceeds `params.max_correspondences`, the best-scored are kept and
-/// `capped` is set. Items are ordered by class, and within a class by decreasing score.
+/// `capped` is set. Items are ordered by class, and within a class by decreasing score. `threads`
+/// > 1 splits the descriptor search (the same correspondences).
 CorrespondenceSet match_landmarks(const LandmarkSet& source, const LandmarkSet& target,
-                                  const CorrespondenceParams& params = {});
+                                  const CorrespondenceParams& params = {}, int threads = 1);
 
 }  // namespace pagor

@@ -55,8 +55,9 @@ struct VerificationParams {
 /// on first use. Safe to use from several threads at once.
 class Verifier {
  public:
-  /// Downsamples both clouds on a `voxel_size` grid [m] (0 keeps every point).
-  Verifier(const PointCloud& source, const PointCloud& target, double voxel_size);
+  /// Downsamples both clouds on a `voxel_size` grid [m] (0 keeps every point); `threads` > 1
+  /// downsamples the two at once.
+  Verifier(const PointCloud& source, const PointCloud& target, double voxel_size, int threads = 1);
   ~Verifier();
   Verifier(Verifier&&) noexcept;
   Verifier& operator=(Verifier&&) noexcept;
