@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "command.hpp"
+#include "common/allocator.hpp"
 #include "pagor/errors.hpp"
 
 namespace pagor::cli {
@@ -75,6 +76,7 @@ int main(int argc, char** argv) {
   // A file-size limit (ulimit -f) makes a write fail with EFBIG, which the writers report and
   // recover from, instead of killing the process in the middle of a file.
   std::signal(SIGXFSZ, SIG_IGN);
+  pagor::app::keep_freed_memory();
   try {
     return pagor::cli::dispatch(argc, argv);
   } catch (const pagor::cli::UsageError& e) {

@@ -12,6 +12,7 @@
 #include <sstream>
 #include <vector>
 
+#include "common/allocator.hpp"
 #include "common/args.hpp"
 #include "common/outputs.hpp"
 #include "common/pair_args.hpp"
@@ -219,6 +220,7 @@ int run_headless(const cli::Args& args, AppState state) {
 
 int main(int argc, char** argv) {
   using namespace pagor;
+  app::keep_freed_memory();
   const std::vector<std::string> words(argv + 1, argv + argc);
   const auto options = studio::studio_options();
   for (const auto& w : words)

@@ -159,7 +159,7 @@ void Pipeline::run(const ProgressFn& progress, const std::atomic<bool>* cancel) 
 
 template <class F>
 void Pipeline::both_clouds(const F& f) {
-  if (threads_ <= 1) {
+  if (threads_now() <= 1) {
     f(source_, source_landmarks_);
     f(target_, target_landmarks_);
     return;
@@ -215,7 +215,7 @@ void Pipeline::run_stage(Stage stage) {
       run_correspondences();
       break;
     case Stage::graph:
-      graph_.build(correspondences_.items, config_.graph, threads_);
+      graph_.build(correspondences_.items, config_.graph, threads_now());
       break;
     case Stage::clique: {
       const Deadline deadline = clique_deadline();
@@ -233,12 +233,12 @@ void Pipeline::run_stage(Stage stage) {
       refiner_.reset();  // it refers to the verifier
       verifier_.reset();
       if (has_clouds_)
-        verifier_.emplace(source_, target_, config_.verification.voxel_size, threads_);
+        verifier_.emplace(source_, target_, config_.verification.voxel_size, threads_now());
       break;
     case Stage::verification:
       verification_ =
           verifier_
-              ? verify_candidates(*verifier_, poses_, config_.verification, threads_)
+              ? verify_candidates(*verifier_, poses_, config_.verification, threads_now())
               : select_without_clouds(poses_, correspondences_.items, config_.gnc.noise_bound);
       break;
     case Stage::refinement:
@@ -261,14 +261,14 @@ void Pipeline::run_stage(Stage stage) {
 
 void Pipeline::run_correspondences() {
   if (matches_.empty()) {
-    correspondences_ =
-        match_landmarks(source_landmarks_, target_landmarks_, config_.correspondences, threads_);
+    correspondences_ = match_landmarks(source_landmarks_, target_landmarks_,
+                                       config_.correspondences, threads_now());
     return;
   }
   CorrespondenceSet landmark_ones;
   if (uses_landmarks())
-    landmark_ones =
-        match_landmarks(source_landmarks_, target_landmarks_, config_.correspondences, threads_);
+    landmark_ones = match_landmarks(source_landmarks_, target_landmarks_, config_.correspondences,
+                                    threads_now());
   correspondences_ = with_matches(matches_, std::move(landmark_ones),
                                   static_cast<int>(source_landmarks_.landmarks.size()),
                                   static_cast<int>(target_landmarks_.landmarks.size()));
@@ -320,7 +320,7 @@ void Pipeline::run_refinement() {
   const auto sel = static_cast<std::size_t>(verification_.selected);
   // The model the selected pose was fitted in (with `automatic`, the one GNC kept).
   refinement_ = refiner_->refine(poses_[sel].T_target_source, verification_.scores[sel],
-                                 poses_[sel].model, params, config_.verification, threads_);
+                                 poses_[sel].model, params, config_.verification, threads_now());
 }
 
 void Pipeline::judge_acceptance() {
@@ -339,7 +339,7 @@ void Pipeline::judge_acceptance() {
                               : config_.gnc.model;
   if (!refinement_.applied) {
     acceptance_ = judge_selection(*verifier_, poses_, verification_, config_.verification,
-                                  config_.acceptance, model, threads_);
+                                  config_.acceptance, model, threads_now());
     return;
   }
   // Judge the pose the user gets: the refined one, with its own D.
@@ -350,7 +350,7 @@ void Pipeline::judge_acceptance() {
   verification.scores[sel] = refinement_.score_after;
   verification.selected_distances = refinement_.distances_after;
   acceptance_ = judge_selection(*verifier_, candidates, verification, config_.verification,
-                                config_.acceptance, model, threads_);
+                                config_.acceptance, model, threads_now());
 }
 
 std::optional<Transform> Pipeline::selected_transform() const {

@@ -12,9 +12,10 @@
 /// With both, the matches replace the landmark correspondences (or join them when
 /// `correspondences.fuse_matches`) and verification, refinement and acceptance run as usual.
 
+#include <algorithm>
 #include <array>
-#include <chrono>
 #include <atomic>
+#include <chrono>
 #include <functional>
 #include <optional>
 #include <string>
@@ -80,6 +81,12 @@ class Pipeline {
   void set_config(const Config& config);
   void set_threads(int threads) { threads_ = threads < 1 ? 1 : threads; }
   int threads() const { return threads_; }
+  /// Workers lent to this pipeline, read as each stage starts: it then runs on threads() * (1 +
+  /// *lent) threads (the idle workers of a parallel set lend theirs to the pairs still running:
+  /// runner.hpp). Null: none. The results do not depend on it; `lent` must outlive its use.
+  void lend_threads(const std::atomic<int>* lent) { lent_ = lent; }
+  /// The threads a stage starting now runs on.
+  int threads_now() const { return threads_ * (1 + (lent_ ? std::max(0, lent_->load()) : 0)); }
 
   const Config& config() const { return config_; }
   /// Whether there is something to run on: clouds, matches or both.
@@ -170,6 +177,7 @@ class Pipeline {
 
   Config config_;
   int threads_ = 1;
+  const std::atomic<int>* lent_ = nullptr;
   bool has_clouds_ = false;
   PointCloud source_, target_;
   std::vector<Correspondence> matches_;

@@ -37,7 +37,7 @@ PairOutcome run_pair(Pipeline& pipeline, const PairEntry& entry, const std::atom
   o.negative = entry.negative;
   LoadedPair pair;
   try {
-    pair = load_pair(entry.source, pipeline.config().indoor, pipeline.threads());
+    pair = load_pair(entry.source, pipeline.config().indoor, pipeline.threads_now());
   } catch (const InputError& e) {
     o.load_error = e.what();
     return o;

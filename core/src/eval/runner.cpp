@@ -68,9 +68,8 @@ std::size_t SetRunner::estimate_bytes(const Pipeline& p) {
 }
 
 PairOutcome SetRunner::run(std::size_t i, const Config& config, const std::atomic<bool>* cancel,
-                           int threads) {
+                           const std::atomic<int>* lent) {
   if (cancel && cancel->load()) throw Cancelled();
-  if (threads <= 0) threads = threads_;
   const PairEntry& entry = set_.pairs.at(i);
   Slot& slot = *slots_[i];
   std::array<int, kStageCount> before{};
@@ -78,14 +77,18 @@ PairOutcome SetRunner::run(std::size_t i, const Config& config, const std::atomi
   if (slot.pipeline) {
     for (int s = 0; s < kStageCount; ++s) before[s] = slot.pipeline->runs(static_cast<Stage>(s));
     slot.pipeline->set_config(config);
-    slot.pipeline->set_threads(threads);
+    slot.pipeline->lend_threads(lent);
     try {  // the pair's own failure fails the pair, as in run_pair
       slot.pipeline->run(ProgressFn{}, cancel);
     } catch (const InputError& e) {
       o = failed(entry, describe(entry.source) + ": " + e.what());
     } catch (const std::bad_alloc&) {
       o = failed(entry, describe(entry.source) + ": out of memory while running the pair");
+    } catch (...) {
+      slot.pipeline->lend_threads(nullptr);
+      throw;
     }
+    slot.pipeline->lend_threads(nullptr);
     if (!o.load_error.empty()) {
       slot.pipeline.reset();
       slot.since = 0;
@@ -94,8 +97,10 @@ PairOutcome SetRunner::run(std::size_t i, const Config& config, const std::atomi
     }
     o = pair_outcome(*slot.pipeline, entry, slot.source_name, slot.target_name);
   } else {
-    auto pipeline = std::make_unique<Pipeline>(config, threads);
+    auto pipeline = std::make_unique<Pipeline>(config, threads_);
+    pipeline->lend_threads(lent);
     o = run_pair(*pipeline, entry, cancel);
+    pipeline->lend_threads(nullptr);
     if (!o.loaded) return o;
     slot.pipeline = std::move(pipeline);
     slot.source_name = o.source_name;
@@ -229,7 +234,8 @@ std::vector<std::unique_ptr<SetRunner>> make_runners(const PairSet& set, int job
 }
 
 void run_parallel(int jobs, const std::vector<std::size_t>& order,
-                  const std::function<void(int, std::size_t, int, const std::atomic<bool>*)>& work,
+                  const std::function<void(int, std::size_t, const std::atomic<int>*,
+                                           const std::atomic<bool>*)>& work,
                   const std::function<void(std::size_t)>& finished,
                   const std::atomic<bool>* cancel) {
   std::mutex mutex;
@@ -240,28 +246,46 @@ void run_parallel(int jobs, const std::vector<std::size_t>& order,
   std::exception_ptr error;
   std::atomic<bool> stop{false};
   const int n = std::max(1, std::min<int>(jobs, static_cast<int>(order.size())));
+  // The workers that found nothing left lend themselves to the calls still running, shared
+  // evenly (under the lock).
+  std::vector<std::atomic<int>> lent(static_cast<std::size_t>(n));
+  for (auto& l : lent) l.store(0);
+  std::vector<char> busy(static_cast<std::size_t>(n), 0);
+  int idle = 0, busy_count = 0;
+  const auto share_idle = [&] {
+    for (std::size_t b = 0; b < busy.size(); ++b)
+      lent[b].store(busy[b] ? idle / std::max(1, busy_count) : 0);
+  };
   const auto worker = [&](int w) {
+    const auto me = static_cast<std::size_t>(w);
     for (;;) {
       std::size_t i;
-      int share = 1;
       {
         const std::lock_guard<std::mutex> lock(mutex);
-        if (stop || next == order.size()) break;
-        // The calls left, this one included, split the workers between them: the workers that
-        // find nothing left to take lend their cores.
-        share = std::max(1, n / static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(n),
-                                                                       order.size() - next)));
+        if (stop) break;
+        if (next == order.size()) {
+          ++idle;
+          share_idle();
+          break;
+        }
         i = order[next++];
+        busy[me] = 1;
+        ++busy_count;
+        share_idle();
       }
       try {
-        work(w, i, share, &stop);
+        work(w, i, &lent[me], &stop);
       } catch (...) {
         const std::lock_guard<std::mutex> lock(mutex);
         if (!error) error = std::current_exception();
         stop = true;
+        busy[me] = 0;
+        --busy_count;
         break;
       }
       const std::lock_guard<std::mutex> lock(mutex);
+      busy[me] = 0;
+      --busy_count;
       ready.push_back(i);
       changed.notify_all();
     }
@@ -334,9 +358,8 @@ std::vector<PairOutcome> run_set(std::vector<std::unique_ptr<SetRunner>>& runner
   flush();  // the reused pairs before the first one to run
   run_parallel(
       static_cast<int>(runners.size()), to_run,
-      [&](int w, std::size_t i, int share, const std::atomic<bool>* stop) {
-        SetRunner& runner = *runners[static_cast<std::size_t>(w)];
-        out[i] = runner.run(i, config, stop, runner.threads() * share);
+      [&](int w, std::size_t i, const std::atomic<int>* lent, const std::atomic<bool>* stop) {
+        out[i] = runners[static_cast<std::size_t>(w)]->run(i, config, stop, lent);
       },
       [&](std::size_t i) {
         has[i] = true;

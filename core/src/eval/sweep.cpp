@@ -222,15 +222,13 @@ SweepResult run_sweep(std::vector<std::unique_ptr<SetRunner>>& runners,
   std::iota(order.begin(), order.end(), 0);
   run_parallel(
       static_cast<int>(runners.size()), order,
-      [&](int w, std::size_t p, int share, const std::atomic<bool>* stop) {
+      [&](int w, std::size_t p, const std::atomic<int>* lent, const std::atomic<bool>* stop) {
         SetRunner& runner = *runners[static_cast<std::size_t>(w)];
         std::optional<PairOutcome> skipped;  // a pair that does not load: skipped in every setting
         for (std::size_t k = 0; k < settings.size(); ++k) {
           if (stop->load()) throw Cancelled();
           const auto t0 = std::chrono::steady_clock::now();
-          PairOutcome o = skipped
-                              ? *skipped
-                              : runner.run(p, settings[k].config, stop, runner.threads() * share);
+          PairOutcome o = skipped ? *skipped : runner.run(p, settings[k].config, stop, lent);
           if (!o.loaded) skipped = o;
           ms[p][k] =
               std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)

@@ -41,11 +41,11 @@ class SetRunner {
   /// Cancelled when `cancel` becomes true, and a ConfigError (a work budget the configuration
   /// exceeds: the same for every pair) as it comes.
   /// Afterwards the pair's pipeline is kept when it fits the cache budget, and the last pair
-  /// run is always kept (consecutive runs of one pair reuse it). `threads` > 0 runs this pair on
-  /// that many threads instead of the runner's (a parallel set's last pairs take the cores its
-  /// idle workers leave); the outcome is the same.
+  /// run is always kept (consecutive runs of one pair reuse it). `lent`, when given, counts the
+  /// workers lent to this pair while it runs (Pipeline::lend_threads: a parallel set's idle
+  /// workers lend theirs to the pairs still running); the outcome is the same.
   PairOutcome run(std::size_t i, const Config& config, const std::atomic<bool>* cancel = nullptr,
-                  int threads = 0);
+                  const std::atomic<int>* lent = nullptr);
 
   /// Memory the kept pipelines may hold besides the last one [bytes] (default 0).
   void set_cache_budget(std::size_t bytes);
@@ -131,14 +131,15 @@ std::vector<PairOutcome> run_set(std::vector<std::unique_ptr<SetRunner>>& runner
 /// `jobs` runners over `set`, each with `threads` for its pipelines' parallel stages.
 std::vector<std::unique_ptr<SetRunner>> make_runners(const PairSet& set, int jobs, int threads = 1);
 
-/// Runs `work(worker, i, share)` for each i of `order` on `jobs` threads (worker: 0 .. jobs - 1,
+/// Runs `work(worker, i, lent)` for each i of `order` on `jobs` threads (worker: 0 .. jobs - 1,
 /// each thread its own), and `finished(i)` on the calling thread, one at a time, as each returns.
-/// `share` is the workers' count each call may use: 1 while every worker has work, more for the
-/// last calls once fewer are left than workers (the last of 3 pairs on 2 workers gets both). The
+/// `*lent` counts the workers lent to the call while it runs: 0 while every worker has work;
+/// once workers find nothing left to take, the idle ones are shared among the calls still
+/// running (the last of 3 pairs on 2 workers gets the other worker when it is done). The
 /// `stop` given to `work` becomes true when `cancel` does or another call has thrown; the first
 /// exception is rethrown here once every thread has ended. What both run parallel set loops on.
 void run_parallel(int jobs, const std::vector<std::size_t>& order,
-                  const std::function<void(int worker, std::size_t i, int share,
+                  const std::function<void(int worker, std::size_t i, const std::atomic<int>* lent,
                                            const std::atomic<bool>* stop)>& work,
                   const std::function<void(std::size_t i)>& finished,
                   const std::atomic<bool>* cancel = nullptr);
