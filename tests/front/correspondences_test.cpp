@@ -5,8 +5,6 @@
 #include "pagor/eval/synthetic.hpp"
 #include "pagor/front/correspondences.hpp"
 #include "pagor/front/landmarks.hpp"
-#include "pagor/io/kitti.hpp"
-#include "support/test_util.hpp"
 
 using namespace pagor;
 
@@ -104,29 +102,6 @@ TEST_CASE("FPFH mutual matches on a scene moved by a known transform are mostly 
   INFO(correct << " of " << matches << " FPFH matches are within two voxels of the truth");
   REQUIRE(matches >= 30);
   CHECK(static_cast<double>(correct) / matches > 0.5);
-}
-
-TEST_CASE("the descriptor search split over threads finds the same correspondences") {
-  // Two KITTI scans: ~1,100 building keypoints each, a million descriptor pairs, split into runs
-  // whose nearest sources are merged (the first of equal distances wins, as in one run).
-  const KittiSequence seq(test::kitti_root(), "00");
-  const Config config = default_config();
-  const LandmarkSet s =
-      extract_landmarks(seq.load_frame(0).cloud, config.label_scheme, config.landmarks);
-  const LandmarkSet t =
-      extract_landmarks(seq.load_frame(20).cloud, config.label_scheme, config.landmarks);
-  const CorrespondenceSet one = match_landmarks(s, t, config.correspondences);
-  REQUIRE(one.items.size() > 100);
-  for (int threads : {2, 3}) {
-    const CorrespondenceSet many = match_landmarks(s, t, config.correspondences, threads);
-    INFO(threads << " threads");
-    REQUIRE(many.items.size() == one.items.size());
-    for (std::size_t i = 0; i < one.items.size(); ++i) {
-      CHECK(many.items[i].source == one.items[i].source);
-      CHECK(many.items[i].target == one.items[i].target);
-      CHECK(many.items[i].score == one.items[i].score);
-    }
-  }
 }
 
 TEST_CASE("no landmarks give no correspondences and no crash") {

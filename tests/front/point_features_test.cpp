@@ -257,7 +257,7 @@ TEST_CASE("the spacing estimate is the median nearest-neighbour distance of its 
   }
 }
 
-TEST_CASE("descriptor matching gives FLANN's mutual nearest neighbours") {
+TEST_CASE("descriptor matching gives FLANN's mutual nearest neighbours, on one thread or more") {
   if (!std::filesystem::exists(test::kitti_root() + "/sequences/00/velodyne/000000.bin")) return;
   const KittiSequence seq(test::kitti_root(), "00");
   const Config config = default_config();
@@ -300,8 +300,21 @@ TEST_CASE("descriptor matching gives FLANN's mutual nearest neighbours") {
       std::min<std::size_t>(expected.size(), config.correspondences.fpfh_max_per_class));
   std::set<std::pair<int, int>> want, got;
   for (const auto& e : expected) want.insert(e.second);
-  for (const Correspondence& c : match_landmarks(s, t, config.correspondences).items)
+  const CorrespondenceSet ours = match_landmarks(s, t, config.correspondences);
+  for (const Correspondence& c : ours.items)
     if (c.class_index == building) got.insert({c.source, c.target});
+  // The search split over threads (runs merged in order, the first of equal distances winning as
+  // in one run) finds the same correspondences, in the same order.
+  for (int threads : {2, 3}) {
+    const CorrespondenceSet split = match_landmarks(s, t, config.correspondences, threads);
+    INFO(threads << " threads");
+    REQUIRE(split.items.size() == ours.items.size());
+    for (std::size_t i = 0; i < ours.items.size(); ++i) {
+      CHECK(split.items[i].source == ours.items[i].source);
+      CHECK(split.items[i].target == ours.items[i].target);
+      CHECK(split.items[i].score == ours.items[i].score);
+    }
+  }
   // Where two descriptors are identical (isolated points give the same degenerate histogram)
   // either match is exact; FLANN takes the one its tree visits first, we the lowest index.
   const auto same_descriptors = [](const LandmarkSet& set, int a, int b) {
