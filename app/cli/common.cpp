@@ -30,7 +30,9 @@ std::vector<Option> config_options_for(const std::string& default_preset) {
 }
 
 Option threads_option() {
-  return {"threads", 1, "N", "threads inside a pair: loading, landmarks, matching, graph, verification, acceptance (default 1)"};
+  return {"threads", 1, "N",
+          "threads inside a pair: loading, landmarks, matching, graph, verification, acceptance "
+          "(default 1)"};
 }
 
 std::vector<Option> single_cloud_options() {
