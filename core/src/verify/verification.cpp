@@ -5,7 +5,6 @@
 #include <cmath>
 #include <mutex>
 #include <string>
-#include <thread>
 
 #include "pagor/errors.hpp"
 #include "pagor/util/kdtree.hpp"
