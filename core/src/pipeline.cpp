@@ -2,11 +2,10 @@
 
 #include <algorithm>
 #include <chrono>
-#include <exception>
-#include <thread>
 
 #include "pagor/errors.hpp"
 #include "pagor/verify/level_selection.hpp"
+#include "util/parallel.hpp"
 
 namespace pagor {
 namespace {
@@ -159,27 +158,10 @@ void Pipeline::run(const ProgressFn& progress, const std::atomic<bool>* cancel) 
 
 template <class F>
 void Pipeline::both_clouds(const F& f) {
-  if (threads_now() <= 1) {
-    f(source_, source_landmarks_);
-    f(target_, target_landmarks_);
-    return;
-  }
-  std::exception_ptr failure;  // the two clouds are independent
-  std::thread other([&] {
-    try {
-      f(target_, target_landmarks_);
-    } catch (...) {
-      failure = std::current_exception();
-    }
-  });
-  try {
-    f(source_, source_landmarks_);
-  } catch (...) {
-    other.join();
-    throw;
-  }
-  other.join();
-  if (failure) std::rethrow_exception(failure);
+  // The two clouds are independent; of two failures, the source's is reported.
+  parallel_pair(
+      threads_now(), [&] { f(source_, source_landmarks_); },
+      [&] { f(target_, target_landmarks_); });
 }
 
 void Pipeline::run_stage(Stage stage) {

@@ -11,24 +11,6 @@
 
 namespace pagor {
 
-namespace {
-
-// Calls load_source() and load_target(), at once when threads > 1; an error of the source's is
-// the one thrown when both fail, as one after the other.
-template <class Source, class Target>
-void load_both(int threads, const Source& load_source, const Target& load_target) {
-  parallel_ranges(threads, 2, 1, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t k = begin; k < end; ++k) {
-      if (k == 0)
-        load_source();
-      else
-        load_target();
-    }
-  });
-}
-
-}  // namespace
-
 LoadedPair load_pair(const PairSource& src, const IndoorParams& indoor, int threads) {
   LoadedPair out;
   switch (src.kind) {
@@ -36,7 +18,7 @@ LoadedPair load_pair(const PairSource& src, const IndoorParams& indoor, int thre
       if (src.source.empty() || src.target.empty())
         throw InputError("a file pair needs both a source and a target cloud");
       if (!is_floor_plan_path(src.target)) {
-        load_both(
+        parallel_pair(
             threads, [&] { out.source = load_cloud(src.source, src.source_labels); },
             [&] { out.target = load_cloud(src.target, src.target_labels); });
       } else {
@@ -61,7 +43,7 @@ LoadedPair load_pair(const PairSource& src, const IndoorParams& indoor, int thre
       break;
     case PairSource::Kind::kitti: {
       const KittiSequence seq(src.kitti_root, src.sequence);
-      load_both(
+      parallel_pair(
           threads, [&] { out.source = seq.load_frame(src.source_frame); },
           [&] { out.target = seq.load_frame(src.target_frame); });
       out.source_name = seq.scan_path(src.source_frame);

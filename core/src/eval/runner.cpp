@@ -36,6 +36,19 @@ PairOutcome failed(const PairEntry& entry, std::string why) {
   return o;
 }
 
+// Lends `lent` workers to a pipeline for as long as it lives (Pipeline::lend_threads): a kept
+// pipeline must not point to the count of a run that has ended.
+class Lending {
+ public:
+  Lending(Pipeline& p, const std::atomic<int>* lent) : p_(p) { p_.lend_threads(lent); }
+  ~Lending() { p_.lend_threads(nullptr); }
+  Lending(const Lending&) = delete;
+  Lending& operator=(const Lending&) = delete;
+
+ private:
+  Pipeline& p_;
+};
+
 }  // namespace
 
 // A pair's kept pipeline, with the names its files were loaded under.
@@ -77,18 +90,14 @@ PairOutcome SetRunner::run(std::size_t i, const Config& config, const std::atomi
   if (slot.pipeline) {
     for (int s = 0; s < kStageCount; ++s) before[s] = slot.pipeline->runs(static_cast<Stage>(s));
     slot.pipeline->set_config(config);
-    slot.pipeline->lend_threads(lent);
     try {  // the pair's own failure fails the pair, as in run_pair
+      const Lending lending(*slot.pipeline, lent);
       slot.pipeline->run(ProgressFn{}, cancel);
     } catch (const InputError& e) {
       o = failed(entry, describe(entry.source) + ": " + e.what());
     } catch (const std::bad_alloc&) {
       o = failed(entry, describe(entry.source) + ": out of memory while running the pair");
-    } catch (...) {
-      slot.pipeline->lend_threads(nullptr);
-      throw;
     }
-    slot.pipeline->lend_threads(nullptr);
     if (!o.load_error.empty()) {
       slot.pipeline.reset();
       slot.since = 0;
@@ -98,9 +107,10 @@ PairOutcome SetRunner::run(std::size_t i, const Config& config, const std::atomi
     o = pair_outcome(*slot.pipeline, entry, slot.source_name, slot.target_name);
   } else {
     auto pipeline = std::make_unique<Pipeline>(config, threads_);
-    pipeline->lend_threads(lent);
-    o = run_pair(*pipeline, entry, cancel);
-    pipeline->lend_threads(nullptr);
+    {
+      const Lending lending(*pipeline, lent);
+      o = run_pair(*pipeline, entry, cancel);
+    }
     if (!o.loaded) return o;
     slot.pipeline = std::move(pipeline);
     slot.source_name = o.source_name;

@@ -153,12 +153,12 @@ namespace {
 
 // Reads `path` as records of `record` bytes, handing them to add(bytes, count) as they arrive
 // (no copy of the whole file: on a virtual machine its fresh pages cost more than the reading).
-// Returns the records read; throws InputError when the size is not a whole number of records.
+// Throws InputError when the size is not a whole number of records (of at most 16 bytes).
 template <class Reserve, class Add>
-std::size_t read_records(const std::string& path, const char* what, std::size_t record,
+void read_records(const std::string& path, const char* what, std::size_t record,
                          const char* layout, const Reserve& reserve, const Add& add) {
   char partial[16];
-  std::size_t carry = 0, count = 0;
+  std::size_t carry = 0;
   const std::uint64_t total = read_file_pieces(
       path, what, kMaxCloudFileBytes,
       [&](std::uint64_t size) { reserve(static_cast<std::size_t>(size / record)); },
@@ -168,17 +168,16 @@ std::size_t read_records(const std::string& path, const char* what, std::size_t 
           std::memcpy(partial + carry, data, take);
           carry += take, data += take, n -= take;
           if (carry < record) return;
-          add(partial, std::size_t{1}), ++count, carry = 0;
+          add(partial, std::size_t{1}), carry = 0;
         }
         const std::size_t whole = n / record;
-        if (whole > 0) add(data, whole), count += whole;
+        if (whole > 0) add(data, whole);
         carry = n - whole * record;
         std::memcpy(partial, data + whole * record, carry);
       });
   if (carry > 0)
     throw InputError(path + ": size " + std::to_string(total) + " bytes is not a multiple of " +
                      std::to_string(record) + " (" + layout + ")");
-  return count;
 }
 
 }  // namespace

@@ -40,4 +40,18 @@ void parallel_ranges(int threads, std::size_t n, std::size_t min_part, const F& 
     if (e) std::rethrow_exception(e);
 }
 
+/// Calls first() and second(), at once when threads > 1 (second() on another thread); when both
+/// throw, first()'s exception is the one rethrown, as when they run one after the other.
+template <class First, class Second>
+void parallel_pair(int threads, const First& first, const Second& second) {
+  parallel_ranges(threads, 2, 1, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k) {
+      if (k == 0)
+        first();
+      else
+        second();
+    }
+  });
+}
+
 }  // namespace pagor

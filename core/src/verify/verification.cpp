@@ -82,13 +82,12 @@ Verifier::Verifier(const PointCloud& source, const PointCloud& target, double vo
                    int threads)
     : impl_(std::make_unique<Impl>()) {
   const auto t0 = std::chrono::steady_clock::now();
-  parallel_ranges(threads, 2, 1, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t k = begin; k < end; ++k)
-      (k == 0 ? impl_->source : impl_->target) =
-          voxel_downsample((k == 0 ? source : target).points, voxel_size, nullptr,
-                           /*with_voxel_of=*/false)
-              .points;
-  });
+  const auto downsampled = [voxel_size](const PointCloud& cloud) {
+    return voxel_downsample(cloud.points, voxel_size, nullptr, /*with_voxel_of=*/false).points;
+  };
+  parallel_pair(
+      threads, [&] { impl_->source = downsampled(source); },
+      [&] { impl_->target = downsampled(target); });
   impl_->build_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
