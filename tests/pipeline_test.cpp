@@ -27,6 +27,17 @@ std::vector<Stage> ran(const std::array<int, kStageCount>& before,
   return out;
 }
 
+// Edits a copy of p's configuration, sets it and runs: the stages that ran again.
+template <class Edit>
+std::vector<Stage> ran_after(Pipeline& p, const Edit& edit) {
+  const auto before = runs(p);
+  Config c = p.config();
+  edit(c);
+  p.set_config(c);
+  p.run();
+  return ran(before, runs(p));
+}
+
 Pipeline synthetic_pipeline() {
   SyntheticScene scene = make_synthetic_scene();
   Pipeline p;
@@ -58,56 +69,33 @@ TEST_CASE("a change re-runs only the stages it invalidates") {
   for (int s = 0; s < kStageCount; ++s) CHECK(before[static_cast<std::size_t>(s)] == 1);
 
   SECTION("mu: scoring and evaluation") {
-    Config c = p.config();
-    c.verification.mu = 0.5;
-    p.set_config(c);
-    p.run();
-    CHECK(ran(before, runs(p)) == std::vector<Stage>{Stage::verification, Stage::refinement,
-                                                     Stage::acceptance, Stage::evaluation});
+    CHECK(ran_after(p, [](Config& c) { c.verification.mu = 0.5; }) ==
+          std::vector<Stage>{Stage::verification, Stage::refinement, Stage::acceptance,
+                             Stage::evaluation});
   }
   SECTION("a threshold: graph and everything after it but the metric clouds") {
-    Config c = p.config();
-    c.graph.thresholds[1] = 0.05;
-    p.set_config(c);
-    p.run();
-    CHECK(ran(before, runs(p)) == std::vector<Stage>{Stage::graph, Stage::clique, Stage::gnc,
-                                                     Stage::verification, Stage::refinement,
-                                                     Stage::acceptance, Stage::evaluation});
+    CHECK(ran_after(p, [](Config& c) { c.graph.thresholds[1] = 0.05; }) ==
+          std::vector<Stage>{Stage::graph, Stage::clique, Stage::gnc, Stage::verification,
+                             Stage::refinement, Stage::acceptance, Stage::evaluation});
   }
   SECTION("a clustering parameter: everything but the metric clouds") {
-    Config c = p.config();
-    c.landmarks.classes[0].cluster_tolerance = 0.6;
-    p.set_config(c);
-    p.run();
-    CHECK(ran(before, runs(p)) == std::vector<Stage>{Stage::landmarks, Stage::correspondences,
-                                                     Stage::graph, Stage::clique, Stage::gnc,
-                                                     Stage::verification, Stage::refinement,
-                                                     Stage::acceptance, Stage::evaluation});
+    CHECK(ran_after(p, [](Config& c) { c.landmarks.classes[0].cluster_tolerance = 0.6; }) ==
+          std::vector<Stage>{Stage::landmarks, Stage::correspondences, Stage::graph, Stage::clique,
+                             Stage::gnc, Stage::verification, Stage::refinement, Stage::acceptance,
+                             Stage::evaluation});
   }
   SECTION("the verification voxel: metric clouds, scoring and evaluation") {
-    Config c = p.config();
-    c.verification.voxel_size = 0.7;
-    p.set_config(c);
-    p.run();
-    CHECK(ran(before, runs(p)) == std::vector<Stage>{Stage::verification_prep, Stage::verification,
-                                                     Stage::refinement, Stage::acceptance,
-                                                     Stage::evaluation});
+    CHECK(ran_after(p, [](Config& c) { c.verification.voxel_size = 0.7; }) ==
+          std::vector<Stage>{Stage::verification_prep, Stage::verification, Stage::refinement,
+                             Stage::acceptance, Stage::evaluation});
   }
   SECTION("GNC parameters: pose and after") {
-    Config c = p.config();
-    c.gnc.noise_bound = 0.8;
-    p.set_config(c);
-    p.run();
-    CHECK(ran(before, runs(p)) == std::vector<Stage>{Stage::gnc, Stage::verification,
-                                                     Stage::refinement, Stage::acceptance,
-                                                     Stage::evaluation});
+    CHECK(ran_after(p, [](Config& c) { c.gnc.noise_bound = 0.8; }) ==
+          std::vector<Stage>{Stage::gnc, Stage::verification, Stage::refinement, Stage::acceptance,
+                             Stage::evaluation});
   }
   SECTION("refinement parameters: refinement and after") {
-    Config c = p.config();
-    c.refinement.max_iterations = 5;
-    p.set_config(c);
-    p.run();
-    CHECK(ran(before, runs(p)) ==
+    CHECK(ran_after(p, [](Config& c) { c.refinement.max_iterations = 5; }) ==
           std::vector<Stage>{Stage::refinement, Stage::acceptance, Stage::evaluation});
   }
   SECTION("ground truth: evaluation only") {
