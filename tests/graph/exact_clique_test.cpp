@@ -1,8 +1,10 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
+#include <chrono>
 #include <numeric>
 #include <random>
 
+#include "graph/bit_graph.hpp"
 #include "graph/clique_graph.hpp"
 #include "pagor/graph/densest_clique.hpp"
 #include "support/clique_reference.hpp"
@@ -249,6 +251,49 @@ TEST_CASE("the exact solver stops at its node budget and says so") {
   CHECK(is_clique(g, 0, r.vertices));
   CHECK_FALSE(r.vertices.empty());
   CHECK(r.clique_number_bound >= static_cast<int>(r.vertices.size()));
+}
+
+TEST_CASE("a near-complete graph's search stops at its node budget and says so") {
+  // Searched as independent sets of the sparse complement; each node's reductions count as the
+  // nodes their work is worth, so that the budget bounds the search's time.
+  for (std::uint64_t seed : {1u, 2u}) {
+    const PyramidGraph g = random_graph(300, 0.93, 0, seed);
+    CliqueParams cp;
+    cp.exact_max_nodes = 2000;
+    cp.exact_time_budget_ms = 0;
+    const CliqueResult r = exact_max_clique(g, 0, cp);
+    INFO("seed " << seed << ", clique " << r.vertices.size() << ", bound "
+                 << r.clique_number_bound);
+    CHECK_FALSE(r.proven);
+    CHECK(r.budget == CliqueBudget::nodes);
+    CHECK(is_clique(g, 0, r.vertices));
+    CHECK_FALSE(r.vertices.empty());
+    CHECK(r.clique_number_bound >= static_cast<int>(r.vertices.size()));
+  }
+}
+
+TEST_CASE("a search budget counts nodes by their work and reads the clock at each 256th") {
+  detail::SearchBudget b;
+  b.max_nodes = 1000;
+  b.deadline = detail::SearchBudget::Clock::now() - std::chrono::seconds(1);  // already past
+  for (int i = 0; i < 255; ++i) REQUIRE(b.spend());
+  CHECK(b.nodes == 255);
+  CHECK_FALSE(b.spend());  // the 256th reads the clock
+  CHECK(b.out_of_time);
+  CHECK_FALSE(b.out_of_nodes);
+
+  detail::SearchBudget big;
+  big.max_nodes = 1000;
+  CHECK(big.spend(600));  // one node worth 600
+  CHECK(big.nodes == 600);
+  CHECK_FALSE(big.spend(401));
+  CHECK(big.out_of_nodes);
+
+  detail::SearchBudget late;
+  late.deadline = detail::SearchBudget::Clock::now() - std::chrono::seconds(1);
+  CHECK(late.spend(100));
+  CHECK_FALSE(late.spend(200));  // passes 256: the clock is read
+  CHECK(late.out_of_time);
 }
 
 TEST_CASE("an interrupted exact search returns a bound no smaller than the maximum clique") {

@@ -133,11 +133,14 @@ struct SearchBudget {
   Clock::time_point deadline = Clock::time_point::max();  ///< max(): none
   long nodes = 0;                                         ///< spent so far
   bool out_of_nodes = false, out_of_time = false;         ///< which limit stopped a search
-  /// Counts one node; false once a limit is reached (the clock is read every 256 nodes).
-  bool spend() {
-    ++nodes;
+  /// Counts `units` nodes (a node that did the work of several counts as several); false once a
+  /// limit is reached (the clock is read each time the count passes a multiple of 256).
+  bool spend(long units = 1) {
+    const long before = nodes;
+    nodes += units;
     if (max_nodes > 0 && nodes > max_nodes) out_of_nodes = true;
-    if ((nodes & 255) == 0 && deadline != Clock::time_point::max() && Clock::now() > deadline)
+    if ((before >> 8) != (nodes >> 8) && deadline != Clock::time_point::max() &&
+        Clock::now() > deadline)
       out_of_time = true;
     return !exhausted();
   }
