@@ -316,12 +316,24 @@ void Pipeline::judge_acceptance() {
                                                     : "nothing to verify on: no clouds were given";
     return;
   }
+  // The verifier's source points of the label scheme's class "furniture" (the indoor scheme's:
+  // what a floor scan's higher beams passed over, IndoorParams::furniture_gap).
+  std::vector<char> furniture;
+  const int furniture_class = config_.label_scheme.find("furniture");
+  const std::vector<std::uint32_t>& labels = verifier_->source_labels();
+  if (furniture_class >= 0 && !labels.empty()) {
+    const auto& ids = config_.label_scheme.classes[static_cast<std::size_t>(furniture_class)].ids;
+    furniture.resize(labels.size());
+    for (std::size_t i = 0; i < labels.size(); ++i)
+      furniture[i] = std::find(ids.begin(), ids.end(), labels[i]) != ids.end();
+  }
+  const std::vector<char>* on_furniture = furniture.empty() ? nullptr : &furniture;
   const PoseModel model = verification_.selected >= 0
                               ? poses_[static_cast<std::size_t>(verification_.selected)].model
                               : config_.gnc.model;
   if (!refinement_.applied) {
     acceptance_ = judge_selection(*verifier_, poses_, verification_, config_.verification,
-                                  config_.acceptance, model, threads_now());
+                                  config_.acceptance, model, threads_now(), on_furniture);
     return;
   }
   // Judge the pose the user gets: the refined one, with its own D.
@@ -332,7 +344,7 @@ void Pipeline::judge_acceptance() {
   verification.scores[sel] = refinement_.score_after;
   verification.selected_distances = refinement_.distances_after;
   acceptance_ = judge_selection(*verifier_, candidates, verification, config_.verification,
-                                config_.acceptance, model, threads_now());
+                                config_.acceptance, model, threads_now(), on_furniture);
 }
 
 std::optional<Transform> Pipeline::selected_transform() const {

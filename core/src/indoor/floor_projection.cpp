@@ -1,5 +1,6 @@
 #include "pagor/indoor/floor_projection.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <unordered_map>
@@ -9,12 +10,46 @@
 
 namespace pagor {
 
+std::vector<char> passed_over(const PointCloud& scan, double gap) {
+  std::vector<char> out(scan.size(), 0);
+  if (!(gap > 0)) return out;
+  // Azimuth bins of half a degree; in each, from the highest elevation down, the furthest
+  // horizontal range seen so far among points clearly higher (by more than 0.5 degrees).
+  constexpr double kBin = 0.5 * M_PI / 180.0, kHigher = 0.5 * M_PI / 180.0;
+  struct Ray {
+    double elevation, range;
+    std::size_t index;
+  };
+  std::unordered_map<int, std::vector<Ray>> bins;
+  for (std::size_t i = 0; i < scan.size(); ++i) {
+    const Eigen::Vector3f& p = scan.points[i];
+    const double range = std::hypot(double(p.x()), double(p.y()));
+    if (!(range > 0)) continue;
+    const int bin = static_cast<int>(std::floor(std::atan2(double(p.y()), double(p.x())) / kBin));
+    bins[bin].push_back({std::atan2(double(p.z()), range), range, i});
+  }
+  for (auto& [bin, rays] : bins) {
+    std::sort(rays.begin(), rays.end(), [](const Ray& a, const Ray& b) {
+      return a.elevation > b.elevation || (a.elevation == b.elevation && a.index < b.index);
+    });
+    double furthest = -HUGE_VAL;  // among the rays more than kHigher above the current one
+    std::size_t above = 0;
+    for (const Ray& r : rays) {
+      while (above < rays.size() && rays[above].elevation > r.elevation + kHigher)
+        furthest = std::max(furthest, rays[above++].range);
+      out[r.index] = furthest >= r.range + gap;
+    }
+  }
+  return out;
+}
+
 std::vector<Eigen::Vector2d> project_to_floor(const PointCloud& scan, const IndoorParams& params,
                                               std::vector<std::uint32_t>* labels,
-                                              std::size_t* in_band) {
+                                              std::size_t* in_band, std::vector<char>* furniture) {
   struct Cell {
     Eigen::Vector2d sum = Eigen::Vector2d::Zero();
     int n = 0;
+    int passed = 0;  // points a higher beam passed over
     std::map<std::uint32_t, int> votes;
     std::size_t order = 0;
   };
@@ -22,6 +57,8 @@ std::vector<Eigen::Vector2d> project_to_floor(const PointCloud& scan, const Indo
   const double v = params.floor_voxel;
   std::size_t band = 0;
   const bool with_labels = labels && scan.has_labels();
+  const std::vector<char> passed =
+      furniture ? passed_over(scan, params.furniture_gap) : std::vector<char>(scan.size(), 0);
   for (std::size_t i = 0; i < scan.size(); ++i) {
     const Eigen::Vector3f& p = scan.points[i];
     if (p.z() < params.height_min || p.z() > params.height_max) continue;
@@ -35,6 +72,7 @@ std::vector<Eigen::Vector2d> project_to_floor(const PointCloud& scan, const Indo
     if (fresh) it->second.order = cells.size();
     it->second.sum += Eigen::Vector2d(p.x(), p.y());
     ++it->second.n;
+    it->second.passed += passed[i];
     if (with_labels) ++it->second.votes[semantic_id(scan.labels[i])];
   }
   // Cells in first-seen order, so the output does not depend on the hash table's layout.
@@ -42,8 +80,10 @@ std::vector<Eigen::Vector2d> project_to_floor(const PointCloud& scan, const Indo
   for (const auto& [key, cell] : cells) ordered[cell.order - 1] = &cell;
   std::vector<Eigen::Vector2d> out;
   if (labels) labels->clear();
+  if (furniture) furniture->clear();
   for (const Cell* c : ordered) {
     out.push_back(c->sum / c->n);
+    if (furniture) furniture->push_back(c->passed == c->n);
     if (!labels) continue;
     std::uint32_t best = 0;
     int most = -1;
@@ -87,7 +127,9 @@ FloorScan prepare_floor_scan(const PointCloud& scan, const IndoorParams& params)
   FloorScan out;
   std::vector<std::uint32_t> labels;
   const bool use_labels = !params.detect_columns && scan.has_labels();
-  out.floor = project_to_floor(scan, params, use_labels ? &labels : nullptr, &out.in_band);
+  std::vector<char> furniture;
+  out.floor =
+      project_to_floor(scan, params, use_labels ? &labels : nullptr, &out.in_band, &furniture);
   if (out.floor.empty())
     throw InputError("no scan point lies within the height band [" +
                      std::to_string(params.height_min) + ", " + std::to_string(params.height_max) +
@@ -101,7 +143,8 @@ FloorScan prepare_floor_scan(const PointCloud& scan, const IndoorParams& params)
     if (on_column[i]) continue;
     out.cloud.points.emplace_back(static_cast<float>(out.floor[i].x()),
                                   static_cast<float>(out.floor[i].y()), 0.0f);
-    out.cloud.labels.push_back(kWallLabel);
+    out.cloud.labels.push_back(furniture[i] ? kFurnitureLabel : kWallLabel);
+    out.furniture += furniture[i] != 0;
   }
   for (const DetectedColumn& c : out.columns)
     sample_circle(c.center, c.radius, params.plan_spacing, kColumnLabel, out.cloud);

@@ -141,8 +141,9 @@ std::string candidate_name(std::size_t level, const Transform& T, const Transfor
 // one explains more than max_ambiguity of what the selected pose explains.
 void judge_ambiguity(Acceptance& a, const Verifier& verifier,
                      const std::vector<PoseEstimate>& candidates, const VerificationResult& v,
-                     const std::vector<char>& counts, double mu, const EvaluationParams& distinct,
-                     const AcceptanceParams& params, int threads) {
+                     const std::vector<char>& counts, const std::vector<char>* furniture, double mu,
+                     const EvaluationParams& distinct, const AcceptanceParams& params,
+                     int threads) {
   const auto sel = static_cast<std::size_t>(v.selected);
   AmbiguityInput in;
   in.verifier = &verifier;
@@ -153,6 +154,19 @@ void judge_ambiguity(Acceptance& a, const Verifier& verifier,
   in.target_complete =
       !target_counts.empty() &&
       std::all_of(target_counts.begin(), target_counts.end(), [](char c) { return c != 0; });
+  // Against a floor plan, furniture (what stands lower than the walls: a parked car) is in no
+  // plan: a pose that puts a car's side on a wall explains nothing by it, and a car park's cars
+  // beside a long wall made right poses look rivalled by a shift of a column spacing. Such a
+  // point on a wall or column contradicts the pose that puts it there.
+  std::vector<char> structure, on_furniture;
+  if (in.target_complete && furniture && furniture->size() == counts.size()) {
+    structure = counts;
+    on_furniture.assign(counts.size(), 0);
+    for (std::size_t i = 0; i < structure.size(); ++i)
+      if ((*furniture)[i]) on_furniture[i] = counts[i], structure[i] = 0;
+    in.counts = &structure;
+    in.furniture = &on_furniture;
+  }
   in.T_selected = candidates[sel].T_target_source;
   in.mu = mu;
   in.inlier_distance = params.inlier_distance;
@@ -190,7 +204,8 @@ void judge_ambiguity(Acceptance& a, const Verifier& verifier,
 Acceptance judge_selection(const Verifier& verifier, const std::vector<PoseEstimate>& candidates,
                            const VerificationResult& verification,
                            const VerificationParams& verification_params,
-                           const AcceptanceParams& params, PoseModel model, int threads) {
+                           const AcceptanceParams& params, PoseModel model, int threads,
+                           const std::vector<char>* furniture) {
   const EvaluationParams distinct = params.distinct();  // what counts as another answer
   Acceptance a;
   if (verification.selected < 0) {
@@ -218,8 +233,8 @@ Acceptance judge_selection(const Verifier& verifier, const std::vector<PoseEstim
   // The ambiguity is searched only for a pose every other test trusts (it costs a few dozen
   // searches of the points).
   if (a.reason.empty() && params.max_ambiguity < kAmbiguityOff)
-    judge_ambiguity(a, verifier, candidates, verification, counts, verification_params.mu, distinct,
-                    params, threads);
+    judge_ambiguity(a, verifier, candidates, verification, counts, furniture,
+                    verification_params.mu, distinct, params, threads);
   a.accepted = a.reason.empty();
   return a;
 }

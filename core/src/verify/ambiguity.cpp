@@ -241,6 +241,16 @@ class Comparison {
       seen_[i] = (*in.counts)[i] && footprint_.covers(apply(in.T_selected, src[i]));
       aligned_ += seen_[i] && d_sel_[i] <= r_;
     }
+    if (in.furniture) {
+      const std::vector<float> d = in.verifier->distances(in.T_selected, r_, *in.furniture);
+      on_sel_.assign(src.size(), 0);
+      off_sel_.assign(src.size(), 0);
+      for (std::size_t i = 0; i < src.size(); ++i) {
+        if (!(*in.furniture)[i]) continue;
+        (d[i] <= r_ ? on_sel_ : off_sel_)[i] = 1;
+        on_sel_count_ += d[i] <= r_;
+      }
+    }
   }
 
   /// (points only `T` aligns + prior) / (points only the selected pose aligns + prior); 0 when
@@ -261,8 +271,14 @@ class Comparison {
     // A pose that puts most of the evidence where the target did not look is no competitor (in a
     // 30 m hall, a pose moved 17 m kept a handful of points, and matched them).
     if (2 * judged < aligned_) return 0.0;
-    const std::size_t only_sel = judged - in_.verifier->count_within(T, 2 * r_, aligned);
-    const std::size_t only_alt = in_.verifier->count_within(T, r_, unaligned);
+    std::size_t only_sel = judged - in_.verifier->count_within(T, 2 * r_, aligned);
+    std::size_t only_alt = in_.verifier->count_within(T, r_, unaligned);
+    // Furniture one pose puts on the target's structure and the other does not speaks for the
+    // other.
+    if (in_.furniture) {
+      only_sel += in_.verifier->count_within(T, r_, off_sel_);
+      only_alt += on_sel_count_ - in_.verifier->count_within(T, r_, on_sel_);
+    }
     return (static_cast<double>(only_alt) + kPriorPoints) /
            (static_cast<double>(only_sel) + kPriorPoints);
   }
@@ -282,6 +298,8 @@ class Comparison {
   Footprint footprint_;
   float r_;
   std::vector<float> d_sel_;
+  std::vector<char> on_sel_, off_sel_;  // furniture the selected pose puts on structure, or not
+  std::size_t on_sel_count_ = 0;
   std::vector<char> seen_;   // counted, and put where the target looked by the selected pose
   std::size_t aligned_ = 0;  // of those, aligned by the selected pose
 };

@@ -31,6 +31,9 @@ struct AmbiguityInput {
   const Verifier* verifier = nullptr;
   const std::vector<char>* counts = nullptr;         ///< per downsampled source point: counted
   const std::vector<char>* target_counts = nullptr;  ///< per downsampled target point: structure
+  /// per downsampled source point: furniture (what stands lower than the walls; only against a
+  /// floor plan): a pose that puts it on the target's structure is contradicted by it; null: none
+  const std::vector<char>* furniture = nullptr;
   /// the target shows all there is (a floor plan): every point is where it looked; otherwise only
   /// the horizontal cells that hold target points (a scan sees its surroundings up to a range)
   bool target_complete = false;

@@ -15,6 +15,7 @@ namespace pagor {
 
 struct Verifier::Impl {
   std::vector<Eigen::Vector3f> source, target;
+  std::vector<std::uint32_t> source_labels;
   double build_ms = 0.0;
 
   // Unbounded searches (ScoreKind::nearest) go to a kd-tree, built on first use.
@@ -85,9 +86,23 @@ Verifier::Verifier(const PointCloud& source, const PointCloud& target, double vo
   const auto downsampled = [voxel_size](const PointCloud& cloud) {
     return voxel_downsample(cloud.points, voxel_size, nullptr, /*with_voxel_of=*/false).points;
   };
-  parallel_pair(
-      threads, [&] { impl_->source = downsampled(source); },
-      [&] { impl_->target = downsampled(target); });
+  // A labelled source keeps, per voxel, the label all its points share (0 where they differ).
+  const auto source_with_labels = [&] {
+    if (!source.has_labels() || source.labels.size() != source.size()) {
+      impl_->source = downsampled(source);
+      return;
+    }
+    VoxelDownsample d = voxel_downsample(source.points, voxel_size);
+    impl_->source = std::move(d.points);
+    constexpr std::uint32_t kUnset = 0xFFFFFFFFu;
+    impl_->source_labels.assign(impl_->source.size(), kUnset);
+    for (std::size_t i = 0; i < d.voxel_of.size(); ++i) {
+      std::uint32_t& l = impl_->source_labels[static_cast<std::size_t>(d.voxel_of[i])];
+      const std::uint32_t mine = semantic_id(source.labels[i]);
+      l = l == kUnset || l == mine ? mine : 0;
+    }
+  };
+  parallel_pair(threads, source_with_labels, [&] { impl_->target = downsampled(target); });
   impl_->build_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
@@ -110,6 +125,10 @@ const std::vector<Eigen::Vector3f>& Verifier::target_points() const {
 }
 double Verifier::build_time_ms() const {
   return impl_->build_ms;
+}
+
+const std::vector<std::uint32_t>& Verifier::source_labels() const {
+  return impl_->source_labels;
 }
 
 std::vector<float> Verifier::distances(const Transform& T, float bound) const {

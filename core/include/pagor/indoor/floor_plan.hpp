@@ -64,6 +64,9 @@ struct FloorPlan {
 /// Label ids the sampled plan and the projected scans carry (the `indoor` label scheme).
 constexpr std::uint32_t kWallLabel = 1;
 constexpr std::uint32_t kColumnLabel = 2;
+/// What stands lower than the building's walls in a projected scan (a car, a person): no plan
+/// draws it (prepare_floor_scan, IndoorParams::furniture_gap).
+constexpr std::uint32_t kFurnitureLabel = 4;
 
 /// Parses the JSON format above. `origin` names the file in messages. Throws InputError.
 FloorPlan parse_floor_plan_json(std::string_view text, const std::string& origin);

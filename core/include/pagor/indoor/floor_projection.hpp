@@ -23,6 +23,7 @@ struct IndoorParams {
   double height_min = -0.3;
   double height_max = 1.9;
   double floor_voxel = 0.05;
+  double furniture_gap = 1.0;
   bool detect_columns = true;
   ColumnDetectorParams columns;
 
@@ -37,6 +38,14 @@ struct IndoorParams {
                                   Range::closed(-1000, 1000)});
     v(&IndoorParams::floor_voxel,
       {"floor_voxel", "The 2-D grid of the projected scan.", "m", Range::closed(1e-3, 10)});
+    v(&IndoorParams::furniture_gap,
+      {"furniture_gap",
+       "A scan point is on furniture (a car, a person: lower than the walls, in no plan) when a "
+       "higher beam of about its azimuth returned from at least this much further. A projected "
+       "cell all of whose points are is labelled furniture: acceptance's ambiguity test counts it "
+       "for no pose, and against a pose that puts it on a wall or column. Needs the scan in its "
+       "sensor's frame; 0: off.",
+       "m", Range::closed(0, 1000)});
     v(&IndoorParams::detect_columns,
       {"detect_columns",
        "Find columns with the detector; off: take them from the scan's labels (indoor scheme)."});
@@ -54,13 +63,22 @@ struct FloorScan {
   std::vector<Eigen::Vector2d> floor;   ///< the projected points before the column outlines [m]
   std::vector<DetectedColumn> columns;  ///< columns found (indices into `floor`)
   std::size_t in_band = 0;              ///< input points within the height band
+  std::size_t furniture = 0;            ///< projected cells labelled furniture
 };
 
 /// Points within [height_min, height_max], one per cell of the `floor_voxel` grid (the cell's
-/// mean). With `labels` (same length as `scan`), the most frequent label of each cell.
+/// mean). With `labels` (same length as `scan`), the most frequent label of each cell. With
+/// `furniture`, per cell whether each of its points was passed over by a higher beam that returned
+/// from at least params.furniture_gap further (passed_over).
 std::vector<Eigen::Vector2d> project_to_floor(const PointCloud& scan, const IndoorParams& params,
                                               std::vector<std::uint32_t>* labels = nullptr,
-                                              std::size_t* in_band = nullptr);
+                                              std::size_t* in_band = nullptr,
+                                              std::vector<char>* furniture = nullptr);
+
+/// Per point of a scan in its sensor's frame: whether a point of a higher beam, within half a
+/// degree of its azimuth, lies at least `gap` [m] further out horizontally (the beam passed over
+/// it: what it hit is lower than what stands behind). All false for gap <= 0 or a flat scan.
+std::vector<char> passed_over(const PointCloud& scan, double gap);
 
 /// The whole preparation (above). Throws InputError when no point lies within the height band.
 FloorScan prepare_floor_scan(const PointCloud& scan, const IndoorParams& params);

@@ -161,10 +161,14 @@ struct Acceptance {
 };
 
 /// Judges the selection of `verification` among `candidates`. No selection: not accepted.
-/// `threads` > 1 splits the searches of the points over threads (same verdict).
+/// `threads` > 1 splits the searches of the points over threads (same verdict). `furniture`, if
+/// given, marks the verifier's source points on furniture (what stands lower than the walls: a
+/// parked car, a person); against a floor plan the ambiguity test counts them for no pose, and
+/// against a pose that puts them on the plan's walls or columns.
 Acceptance judge_selection(const Verifier& verifier, const std::vector<PoseEstimate>& candidates,
                            const VerificationResult& verification,
                            const VerificationParams& verification_params,
-                           const AcceptanceParams& params, PoseModel model, int threads = 1);
+                           const AcceptanceParams& params, PoseModel model, int threads = 1,
+                           const std::vector<char>* furniture = nullptr);
 
 }  // namespace pagor

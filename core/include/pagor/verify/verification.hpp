@@ -92,6 +92,9 @@ class Verifier {
   const std::vector<Eigen::Vector3f>& source_points() const;
   const std::vector<Eigen::Vector3f>& target_points() const;
   double build_time_ms() const;
+  /// Per source point (of source_points()): the semantic id (semantic_id) all the cloud's points
+  /// in its voxel share, 0 where they differ; empty when the source cloud has no labels.
+  const std::vector<std::uint32_t>& source_labels() const;
 
  private:
   struct Impl;
