@@ -1,5 +1,6 @@
 #include <catch2/catch.hpp>
 
+#include <Eigen/Geometry>
 #include <cstdio>
 
 #include "pagor/eval/self_similar.hpp"
@@ -313,4 +314,61 @@ TEST_CASE("the diagnosis says when the ambiguity's rival is right and the select
   CHECK(q.selected_error()->success);
   CHECK(q.acceptance().accepted);
   CHECK_FALSE(diagnose(q)->alternative_right);
+}
+
+TEST_CASE("against a floor plan, a pose's twin across a symmetric building is an alternative") {
+  // A 60 x 20 m hall, symmetric under a half turn about its middle (30, 10): outer walls and two
+  // rows of columns. The source is what a sensor at (8, 6) sees within 9 m. The pose judged is its
+  // twin across the middle, 45 m away: no shift along one axis through what it aligns reaches the
+  // truth (ambiguity_range 0 searches none), the twin candidate does.
+  PointCloud plan;
+  const auto wall = [&](Eigen::Vector2d a, Eigen::Vector2d b) {
+    const int n = static_cast<int>((b - a).norm() / 0.1);
+    for (int i = 0; i <= n; ++i) {
+      const Eigen::Vector2d p = a + (b - a) * i / n;
+      plan.points.emplace_back(static_cast<float>(p.x()), static_cast<float>(p.y()), 0.0f);
+    }
+  };
+  wall({0, 0}, {60, 0});
+  wall({60, 0}, {60, 20});
+  wall({60, 20}, {0, 20});
+  wall({0, 20}, {0, 0});
+  for (double x = 6; x < 60; x += 8)
+    for (double y : {6.0, 14.0})
+      for (int k = 0; k < 16; ++k)
+        plan.points.emplace_back(static_cast<float>(x + 0.3 * std::cos(k * M_PI / 8)),
+                                 static_cast<float>(y + 0.3 * std::sin(k * M_PI / 8)), 0.0f);
+  Transform truth = Transform::Identity();
+  truth.block<2, 2>(0, 0) = Eigen::Rotation2Dd(0.3).toRotationMatrix();
+  truth.block<2, 1>(0, 3) = Eigen::Vector2d(8, 6);
+  PointCloud scan;
+  const Transform to_sensor = truth.inverse();
+  for (const auto& p : plan.points)
+    if ((p.head<2>().cast<double>() - Eigen::Vector2d(8, 6)).norm() < 9)
+      scan.points.push_back((to_sensor * p.cast<double>().homogeneous()).head<3>().cast<float>());
+  Transform twin = Transform::Identity();
+  twin.block<2, 2>(0, 0) = -Eigen::Matrix2d::Identity();
+  twin.block<2, 1>(0, 3) = Eigen::Vector2d(60, 20);  // p -> (30, 10) - (p - (30, 10))
+  twin = twin * truth;
+
+  const Config c = preset_config("indoor");
+  const Verifier verifier(scan, plan, c.verification.voxel_size);
+  std::vector<PoseEstimate> candidates(1);
+  candidates[0].valid = true;
+  candidates[0].T_target_source = twin;
+  candidates[0].inliers = {0, 1, 2, 3};
+  VerificationResult v;
+  v.selected = 0;
+  v.scores = {
+      verifier.score(twin, c.verification.mu, ScoreKind::truncated, 1, &v.selected_distances)};
+  v.distance_bound = static_cast<float>(c.verification.mu);
+  AcceptanceParams params = c.acceptance;
+  params.ambiguity_range = 0;
+  const Acceptance a =
+      judge_selection(verifier, candidates, v, c.verification, params, c.gnc.model);
+  INFO(a.reason << "; best alternative " << a.alternative.description << " " << a.ambiguity);
+  CHECK_FALSE(a.accepted);
+  CHECK(a.ambiguity > params.max_ambiguity);
+  CHECK_THAT(a.alternative.description, Catch::StartsWith("the pose turned 180 deg"));
+  CHECK(pose_error(a.alternative.T_target_source, truth, {}).translation < 0.5);
 }

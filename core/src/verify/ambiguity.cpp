@@ -73,6 +73,11 @@ class Occupancy {
   }
 
   const Frame& frame() const { return frame_; }
+  /// The middle of the grid's horizontal extent, in the target frame.
+  Eigen::Vector2d centre() const {
+    return frame_.axes *
+           Eigen::Vector2d(frame_.lower.x() + extent(0) / 2, frame_.lower.y() + extent(1) / 2);
+  }
   double cell() const { return cell_; }
   double extent(int axis) const { return size_[axis] * cell_; }
   Eigen::Vector3i key(const Eigen::Vector3d& p) const {
@@ -402,6 +407,16 @@ AcceptanceAlternative find_best_alternative(const AmbiguityInput& in,
   for (std::size_t i : order)
     if (distinct(moved_to[i]))
       offer(moved_to[i], e[i], describe(moved_to[i], in.T_selected, peaks[i].turned));
+  // Against a floor plan, the pose's twin across the plan's middle (a building symmetric under a
+  // half turn: off both axes through what the pose aligns, so no shift along one reaches it).
+  if (in.target_complete) {
+    Transform twin = half_turn(in.T_selected, occ.centre());
+    if (distinct(twin)) {
+      double r = cmp.ratio(twin);
+      twin = climb(cmp, twin, r, occ.cell() / 2);
+      if (distinct(twin)) offer(twin, r, describe(twin, in.T_selected, true));
+    }
+  }
   return best;
 }
 
