@@ -94,7 +94,8 @@ std::vector<Option> bench_options() {
        "instead: the pyramid vs each threshold alone vs each alone with the exact maximum "
        "clique (TEASER++-like), success rates"}};
   o.insert(o.end(), more.begin(), more.end());
-  for (Option& c : config_options_for()) o.push_back(std::move(c));
+  for (Option& c : config_options_for("default, indoor when every target is a floor plan"))
+    o.push_back(std::move(c));
   return o;
 }
 
@@ -129,8 +130,11 @@ std::vector<std::string> run_keys(const PairSet& set, const Config& config,
 }  // namespace
 
 int run_bench(const Args& args) {
-  const Config config = config_from_args(args);
   const PairSet set = pair_set_from_args(args, "bench");
+  std::vector<std::string> targets;
+  for (const PairEntry& e : set.pairs)
+    targets.push_back(e.source.kind == PairSource::Kind::files ? e.source.target : "");
+  const Config config = config_for_targets(args, targets);
   if (args.has("compare-thresholds")) return run_threshold_comparison(args, config, set);
   if (args.has("resume") && !args.has("out")) throw UsageError("--resume goes with --out FILE");
   std::optional<BenchJournal> journal;

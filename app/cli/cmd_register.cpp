@@ -25,7 +25,8 @@ std::string labels_text(const LabelReading& r) {
 
 std::vector<Option> register_options() {
   std::vector<Option> o = pair_options();
-  for (Option& c : config_options_for()) o.push_back(std::move(c));
+  for (Option& c : config_options_for("default, indoor when the target is a floor plan"))
+    o.push_back(std::move(c));
   o.push_back({"json", 1, "OUT", "write the result as JSON (schema pagor.register/1)"});
   o.push_back(threads_option());
   o.push_back({"verbose", 0, "",
@@ -42,8 +43,11 @@ std::vector<Option> register_options() {
 
 int run_register(const Args& args) {
   if (args.has("json")) check_outputs({{"--json", args.get("json")}}, option_inputs(args));
-  const Config config = config_from_args(args);
-  if (args.has("correspondences")) return run_register_correspondences(args, config);
+  if (args.has("correspondences"))
+    return run_register_correspondences(args, config_from_args(args));
+  const Config config =
+      config_for_targets(args, args.has("target") ? std::vector<std::string>{args.get("target")}
+                                                  : std::vector<std::string>{});
   const auto chosen = pair_source_from_args(args);
   if (!chosen)
     throw UsageError(

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -6,6 +7,7 @@
 #include "command.hpp"
 #include "pagor/errors.hpp"
 #include "pagor/eval/synthetic.hpp"
+#include "pagor/indoor/floor_plan.hpp"
 #include "pagor/io/atomic_file.hpp"
 #include "pagor/io/kitti.hpp"
 
@@ -14,6 +16,15 @@ namespace pagor::cli {
 Config config_from_args(const Args& args) {
   const std::string preset = args.get("preset", "default");
   return args.has("config") ? load_config(args.get("config"), preset) : preset_config(preset);
+}
+
+Config config_for_targets(const Args& args, const std::vector<std::string>& targets) {
+  const bool plans =
+      !targets.empty() && std::all_of(targets.begin(), targets.end(),
+                                      [](const std::string& t) { return is_floor_plan_path(t); });
+  if (args.has("preset") || args.has("config") || !plans) return config_from_args(args);
+  std::printf("preset: indoor (the target is a floor plan; --preset or --config to choose)\n");
+  return preset_config("indoor");
 }
 
 std::string preset_list() {

@@ -16,7 +16,9 @@
 #include "common/args.hpp"
 #include "common/outputs.hpp"
 #include "common/pair_args.hpp"
+#include "pagor/config.hpp"
 #include "pagor/errors.hpp"
+#include "pagor/indoor/floor_plan.hpp"
 #include "pagor/io/atomic_file.hpp"
 #include "pagor/io/kitti.hpp"
 #include "render/headless.hpp"
@@ -69,6 +71,13 @@ AppState state_from_args(const cli::Args& args) {
     s.data = *chosen;
     s.have_data = true;
     s.base_dir.clear();  // paths given on the command line are relative to the working directory
+  }
+  // A floor-plan target without a configuration: the indoor preset, as pagor register does (the
+  // defaults' classes are not the indoor label scheme's).
+  if (!args.has("config") && !args.has("session") && s.have_data &&
+      s.data.kind == PairSource::Kind::files && is_floor_plan_path(s.data.target)) {
+    s.config = preset_config("indoor");
+    s.preset = "indoor";
   }
   // The benchmark view's KITTI pairs run on the KITTI root the user named, not on the default.
   if (args.has("kitti-root")) s.bench.kitti_root = absolute_path(args.get("kitti-root"));

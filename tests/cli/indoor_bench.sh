@@ -28,6 +28,18 @@ for v in "pyramid (5 levels)" "single 0.05" "single 0.25" "max clique 0.10"; do
   grep -q "^$v " "$WORK/cmp.log" || fail "no row '$v': $(cat "$WORK/cmp.log")"
 done
 
+# A floor-plan target without --preset or --config runs the indoor preset, and says so (the
+# defaults' classes are not the indoor scheme's: this was an error naming the class 'car').
+out=$("$PAGOR" register --source "$WORK/seq/scans/000001.bin" --target "$WORK/seq/plan.json" 2>&1) ||
+  fail "register on a plan without a preset: $out"
+echo "$out" | grep -q "^preset: indoor (the target is a floor plan" || fail "no preset line: $out"
+echo "$out" | grep -q "^verdict: " || fail "no verdict: $out"
+out=$("$PAGOR" bench --manifest "$WORK/seq/pairs.txt" 2>&1) || fail "bench without a preset: $out"
+[ "$(echo "$out" | grep -c '^preset: indoor')" -eq 1 ] || fail "bench: no preset line: $out"
+grep -E "^success" "$WORK/bench.log" > "$WORK/with_preset.txt"
+echo "$out" | grep -E "^success" | cmp -s - "$WORK/with_preset.txt" ||
+  fail "bench without a preset differs from --preset indoor: $out"
+
 out=$("$PAGOR" register --source "$WORK/seq/scans/000000.bin" --target "$DATA/bad_plan.json" --preset indoor 2>&1)
 [ $? -eq 1 ] || fail "a bad plan should exit with 1: $out"
 echo "$out" | grep -q "bad_plan.json: columns\[1\].radius: expected a number" || fail "message: $out"
