@@ -43,11 +43,10 @@ std::vector<Option> register_options() {
 
 int run_register(const Args& args) {
   if (args.has("json")) check_outputs({{"--json", args.get("json")}}, option_inputs(args));
-  if (args.has("correspondences"))
-    return run_register_correspondences(args, config_from_args(args));
   const Config config =
       config_for_targets(args, args.has("target") ? std::vector<std::string>{args.get("target")}
                                                   : std::vector<std::string>{});
+  if (args.has("correspondences")) return run_register_correspondences(args, config);
   const auto chosen = pair_source_from_args(args);
   if (!chosen)
     throw UsageError(

@@ -55,7 +55,7 @@ int run_demo(const Args& args);
 Config config_from_args(const Args& args);
 /// The same, but with neither option given and every pair's target a floor plan (`.json`,
 /// `.svg`), the indoor preset, said on stdout: the defaults' classes (car, trunk, ...) are not
-/// the indoor label scheme's.
+/// the indoor label scheme's. Some plans among other targets: UsageError (no preset fits both).
 Config config_for_targets(const Args& args, const std::vector<std::string>& targets);
 
 /// The options `config_from_args` reads: `--config FILE` and `--preset NAME` (the names from

@@ -19,10 +19,13 @@ Config config_from_args(const Args& args) {
 }
 
 Config config_for_targets(const Args& args, const std::vector<std::string>& targets) {
-  const bool plans =
-      !targets.empty() && std::all_of(targets.begin(), targets.end(),
-                                      [](const std::string& t) { return is_floor_plan_path(t); });
-  if (args.has("preset") || args.has("config") || !plans) return config_from_args(args);
+  const auto plans = static_cast<std::size_t>(std::count_if(
+      targets.begin(), targets.end(), [](const std::string& t) { return is_floor_plan_path(t); }));
+  if (args.has("preset") || args.has("config") || plans == 0) return config_from_args(args);
+  if (plans < targets.size())
+    throw UsageError(std::to_string(plans) + " of the " + std::to_string(targets.size()) +
+                     " targets are floor plans: choose the configuration with --preset or "
+                     "--config (indoor for the plans), or run the plans as a set of their own");
   std::printf("preset: indoor (the target is a floor plan; --preset or --config to choose)\n");
   return preset_config("indoor");
 }

@@ -61,10 +61,12 @@ for set in $SETS; do
       taskset -c "$CPU" timeout 600 "$OURS" register --correspondences "$corr" --ground-truth "$gt" \
         --json "$RAW/$name.ours.$rep.json" > "$RAW/$name.ours.$rep.txt" 2>&1 || echo "ours exit $? on $name rep $rep" >> "$RAW/$name.ours.$rep.txt"
       taskset -c "$CPU" "$PEER" --corr "$corr" --gt "$gt" --resolution $RES --mode max_core \
-        --reps 4 --name "$name" > "$RAW/$name.peer.$rep.txt" 2>&1
+        --reps 4 --name "$name" > "$RAW/$name.peer.$rep.txt" 2>&1 ||
+        echo "peer exit $? on $name rep $rep" >> "$RAW/$name.peer.$rep.txt"
     done
     taskset -c "$CPU" "$PEER" --corr "$corr" --gt "$gt" --resolution $RES --mode max_clique \
-      --reps 4 --name "$name" > "$RAW/$name.peerclique.txt" 2>&1
+      --reps 4 --name "$name" > "$RAW/$name.peerclique.txt" 2>&1 ||
+      echo "peer exit $? on $name (max clique)" >> "$RAW/$name.peerclique.txt"
     echo "$name load $(cut -d' ' -f1-3 /proc/loadavg)" >> "$RAW/loadavg.txt"
   done < <(problems "$set")
 done

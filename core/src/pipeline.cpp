@@ -4,6 +4,7 @@
 #include <chrono>
 
 #include "pagor/errors.hpp"
+#include "pagor/indoor/floor_plan.hpp"
 #include "pagor/verify/level_selection.hpp"
 #include "util/parallel.hpp"
 
@@ -316,16 +317,13 @@ void Pipeline::judge_acceptance() {
                                                     : "nothing to verify on: no clouds were given";
     return;
   }
-  // The verifier's source points of the label scheme's class "furniture" (the indoor scheme's:
-  // what a floor scan's higher beams passed over, IndoorParams::furniture_gap).
+  // The verifier's source points on furniture: a floor scan's cells that its higher beams passed
+  // over (prepare_floor_scan, IndoorParams::furniture_gap), whatever scheme the labels are read in.
   std::vector<char> furniture;
-  const int furniture_class = config_.label_scheme.find("furniture");
   const std::vector<std::uint32_t>& labels = verifier_->source_labels();
-  if (furniture_class >= 0 && !labels.empty()) {
-    const auto& ids = config_.label_scheme.classes[static_cast<std::size_t>(furniture_class)].ids;
+  if (std::find(labels.begin(), labels.end(), kFurnitureLabel) != labels.end()) {
     furniture.resize(labels.size());
-    for (std::size_t i = 0; i < labels.size(); ++i)
-      furniture[i] = std::find(ids.begin(), ids.end(), labels[i]) != ids.end();
+    for (std::size_t i = 0; i < labels.size(); ++i) furniture[i] = labels[i] == kFurnitureLabel;
   }
   const std::vector<char>* on_furniture = furniture.empty() ? nullptr : &furniture;
   const PoseModel model = verification_.selected >= 0

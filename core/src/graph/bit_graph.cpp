@@ -219,10 +219,9 @@ class IndependentSearch {
     const long pass = (count_bits(P.data(), w_) + 1L) * w_;
     words_ = 0;
     reduce(P);
-    if (words_ > pass && !budget_.spend(words_ / pass - 1)) {
-      current_.resize(mark);
-      return;
-    }
+    // Charged now, acted on after the node's bound (the root's is the search's upper bound) and
+    // any solution the reductions completed are recorded.
+    const bool spent = words_ > pass && !budget_.spend(words_ / pass - 1);
     int remaining = 0, cliques = 0, pick = -1, pick_degree = -1;
     std::vector<Word> Q = P, K(static_cast<std::size_t>(w_));
     for_each_bit(P.data(), w_, [&](int v) {
@@ -254,7 +253,7 @@ class IndependentSearch {
     if (root) root_bound_ = size + cliques;
     if (remaining == 0) {
       if (size > best_size_) best_size_ = size, best_ = current_;
-    } else if (size + cliques > best_size_) {
+    } else if (!spent && size + cliques > best_size_) {
       std::vector<Word> without = P;
       clear_bit(without.data(), pick);
       const Word* r = g_.row(pick);  // take `pick`: its neighbours go

@@ -61,6 +61,7 @@ class Occupancy {
         hi = hi.cwiseMax(f);
       }
     frame_.lower = lo;
+    middle_ = Eigen::Vector2d(lo.x() + hi.x(), lo.y() + hi.y()) / 2;
     for (int k = 0; k < 3; ++k) size_[k] = static_cast<int>((hi[k] - lo[k]) / cell_) + 1;
     occupied_.assign(static_cast<std::size_t>(size_[0]) * size_[1] * size_[2], 0);
     along_y_ = occupied_;
@@ -73,11 +74,8 @@ class Occupancy {
   }
 
   const Frame& frame() const { return frame_; }
-  /// The middle of the grid's horizontal extent, in the target frame.
-  Eigen::Vector2d centre() const {
-    return frame_.axes *
-           Eigen::Vector2d(frame_.lower.x() + extent(0) / 2, frame_.lower.y() + extent(1) / 2);
-  }
+  /// The middle of the structure's horizontal extent, in the target frame.
+  Eigen::Vector2d centre() const { return frame_.axes * middle_; }
   double cell() const { return cell_; }
   double extent(int axis) const { return size_[axis] * cell_; }
   Eigen::Vector3i key(const Eigen::Vector3d& p) const {
@@ -101,6 +99,7 @@ class Occupancy {
   }
   double cell_;
   Frame frame_;
+  Eigen::Vector2d middle_ = Eigen::Vector2d::Zero();  // of the structure, in the frame (u, v)
   int size_[3] = {0, 0, 0};
   std::vector<char> occupied_;  // x fastest
   std::vector<char> along_y_;   // the same, y fastest
@@ -407,8 +406,9 @@ AcceptanceAlternative find_best_alternative(const AmbiguityInput& in,
   for (std::size_t i : order)
     if (distinct(moved_to[i]))
       offer(moved_to[i], e[i], describe(moved_to[i], in.T_selected, peaks[i].turned));
-  // Against a floor plan, the pose's twin across the plan's middle (a building symmetric under a
-  // half turn: off both axes through what the pose aligns, so no shift along one reaches it).
+  // Against a flat target (a floor plan), the pose's twin across its middle (a building symmetric
+  // under a half turn: off both axes through what the pose aligns, so no shift along one reaches
+  // it).
   if (in.target_complete) {
     Transform twin = half_turn(in.T_selected, occ.centre());
     if (distinct(twin)) {

@@ -138,8 +138,10 @@ struct CliqueParams {
        "penalty d (1: where it stopped; 0: from d = 0).",
        "", Range::closed(0, 1)});
     v(&CliqueParams::exact_max_nodes,
-      {"exact_max_nodes", "Exact solver: branch-and-bound nodes over all levels, at most.", "",
-       Range::closed(1, 1e10), std::numeric_limits<double>::quiet_NaN(), true});
+      {"exact_max_nodes",
+       "Exact solver: branch-and-bound nodes over all levels, at most (a node whose reductions do "
+       "the work of several counts as several).",
+       "", Range::closed(1, 1e10), std::numeric_limits<double>::quiet_NaN(), true});
     v(&CliqueParams::exact_time_budget_ms,
       {"exact_time_budget_ms",
        "Exact solver: wall time of all levels, at most (a level may use what earlier ones left); "
@@ -168,7 +170,8 @@ struct CliqueParams {
     v(&CliqueParams::cascade_check_nodes,
       {"cascade_check_nodes",
        "Cascaded: node budget of the exact search for a larger clique that ends each "
-       "warm-started level; 0: no search.",
+       "warm-started level (a node whose reductions do the work of several counts as several); "
+       "0: no search.",
        "", Range::closed(0, 1e10), std::numeric_limits<double>::quiet_NaN(), true});
     v(&CliqueParams::max_step,
       {"max_step", "The largest gradient step tried; beyond it a step only renormalises.", "",

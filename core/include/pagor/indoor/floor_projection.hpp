@@ -42,9 +42,9 @@ struct IndoorParams {
       {"furniture_gap",
        "A scan point is on furniture (a car, a person: lower than the walls, in no plan) when a "
        "higher beam of about its azimuth returned from at least this much further. A projected "
-       "cell all of whose points are is labelled furniture: acceptance's ambiguity test counts it "
-       "for no pose, and against a pose that puts it on a wall or column. Needs the scan in its "
-       "sensor's frame; 0: off.",
+       "cell all of whose points are is labelled furniture: against the floor plan, acceptance's "
+       "ambiguity test counts it for no pose, and against a pose that puts it on a wall or "
+       "column. Needs the scan in its sensor's frame; 0: off.",
        "m", Range::closed(0, 1000)});
     v(&IndoorParams::detect_columns,
       {"detect_columns",
@@ -59,7 +59,7 @@ struct IndoorParams {
 
 /// A projected scan.
 struct FloorScan {
-  PointCloud cloud;                     ///< z = 0, labels kWallLabel / kColumnLabel
+  PointCloud cloud;                     ///< z = 0, labels kWallLabel, kColumnLabel, kFurnitureLabel
   std::vector<Eigen::Vector2d> floor;   ///< the projected points before the column outlines [m]
   std::vector<DetectedColumn> columns;  ///< columns found (indices into `floor`)
   std::size_t in_band = 0;              ///< input points within the height band
