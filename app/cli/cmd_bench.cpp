@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <thread>
 
 #include "bench_journal.hpp"
 #include "command.hpp"
@@ -112,18 +113,27 @@ std::string tool_version() {
   return std::string("pagor ") + PAGOR_VERSION + " (build " + build + ")";
 }
 
-// Each pair's result key (run_key, runner.hpp). Empty for a pair whose files cannot be read (it
-// fails when run).
-std::vector<std::string> run_keys(const PairSet& set, const Config& config,
-                                  const std::string& tool) {
-  std::vector<std::string> keys;
-  for (const PairEntry& e : set.pairs) {
-    try {
-      keys.push_back(run_key(tool, config, e));
-    } catch (const InputError&) {
-      keys.emplace_back();
-    }
+// A pair's result key (run_key, runner.hpp: the tool, the configuration and a fingerprint of the
+// pair's files); empty for a pair whose files cannot be read (it fails when run).
+std::string key_of(const PairEntry& e, const Config& config, const std::string& tool) {
+  try {
+    return run_key(tool, config, e);
+  } catch (const InputError&) {
+    return {};
   }
+}
+
+// Every pair's key, on `jobs` threads (each key its own thread's).
+std::vector<std::string> all_keys(const PairSet& set, const Config& config,
+                                  const std::string& tool, int jobs) {
+  std::vector<std::string> keys(set.pairs.size());
+  const auto n = static_cast<std::size_t>(std::max(1, jobs));
+  std::vector<std::thread> threads;
+  for (std::size_t w = 0; w < n; ++w)
+    threads.emplace_back([&, w] {
+      for (std::size_t k = w; k < keys.size(); k += n) keys[k] = key_of(set.pairs[k], config, tool);
+    });
+  for (std::thread& t : threads) t.join();
   return keys;
 }
 
@@ -134,28 +144,36 @@ int run_bench(const Args& args) {
   std::vector<std::string> targets;
   for (const PairEntry& e : set.pairs)
     targets.push_back(e.source.kind == PairSource::Kind::files ? e.source.target : "");
-  const Config config = config_for_targets(args, targets);
+  const Config config = config_for_targets(args, targets).config;
   if (args.has("compare-thresholds")) return run_threshold_comparison(args, config, set);
   if (args.has("resume") && !args.has("out")) throw UsageError("--resume goes with --out FILE");
+  const int jobs = jobs_from_args(args);
   std::optional<BenchJournal> journal;
-  std::vector<std::string> keys;
+  // Each pair's result key. A resumed run needs them all first, to know what the journal holds; a
+  // fresh one makes each as its pair starts, on the thread that runs it (hooks.prepare), so no
+  // file is read twice on the main thread before the first pair starts.
+  std::vector<std::string> keys(set.pairs.size());
+  bool resuming = false;
   if (args.has("out")) {
     std::vector<NamedPath> inputs = option_inputs(args), pairs = set_inputs(set);
     inputs.insert(inputs.end(), pairs.begin(), pairs.end());
     check_outputs({{"--out", args.get("out")}}, inputs);
     journal.emplace(args.get("out"), args.has("resume"), tool_version());
-    keys = run_keys(set, config, journal->tool());
+    resuming = journal->recorded() > 0;
+    if (resuming) keys = all_keys(set, config, journal->tool(), jobs);
   }
 
-  const int jobs = jobs_from_args(args);
   std::vector<std::unique_ptr<SetRunner>> runners =
       make_runners(set, jobs, args.get_int("threads", 1));
   std::printf("%-14s %6s %10s %11s %8s %6s %8s %10s  %s\n", "pair", "level", "t err [m]",
               "r err [deg]", "success", "bound", "verdict", "time [ms]", "diagnosis");
   const bool progress = isatty(STDERR_FILENO);  // in a log it would run into the next line
   RunSetHooks hooks;
+  hooks.prepare = [&](std::size_t k) {
+    if (journal && !resuming) keys[k] = key_of(set.pairs[k], config, journal->tool());
+  };
   hooks.reuse = [&](std::size_t k) -> std::optional<PairOutcome> {
-    const nlohmann::json* done = journal && !keys[k].empty() ? journal->find(keys[k]) : nullptr;
+    const nlohmann::json* done = resuming && !keys[k].empty() ? journal->find(keys[k]) : nullptr;
     if (!done) return std::nullopt;
     PairOutcome o = outcome_from_json_line(
         done->dump(-1, ' ', false, nlohmann::json::error_handler_t::replace), journal->partial());

@@ -58,7 +58,7 @@ std::vector<Option> landmarks_options() {
 
 int run_landmarks(const Args& args) {
   if (args.has("json")) check_outputs({{"--json", args.get("json")}}, option_inputs(args));
-  const Config config = config_from_args(args);
+  const Config config = config_from_args(args).config;
   std::string name;
   const auto t0 = std::chrono::steady_clock::now();
   const LoadedCloud loaded = load_single_cloud(args, name);

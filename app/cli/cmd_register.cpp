@@ -45,7 +45,8 @@ int run_register(const Args& args) {
   if (args.has("json")) check_outputs({{"--json", args.get("json")}}, option_inputs(args));
   const Config config =
       config_for_targets(args, args.has("target") ? std::vector<std::string>{args.get("target")}
-                                                  : std::vector<std::string>{});
+                                                  : std::vector<std::string>{})
+          .config;
   if (args.has("correspondences")) return run_register_correspondences(args, config);
   const auto chosen = pair_source_from_args(args);
   if (!chosen)

@@ -54,8 +54,10 @@ int run_self_similar(const Args& args) {
     save_cloud(s.target, (sub / "target.pcd").string());
     write_file_atomic((sub / "T_target_source.txt").string(),
                       transform_file_text(s.T_target_source));
+    // The labels' numbering is said, not left to detection (kSelfSimilarLabelScheme).
     pairs += s.name + "/source.pcd " + s.name + "/target.pcd gt=" + s.name +
-             "/T_target_source.txt name=" + s.name + "\n";
+             "/T_target_source.txt" + (p.labelled ? " scheme=" + kSelfSimilarLabelScheme : "") +
+             " name=" + s.name + "\n";
     std::fprintf(stderr, "\rwriting scenes: %zu/%zu", ++done, set.size());
   }
   std::fprintf(stderr, "\n");

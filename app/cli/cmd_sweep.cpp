@@ -99,7 +99,7 @@ std::vector<Option> sweep_options() {
 }
 
 int run_sweep_command(const Args& args) {
-  const Config base = config_from_args(args);
+  const Config base = config_from_args(args).config;
   const PairSet set = pair_set_from_args(args, "sweep");
   std::vector<NamedPath> outputs, inputs = option_inputs(args), pairs = set_inputs(set);
   inputs.insert(inputs.end(), pairs.begin(), pairs.end());

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "common/args.hpp"
+#include "common/config_args.hpp"
 #include "common/pair_args.hpp"
 #include "pagor/config.hpp"
 #include "pagor/eval/dataset.hpp"
@@ -51,20 +52,8 @@ int run_demo(const Args& args);
 
 // ---- shared helpers ------------------------------------------------------------------------
 
-/// `--config FILE` on top of `--preset NAME` (default: the defaults).
-Config config_from_args(const Args& args);
-/// The same, but with neither option given and every pair's target a floor plan (`.json`,
-/// `.svg`), the indoor preset, said on stdout: the defaults' classes (car, trunk, ...) are not
-/// the indoor label scheme's. Some plans among other targets: UsageError (no preset fits both).
-Config config_for_targets(const Args& args, const std::vector<std::string>& targets);
-
-/// The options `config_from_args` reads: `--config FILE` and `--preset NAME` (the names from
-/// preset_names(); `default_preset` when absent).
-std::vector<Option> config_options_for(const std::string& default_preset = "default");
 /// `--threads N`: threads for the stages that parallelise inside a pair.
 Option threads_option();
-/// The presets' names, "default, paper, indoor".
-std::string preset_list();
 
 /// Options selecting one cloud: `--source/--source-labels`, `--kitti-root/--sequence/--frame`,
 /// or `--synthetic`.

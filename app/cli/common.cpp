@@ -1,4 +1,3 @@
-#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -7,41 +6,10 @@
 #include "command.hpp"
 #include "pagor/errors.hpp"
 #include "pagor/eval/synthetic.hpp"
-#include "pagor/indoor/floor_plan.hpp"
 #include "pagor/io/atomic_file.hpp"
 #include "pagor/io/kitti.hpp"
 
 namespace pagor::cli {
-
-Config config_from_args(const Args& args) {
-  const std::string preset = args.get("preset", "default");
-  return args.has("config") ? load_config(args.get("config"), preset) : preset_config(preset);
-}
-
-Config config_for_targets(const Args& args, const std::vector<std::string>& targets) {
-  const auto plans = static_cast<std::size_t>(std::count_if(
-      targets.begin(), targets.end(), [](const std::string& t) { return is_floor_plan_path(t); }));
-  if (args.has("preset") || args.has("config") || plans == 0) return config_from_args(args);
-  if (plans < targets.size())
-    throw UsageError(std::to_string(plans) + " of the " + std::to_string(targets.size()) +
-                     " targets are floor plans: choose the configuration with --preset or "
-                     "--config (indoor for the plans), or run the plans as a set of their own");
-  std::printf("preset: indoor (the target is a floor plan; --preset or --config to choose)\n");
-  return preset_config("indoor");
-}
-
-std::string preset_list() {
-  std::string names;
-  for (const std::string& n : preset_names()) names += (names.empty() ? "" : ", ") + n;
-  return names;
-}
-
-std::vector<Option> config_options_for(const std::string& default_preset) {
-  return {{"config", 1, "FILE", "configuration JSON (absent keys: the preset's values)"},
-          {"preset", 1, "NAME",
-           "base configuration: " + preset_list() + " (default " + default_preset +
-               "; paper: the published one)"}};
-}
 
 Option threads_option() {
   return {"threads", 1, "N",

@@ -8,17 +8,15 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <vector>
 
 #include "common/allocator.hpp"
 #include "common/args.hpp"
+#include "common/config_args.hpp"
 #include "common/outputs.hpp"
 #include "common/pair_args.hpp"
 #include "pagor/config.hpp"
 #include "pagor/errors.hpp"
-#include "pagor/indoor/floor_plan.hpp"
 #include "pagor/io/atomic_file.hpp"
 #include "pagor/io/kitti.hpp"
 #include "render/headless.hpp"
@@ -36,7 +34,6 @@ std::vector<cli::Option> studio_options() {
       {"correspondences", 1, "FILE",
        "a matcher's correspondences (px py pz qx qy qz [weight [inlier]] per line), as pagor "
        "register --correspondences: alone, or verified on --source/--target"},
-      {"config", 1, "FILE", "configuration JSON"},
       {"session", 1, "FILE", "session JSON (data, parameters, camera, layers, level)"},
       {"headless", 0, "", "render offscreen through OSMesa (no display needed)"},
       {"screenshot", 1, "PNG", "headless: write the rendered UI to this PNG"},
@@ -54,30 +51,28 @@ std::vector<cli::Option> studio_options() {
        "headless: give up waiting for the computation after S seconds (default 600)"},
   };
   o.insert(o.end(), more.begin(), more.end());
+  for (cli::Option& c : cli::config_options_for("default, indoor when the target is a floor plan"))
+    o.push_back(std::move(c));
   return o;
 }
 
 AppState state_from_args(const cli::Args& args) {
   AppState s;
   if (args.has("session")) load_session(args.get("session"), s);
-  if (args.has("config")) {
-    s.config = load_config(args.get("config"));
-    std::ifstream in(args.get("config"));
-    std::ostringstream text;
-    text << in.rdbuf();
-    s.preset = preset_of(text.str());
-  }
   if (const auto chosen = cli::pair_source_from_args(args)) {
     s.data = *chosen;
     s.have_data = true;
     s.base_dir.clear();  // paths given on the command line are relative to the working directory
   }
-  // A floor-plan target without a configuration: the indoor preset, as pagor register does (the
-  // defaults' classes are not the indoor label scheme's).
-  if (!args.has("config") && !args.has("session") && s.have_data &&
-      s.data.kind == PairSource::Kind::files && is_floor_plan_path(s.data.target)) {
-    s.config = preset_config("indoor");
-    s.preset = "indoor";
+  // The configuration as pagor register chooses it (a floor-plan target without --config or
+  // --preset: the indoor preset); a session keeps its own unless one is given.
+  if (args.has("config") || args.has("preset") || (!args.has("session") && s.have_data)) {
+    cli::ChosenConfig c =
+        cli::config_for_targets(args, s.have_data && s.data.kind == PairSource::Kind::files
+                                          ? std::vector<std::string>{s.data.target}
+                                          : std::vector<std::string>{});
+    s.config = std::move(c.config);
+    s.preset = std::move(c.preset);
   }
   // The benchmark view's KITTI pairs run on the KITTI root the user named, not on the default.
   if (args.has("kitti-root")) s.bench.kitti_root = absolute_path(args.get("kitti-root"));

@@ -103,7 +103,8 @@ void Studio::open_benchmark_now() {
   // A session reopens its set in the view it was saved in (the pair view of an opened row, say).
   const MainView view = state_.main_view;
   try {
-    open_benchmark(state_, bench_);
+    BenchPanelState panel = bench_panel_state(state_);
+    open_benchmark(panel, bench_);
     state_.main_view = view;
   } catch (const std::exception& e) {  // a file the studio cannot use: say so, keep running
     state_.bench.open = false;
@@ -297,7 +298,8 @@ void Studio::layout_windows(const WorkerStatus& status, float W, float H) {
   const float x = left + kSplitter, w = std::max(1.0f, W - x);
   if (state_.main_view == MainView::benchmark) {
     place(x, 0, w, H);
-    if (ImGui::Begin("Benchmark", nullptr, kPanelFlags)) benchmark_view(state_, bench_, *this);
+    if (ImGui::Begin("Benchmark", nullptr, kPanelFlags))
+      benchmark_view(bench_panel_state(state_), bench_, *this);
     ImGui::End();
   } else {
     pair_view(x, w, H);
@@ -362,7 +364,7 @@ void Studio::frame(int width, int height) {
   const float W = static_cast<float>(width), H = static_cast<float>(height) - kStatusHeight;
   layout_windows(status, W, H);
   if (state_.show_help) help_overlay(W, H);
-  file_dialog(state_, *this);
+  file_dialog(state_.dialog, *this);
   // One undo step per finished edit (a slider drag is one step), valid configurations only.
   if (!ImGui::IsAnyItemActive() && config_error_.empty()) params_.commit(state_.config);
 

@@ -61,6 +61,10 @@ class Studio : public StudioActions {
   void notify(Message message) override;
   /// Opens a user's file (state/open_file.hpp) and re-runs what it changed.
   void open_file(const std::string& path, FilePurpose purpose) override;
+  /// Opens the studio's file browser (panels/file_dialog.cpp).
+  void browse(FilePurpose purpose, const std::string& current) override;
+  /// Makes `entry` the data (show_pair), with `truth` as its inline ground truth, and runs it.
+  void open_pair(const PairEntry& entry, const std::optional<Transform>& truth) override;
   /// Puts text on ImGui's clipboard (the system's in the window) and says so.
   void copy_text(const std::string& text, const std::string& what) override;
   /// Files dropped on the window (the window's drop callback; the tests call it the same way):

@@ -1,9 +1,10 @@
 // The studio and the user's files: opening them (the file browser, a drop on the window, the
-// recent list) and the clipboard.
+// recent list, a pair of a set) and the clipboard.
 
 #include <imgui.h>
 
 #include "pagor/errors.hpp"
+#include "panels/panels.hpp"
 #include "state/open_file.hpp"
 #include "studio.hpp"
 
@@ -76,6 +77,16 @@ void Studio::forget_unreadable(const WorkerStatus& status) {
         forget_file(state_, p);
   opened_paths_.clear();
   opened_request_ = 0;
+}
+
+void Studio::browse(FilePurpose purpose, const std::string& current) {
+  open_file_dialog(state_, purpose, current);
+}
+
+void Studio::open_pair(const PairEntry& entry, const std::optional<Transform>& truth) {
+  show_pair(state_, entry);
+  if (truth) state_.inline_truth = truth;
+  submit_data();
 }
 
 void Studio::copy_text(const std::string& text, const std::string& what) {

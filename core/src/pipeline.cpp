@@ -187,6 +187,7 @@ void Pipeline::run_stage(Stage stage) {
       };
       both_clouds(extract);
       warn_if_numberings_differ();
+      warn_if_numbering_unsure();
       // Class-agnostic landmarks when the pair is unlabelled or class-poor; both clouds get
       // them, so the class lists stay aligned for matching.
       if (needs_fallback(source_, target_, source_landmarks_, target_landmarks_,
@@ -267,6 +268,14 @@ void Pipeline::warn_if_numberings_differ() {
   target_landmarks_.warnings.push_back("labels in numbering '" + t.scheme.name +
                                        "', the source's in '" + s.scheme.name +
                                        "' (each cloud is read in its own)");
+}
+
+// A detected numbering that another explains almost as well is a guess the user should settle.
+void Pipeline::warn_if_numbering_unsure() {
+  for (LandmarkSet* set : {&source_landmarks_, &target_landmarks_}) {
+    const std::string doubt = numbering_doubt(set->labels);
+    if (!doubt.empty()) set->warnings.push_back(doubt);
+  }
 }
 
 GncParams Pipeline::gnc_params() const {

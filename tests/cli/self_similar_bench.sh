@@ -16,6 +16,10 @@ for f in pairs.txt corridor-1/source.pcd corridor-1+objects-xyz/target.pcd \
   [ -s "$WORK/set/$f" ] || fail "missing $f"
 done
 [ "$(grep -vc '^#' "$WORK/set/pairs.txt")" -eq 16 ] || fail "the manifest should list 16 pairs"
+# The labelled scenes name their numbering (detection takes a corridor for the learning map).
+[ "$(grep -c ' scheme=semantickitti-train ' "$WORK/set/pairs.txt")" -eq 8 ] ||
+  fail "the 8 labelled scenes should name their numbering: $(cat "$WORK/set/pairs.txt")"
+grep -- '-xyz/' "$WORK/set/pairs.txt" | grep -q 'scheme=' && fail "an x y z scene names a numbering"
 
 "$PAGOR" bench --manifest "$WORK/set/pairs.txt" --out "$WORK/rows.jsonl" >"$WORK/bench.log" 2>&1 ||
   fail "bench: $(cat "$WORK/bench.log")"

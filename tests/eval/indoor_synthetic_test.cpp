@@ -13,6 +13,21 @@
 
 using namespace pagor;
 
+namespace {
+
+// The first `scans` scans of the car park of `seed`, written under `dir` and read back as
+// `pagor bench` reads them.
+PairSet car_park(const test::TempDir& dir, std::uint64_t seed, int scans) {
+  IndoorSceneParams scene;
+  scene.seed = seed;
+  write_indoor_sequence(dir.file("seq"), scene, scans);
+  PairSet set = read_pair_manifest(dir.file("seq/pairs.txt"));
+  REQUIRE(set.pairs.size() == static_cast<std::size_t>(scans));
+  return set;
+}
+
+}  // namespace
+
 TEST_CASE("the same seed gives the same building and scans") {
   IndoorSceneParams p;
   p.seed = 4;
@@ -93,11 +108,7 @@ TEST_CASE("re-localization on a generated sequence: the pyramid and its baseline
   // pyramid 13/16, best single threshold 12/16 (bench/README.md: 100/120 on the 120-scan
   // sequence); the floor sits below.
   test::TempDir dir;
-  IndoorSceneParams scene;
-  scene.seed = 2;
-  write_indoor_sequence(dir.file("seq"), scene, 16);
-  const PairSet set = read_pair_manifest(dir.file("seq/pairs.txt"));
-  REQUIRE(set.pairs.size() == 16);
+  const PairSet set = car_park(dir, 2, 16);
 
   const Config config = preset_config("indoor");
   std::vector<Variant> variants = threshold_variants(config);
@@ -189,10 +200,7 @@ TEST_CASE("car park verdicts: furniture on a wall is no evidence for a shifted p
   // it 19 (a car's side put on the outer wall by a shift of a column spacing made right poses
   // look rivalled); no wrong pose accepted either way. The floors sit below.
   test::TempDir dir;
-  IndoorSceneParams scene;
-  scene.seed = 1;
-  write_indoor_sequence(dir.file("seq"), scene, 24);
-  const PairSet set = read_pair_manifest(dir.file("seq/pairs.txt"));
+  const PairSet set = car_park(dir, 1, 24);
   const auto verdicts = [&](double gap) {
     Config config = preset_config("indoor");
     config.indoor.furniture_gap = gap;

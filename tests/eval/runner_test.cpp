@@ -14,6 +14,7 @@
 #include "pagor/errors.hpp"
 #include "pagor/eval/runner.hpp"
 #include "pagor/eval/sweep.hpp"
+#include "support/outcome_checks.hpp"
 #include "support/test_util.hpp"
 
 using namespace pagor;
@@ -45,12 +46,6 @@ Config synthetic_config() {
   return c;
 }
 
-bool same_result(const PairOutcome& a, const PairOutcome& b) {
-  return a.selected_level == b.selected_level && a.success == b.success &&
-         a.accepted == b.accepted && a.level_success == b.level_success && a.score == b.score &&
-         a.diagnosis == b.diagnosis;
-}
-
 }  // namespace
 
 TEST_CASE(
@@ -68,7 +63,7 @@ TEST_CASE(
   CHECK(second.ran[static_cast<std::size_t>(Stage::verification)]);
   Pipeline fresh(c);
   const PairOutcome want = run_pair(fresh, set.pairs[0]);
-  CHECK(same_result(second, want));
+  test::check_same_outcome(second, want);
 
   const PairOutcome missing = runner.run(3, c);
   CHECK_FALSE(missing.loaded);
@@ -132,7 +127,7 @@ TEST_CASE("a sweep on the runner equals a benchmark run per setting") {
     const std::vector<PairOutcome> want = run_set(fresh, settings[k].config);
     for (std::size_t i = 0; i < want.size(); ++i) {
       INFO("setting " << k << ", pair " << i);
-      CHECK(same_result(swept.settings[k].outcomes[i], want[i]));
+      test::check_same_outcome(swept.settings[k].outcomes[i], want[i]);
     }
   }
   // Each pair's landmarks ran once for both settings; the missing pair never loads.
@@ -288,7 +283,7 @@ TEST_CASE("pairs on two worker threads give the outcomes of one, rows in set ord
     INFO("pair " << i);
     CHECK(got[i].name == want[i].name);
     CHECK(got[i].loaded == want[i].loaded);
-    CHECK(same_result(got[i], want[i]));
+    test::check_same_outcome(got[i], want[i]);
     if (want[i].loaded)
       CHECK(without_timings(got[i].report_json) == without_timings(want[i].report_json));
   }
@@ -322,7 +317,7 @@ TEST_CASE("the workers with nothing left lend themselves to the calls still runn
   const PairOutcome a = one.run(0, synthetic_config());
   const std::atomic<int> two{2};
   const PairOutcome b = other.run(0, synthetic_config(), nullptr, &two);
-  CHECK(same_result(a, b));
+  test::check_same_outcome(a, b);
   CHECK(without_timings(a.report_json) == without_timings(b.report_json));
   // A kept pipeline re-run with other threads too.
   Config changed = synthetic_config();
@@ -360,6 +355,40 @@ TEST_CASE("parallel pairs: reused outcomes are not run, a cancel stops them, job
   CHECK_THROWS_WITH(parse_jobs("2x", "--jobs"), Catch::Contains("'2x'"));
 }
 
+TEST_CASE("prepare runs once for each pair that runs, on the thread that runs it, before it ends") {
+  const PairSet set = synthetic_set();
+  for (int jobs : {1, 2}) {
+    INFO("jobs " << jobs);
+    std::vector<std::unique_ptr<SetRunner>> runners = make_runners(set, jobs);
+    RunSetHooks hooks;
+    hooks.reuse = [](std::size_t i) -> std::optional<PairOutcome> {
+      if (i != 0) return std::nullopt;  // pair 0 is taken from an earlier run
+      PairOutcome o;
+      o.loaded = true;
+      o.timed = false;
+      return o;
+    };
+    std::vector<std::thread::id> prepared_on(set.pairs.size());  // each entry one pair's
+    std::vector<int> prepared(set.pairs.size(), 0);
+    const std::thread::id caller = std::this_thread::get_id();
+    hooks.prepare = [&](std::size_t i) {
+      ++prepared[i];
+      prepared_on[i] = std::this_thread::get_id();
+    };
+    std::vector<std::size_t> seen_prepared;  // at `finished`, what prepare(i) wrote is there
+    hooks.finished = [&](std::size_t i, const PairOutcome&) {
+      if (prepared[i] == 1) seen_prepared.push_back(i);
+    };
+    run_set(runners, synthetic_config(), hooks);
+    CHECK(prepared[0] == 0);  // reused: not prepared
+    for (std::size_t i = 1; i < set.pairs.size(); ++i) {
+      CHECK(prepared[i] == 1);
+      CHECK((prepared_on[i] == caller) == (jobs == 1));  // the workers' with jobs > 1
+    }
+    CHECK(seen_prepared.size() == set.pairs.size() - 1);
+  }
+}
+
 TEST_CASE("a sweep on two jobs equals the sweep on one") {
   const PairSet set = synthetic_set();
   SweepGrid grid;
@@ -377,7 +406,7 @@ TEST_CASE("a sweep on two jobs equals the sweep on one") {
     for (std::size_t i = 0; i < set.pairs.size(); ++i) {
       INFO("setting " << k << ", pair " << i);
       CHECK(two.settings[k].outcomes[i].name == one.settings[k].outcomes[i].name);
-      CHECK(same_result(two.settings[k].outcomes[i], one.settings[k].outcomes[i]));
+      test::check_same_outcome(two.settings[k].outcomes[i], one.settings[k].outcomes[i]);
     }
   const auto strip = [](std::string lines) {  // the wall and mean times aside
     std::string out;

@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include "pagor/errors.hpp"
+#include "support/outcome_checks.hpp"
 
 using namespace pagor;
 
@@ -18,22 +19,6 @@ std::vector<PairOutcome> fresh_bench(const PairSet& set, const Config& config) {
   return out;
 }
 
-void check_equal(const PairOutcome& swept, const PairOutcome& fresh) {
-  INFO("pair " << fresh.name);
-  REQUIRE(swept.loaded == fresh.loaded);
-  CHECK(swept.selected_level == fresh.selected_level);
-  CHECK(swept.success == fresh.success);
-  CHECK(swept.upper_bound == fresh.upper_bound);
-  CHECK(swept.accepted == fresh.accepted);
-  CHECK(swept.level_success == fresh.level_success);
-  CHECK(swept.margin == fresh.margin);
-  REQUIRE(swept.error.has_value() == fresh.error.has_value());
-  if (fresh.error) {
-    CHECK(swept.error->translation == fresh.error->translation);
-    CHECK(swept.error->rotation_deg == fresh.error->rotation_deg);
-  }
-}
-
 void check_sweep_matches_bench(const PairSet& set, const std::vector<SweepSetting>& settings) {
   const SweepResult swept = run_sweep(set, settings);
   REQUIRE(swept.settings.size() == settings.size());
@@ -42,7 +27,7 @@ void check_sweep_matches_bench(const PairSet& set, const std::vector<SweepSettin
     const std::vector<PairOutcome> fresh = fresh_bench(set, settings[k].config);
     REQUIRE(swept.settings[k].outcomes.size() == fresh.size());
     for (std::size_t p = 0; p < fresh.size(); ++p)
-      check_equal(swept.settings[k].outcomes[p], fresh[p]);
+      test::check_same_outcome(swept.settings[k].outcomes[p], fresh[p]);
     const BenchmarkSummary s = summarize(fresh);
     CHECK(swept.settings[k].summary.successes == s.successes);
     CHECK(swept.settings[k].summary.upper_bound == s.upper_bound);

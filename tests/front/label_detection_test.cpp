@@ -91,6 +91,26 @@ TEST_CASE("read_labels: auto takes the detected numbering, none and missing labe
   CHECK(read_labels(street, custom).mismatch.empty());
 }
 
+TEST_CASE("a numbering another explains almost as well is a warning, not a silent guess") {
+  // A corridor in the training numbering whose pillars (trunk 15) are half the points (the
+  // self-similar generator's): read as the learning map, trunk becomes vegetation, the commonest
+  // class of a driving scan, and the floor (road 8) a motorcyclist; the two nearly tie.
+  const PointCloud corridor =
+      cloud_of({{15, 7400}, {12, 4400}, {8, 1100}, {13, 240}, {0, 1280}, {18, 170}});
+  const LabelReading r = read_labels(corridor, builtin_label_scheme("auto"));
+  CHECK(r.scheme.name == "semantickitti-learning");
+  CHECK(r.detection.runner_up == "semantickitti-train");
+  CHECK(r.detection.margin < 1.0);
+  CHECK_THAT(numbering_doubt(r),
+             Catch::Contains("read in numbering 'semantickitti-learning'") &&
+                 Catch::Contains("'semantickitti-train' fits them almost as well") &&
+                 Catch::Contains("set label_scheme"));
+  // Set by hand, the numbering is the user's word; a street is far from a close call.
+  CHECK(
+      numbering_doubt(read_labels(corridor, builtin_label_scheme("semantickitti-train"))).empty());
+  CHECK(numbering_doubt(read_labels(cloud_of(kStreet), builtin_label_scheme("auto"))).empty());
+}
+
 #ifdef PAGOR_HAVE_SEMREG_DATA
 TEST_CASE("every semreg-dev cloud is detected as the learning map, and rewritten, as the others") {
   for (const char* pair : {"03", "04", "05", "06", "07", "08", "09", "10", "11", "12"})

@@ -14,6 +14,7 @@
 #include "runners/bench_worker.hpp"
 #include "runners/pair_queue.hpp"
 #include "studio_test_util.hpp"
+#include "support/outcome_checks.hpp"
 #include "ui_driver.hpp"
 #include "widgets/bench_plots.hpp"
 #include "widgets/plot_export.hpp"
@@ -147,24 +148,10 @@ void check_same_outcomes(const std::vector<studio::BenchRow>& got,
                          const std::vector<studio::BenchRow>& want) {
   REQUIRE(got.size() == want.size());
   for (std::size_t i = 0; i < got.size(); ++i) {
-    const PairOutcome& g = got[i].outcome;
-    const PairOutcome& w = want[i].outcome;
-    INFO("row " << i << ", pair " << w.name);
+    INFO("row " << i);
     CHECK(got[i].done);
     CHECK(got[i].current);
-    CHECK(g.name == w.name);
-    CHECK(g.loaded == w.loaded);
-    CHECK(g.load_error == w.load_error);
-    CHECK(g.success == w.success);
-    CHECK(g.accepted == w.accepted);
-    CHECK(g.selected_level == w.selected_level);
-    CHECK(g.level_success == w.level_success);
-    CHECK(((std::isnan(g.score) && std::isnan(w.score)) || g.score == w.score));
-    REQUIRE(g.error.has_value() == w.error.has_value());
-    if (w.error) {
-      CHECK(g.error->translation == w.error->translation);
-      CHECK(g.error->rotation_deg == w.error->rotation_deg);
-    }
+    test::check_same_outcome(got[i].outcome, want[i].outcome);
   }
 }
 

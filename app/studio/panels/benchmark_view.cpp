@@ -84,8 +84,8 @@ bool shown(const BenchRow& r, const BenchViewState& v) {
   return true;
 }
 
-void source_controls(AppState& state, BenchWorker& bench, StudioActions& actions) {
-  BenchViewState& v = state.bench;
+void source_controls(BenchPanelState& state, BenchWorker& bench, StudioActions& actions) {
+  BenchViewState& v = state.view;
   ui::radio("manifest", &v.source, BenchSource::manifest,
             "a generic manifest: SOURCE TARGET [gt=...] per line (pagor bench --manifest)");
   ImGui::SameLine();
@@ -98,7 +98,7 @@ void source_controls(AppState& state, BenchWorker& bench, StudioActions& actions
   ui::input_path("file##bench_path", &v.path, "path of the manifest, pairs file or results file");
   ImGui::SameLine();
   if (ui::button("...##bench_path", ImVec2(0, 0), "choose the file in a browser"))
-    open_file_dialog(state, FilePurpose::bench, v.path);
+    actions.browse(FilePurpose::bench, v.path);
   ImGui::PopItemWidth();
   if (v.source == BenchSource::kitti_pairs) {
     ui::input_text("KITTI root##bench", &v.kitti_root, "directory holding sequences/");
@@ -109,7 +109,7 @@ void source_controls(AppState& state, BenchWorker& bench, StudioActions& actions
   ImGui::SameLine();
   if (ui::button("load##bench_config", ImVec2(0, 0),
                  "use the file's parameters in the session (absent keys: the preset's)"))
-    actions.open_file(resolve_path(state, v.config_path), FilePurpose::config);
+    actions.open_file(resolve_path(state.base_dir, v.config_path), FilePurpose::config);
   if (ui::button("open and run##bench", ImVec2(0, 0),
                  v.source == BenchSource::results
                      ? "read the results file and show its rows as recorded (nothing re-runs)"
@@ -267,11 +267,10 @@ void row_cells(const BenchRow& r) {
 }
 
 // Opens row `i` in the pair view: the set's pair, or the pair a results row names.
-void open_row(AppState& state, const PairSet& set, bool results, const BenchWorker& bench,
-              const BenchRow& row, std::size_t i, StudioActions& actions) {
+void open_row(const PairSet& set, bool results, const BenchWorker& bench, const BenchRow& row,
+              std::size_t i, StudioActions& actions) {
   if (!results) {
-    if (i >= set.pairs.size()) return;
-    show_pair(state, set.pairs[i]);
+    if (i < set.pairs.size()) actions.open_pair(set.pairs[i], std::nullopt);
   } else {
     const PairOutcome& o = row.outcome;
     const auto entry = result_pair(o, bench.origin());
@@ -280,16 +279,15 @@ void open_row(AppState& state, const PairSet& set, bool results, const BenchWork
                                     o.source_name + ", " + o.target_name + ")"));
       return;
     }
-    show_pair(state, *entry);
     // A file pair keeps the truth its row recorded; a KITTI pair has the sequence's.
-    if (entry->source.kind == PairSource::Kind::files) state.inline_truth = o.T_target_source_gt;
+    actions.open_pair(*entry, entry->source.kind == PairSource::Kind::files
+                                  ? o.T_target_source_gt
+                                  : std::optional<Transform>());
   }
-  actions.submit_data();
 }
 
-void rows_table(AppState& state, const std::vector<BenchRow>& rows, BenchWorker& bench,
+void rows_table(const BenchViewState& v, const std::vector<BenchRow>& rows, BenchWorker& bench,
                 StudioActions& actions) {
-  const BenchViewState& v = state.bench;
   std::vector<std::size_t> order;
   for (std::size_t i = 0; i < rows.size(); ++i)
     if (shown(rows[i], v)) order.push_back(i);
@@ -319,7 +317,7 @@ void rows_table(AppState& state, const std::vector<BenchRow>& rows, BenchWorker&
     ImGui::TableNextColumn();
     if (!r.current) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.55f, 0.55f, 0.6f, 1));
     const std::string label = o.name + "##bench_row" + std::to_string(i);
-    if (ui::selectable(label.c_str(), false)) open_row(state, set, results, bench, r, i, actions);
+    if (ui::selectable(label.c_str(), false)) open_row(set, results, bench, r, i, actions);
     ui::tooltip(results ? "open this pair (its files as the results name them, with the ground "
                           "truth they recorded) in the pair view with these parameters"
                         : "open this pair in the pair view with these parameters");
@@ -338,15 +336,15 @@ void rows_table(AppState& state, const std::vector<BenchRow>& rows, BenchWorker&
 
 }  // namespace
 
-void open_benchmark(AppState& state, BenchWorker& bench) {
-  BenchViewState& v = state.bench;
-  const std::string path = resolve_path(state, v.path);
+void open_benchmark(BenchPanelState& state, BenchWorker& bench) {
+  BenchViewState& v = state.view;
+  const std::string path = resolve_path(state.base_dir, v.path);
   if (v.path.empty()) throw InputError("benchmark: name a file to open");
   if (v.source == BenchSource::results) {
     bench.show_results(read_bench_results(path), path);
   } else {
     PairSet set = v.source == BenchSource::kitti_pairs
-                      ? kitti_pair_set(resolve_path(state, v.kitti_root), v.sequence, path)
+                      ? kitti_pair_set(resolve_path(state.base_dir, v.kitti_root), v.sequence, path)
                       : read_pair_manifest(path);
     bench.set_budget(std::size_t(std::max(1, v.budget_mib)) << 20);
     bench.set_jobs(v.jobs);
@@ -356,22 +354,22 @@ void open_benchmark(AppState& state, BenchWorker& bench) {
   state.main_view = MainView::benchmark;
 }
 
-void benchmark_view(AppState& state, BenchWorker& bench, StudioActions& actions) {
+void benchmark_view(BenchPanelState state, BenchWorker& bench, StudioActions& actions) {
   const BenchStatus st = bench.status();
   const std::vector<BenchRow> rows = bench.rows();
   source_controls(state, bench, actions);
   if (!bench.origin().empty()) ImGui::Text("open: %s", bench.origin().c_str());
   indoor_preset_hint(state.config, state.preset, bench.plan() != nullptr, "bench", actions);
-  if (bench.can_rerun()) progress_and_cache(state.bench, bench, st);
+  if (bench.can_rerun()) progress_and_cache(state.view, bench, st);
   std::vector<PairOutcome> outcomes;
   for (const BenchRow& r : rows)
     if (r.done && r.current) outcomes.push_back(r.outcome);
   const BenchmarkSummary summary = summarize(outcomes);
   summary_line(summary);
-  table_controls(state.bench);
-  rows_table(state, rows, bench, actions);
+  table_controls(state.view);
+  rows_table(state.view, rows, bench, actions);
   const float w = ImGui::GetContentRegionAvail().x;
-  const Exports to{state.bench.plot_path, actions};
+  const Exports to{state.view.plot_path, actions};
   plot_with_exports(to, "rates", rates_plot(summary), w * 0.5f - 4);
   ImGui::SameLine();
   plot_with_exports(to, "picking", picking_plot(summary), w * 0.5f - 4);
@@ -382,7 +380,7 @@ void benchmark_view(AppState& state, BenchWorker& bench, StudioActions& actions)
     plot_with_exports(to, "trajectory", trajectory_plot(sequence, plan.get()), w,
                       kTrajectoryHeight);
   }
-  ui::input_text("export path##bench", &state.bench.plot_path,
+  ui::input_text("export path##bench", &state.view.plot_path,
                  "plots are written to PATH-<plot>.png and .csv");
   ImGui::PushID("sweep_section");
   if (ui::header("Sweep", true)) {

@@ -12,9 +12,9 @@
 
 namespace pagor::studio {
 
-/// Opens what `state.bench` names in `bench` with `state.config`. Throws pagor::Error (an
+/// Opens what `state.view` names in `bench` with `state.config`. Throws pagor::Error (an
 /// unreadable pairs or results file) naming the file.
-void open_benchmark(AppState& state, BenchWorker& bench);
+void open_benchmark(BenchPanelState& state, BenchWorker& bench);
 
 /// The progress bar's text: "3/40 pairs, 1.90 pairs/s, 19 s left (running); 1.58 s with 2 jobs"
 /// while a pass runs; after it, the pairs and the rate, "(cancelled)" when it was, and no time

@@ -63,14 +63,13 @@ void refresh(FileDialogState& f) {
   });
 }
 
-void choose(AppState& s, StudioActions& actions, const std::string& path) {
-  s.dialog.open = false;
-  actions.open_file(path, s.dialog.purpose);
+void choose(FileDialogState& f, StudioActions& actions, const std::string& path) {
+  f.open = false;
+  actions.open_file(path, f.purpose);
 }
 
 // The list of entries; a click selects a file or enters a directory, a double click opens.
-void entries(AppState& s, StudioActions& actions) {
-  FileDialogState& f = s.dialog;
+void entries(FileDialogState& f, StudioActions& actions) {
   refresh(f);
   const auto found = f.listing;  // a click may change the directory
   const float h =
@@ -90,7 +89,7 @@ void entries(AppState& s, StudioActions& actions) {
         f.name.clear();
       } else {
         f.name = name;
-        if (ImGui::IsMouseDoubleClicked(0)) choose(s, actions, path);
+        if (ImGui::IsMouseDoubleClicked(0)) choose(f, actions, path);
       }
       break;  // the listing changed under the loop
     }
@@ -102,8 +101,7 @@ void entries(AppState& s, StudioActions& actions) {
 
 }  // namespace
 
-void file_dialog(AppState& s, StudioActions& actions) {
-  FileDialogState& f = s.dialog;
+void file_dialog(FileDialogState& f, StudioActions& actions) {
   if (!f.open) return;
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.5f), ImGuiCond_Appearing,
@@ -119,7 +117,7 @@ void file_dialog(AppState& s, StudioActions& actions) {
     ui::input_path("directory##dialog", &f.directory, "The directory listed.");
     ui::input_text("filter##dialog", &f.filter, "Only names containing this.");
     ImGui::PopItemWidth();
-    entries(s, actions);
+    entries(f, actions);
     ImGui::PushItemWidth(-180);
     ui::input_text("file##dialog", &f.name,
                    "The file to open (a name in the directory above, or a whole path).");
@@ -127,7 +125,7 @@ void file_dialog(AppState& s, StudioActions& actions) {
     ImGui::SameLine();
     ImGui::BeginDisabled(f.name.empty() && f.purpose != FilePurpose::kitti_root);
     if (ui::button("open##dialog", ImVec2(0, 0), "Open the file (or a double click)."))
-      choose(s, actions,
+      choose(f, actions,
              f.name.empty()                   ? f.directory
              : fs::path(f.name).is_absolute() ? f.name
                                               : (fs::path(f.directory) / f.name).string());

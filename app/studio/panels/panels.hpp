@@ -30,9 +30,9 @@ struct SessionFiles {
 void step_pair(AppState& state, int delta, StudioActions& actions);
 /// Opens the file browser for `purpose`, in the directory of `current` (a path the user wrote).
 void open_file_dialog(AppState& state, FilePurpose purpose, const std::string& current);
-/// The file browser, while `state.dialog.open`: directories and the files of its purpose; a pick
+/// The file browser, while `dialog.open`: directories and the files of its purpose; a pick
 /// goes to StudioActions::open_file.
-void file_dialog(AppState& state, StudioActions& actions);
+void file_dialog(FileDialogState& dialog, StudioActions& actions);
 /// The range the epsilon sliders span for a TRIM kind (fixed, log scale).
 std::pair<double, double> epsilon_range(TrimKind trim);
 
@@ -80,7 +80,8 @@ void status_bar(const WorkerStatus& status, const Snapshot* snapshot, const Mess
 /// clouds the stages that had nothing to work on are listed apart as skipped, and verification is
 /// named as the selection it was (by S over the correspondences).
 std::string run_stages_text(const Snapshot& snapshot);
-/// The benchmark view: the open pairs set, its table, rates and plots, and sweeps.
-void benchmark_view(AppState& state, BenchWorker& bench, StudioActions& actions);
+/// The benchmark view: the open pairs set, its table, rates and plots, and sweeps; a row opens its
+/// pair through StudioActions::open_pair.
+void benchmark_view(BenchPanelState state, BenchWorker& bench, StudioActions& actions);
 
 }  // namespace pagor::studio

@@ -23,7 +23,7 @@ void plot_with_exports(const Exports& to, const char* id, const Plot& plot, floa
 /// The sweep over the open set (sweep_panel.cpp): one or two parameters by key path and their
 /// values, run, progress, whether the result still matches the parameters and the set, the table
 /// of settings ("apply" sets only the swept values), the flip view between two settings, plots.
-void sweep_section(AppState& state, BenchWorker& bench, const BenchStatus& status,
+void sweep_section(BenchPanelState& state, BenchWorker& bench, const BenchStatus& status,
                    StudioActions& actions);
 
 }  // namespace pagor::studio

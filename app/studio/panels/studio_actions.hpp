@@ -3,6 +3,7 @@
 /// What a panel may ask of the studio beyond editing the state it is given: runs, the parameter
 /// history, files, and the one channel for messages to the user. The Studio implements it.
 
+#include <optional>
 #include <string>
 
 #include "state/app_state.hpp"
@@ -36,6 +37,11 @@ class StudioActions {
   /// Opens a user's file as `purpose` says (state/open_file.hpp), re-runs what it changed and
   /// remembers it among the recent files; the outcome goes to notify().
   virtual void open_file(const std::string& path, FilePurpose purpose) = 0;
+  /// Opens the file browser for `purpose`, in the directory of `current` (a path the user wrote).
+  virtual void browse(FilePurpose purpose, const std::string& current) = 0;
+  /// Shows `entry` in the pair view and runs it; `truth`, when given, is its ground truth (a
+  /// results row's, for a pair without a truth file).
+  virtual void open_pair(const PairEntry& entry, const std::optional<Transform>& truth) = 0;
   /// Puts `text` on the clipboard; notify() says what (`what`, e.g. "the pose as a 4x4 matrix").
   virtual void copy_text(const std::string& text, const std::string& what) = 0;
 };

@@ -107,8 +107,9 @@ std::string outcome_text(const PairOutcome& o) {
 }
 
 // The pairs whose outcome differs between settings A and B; a click opens the pair with B.
-void flip_view(AppState& state, const SweepResult& r, const PairSet& set, StudioActions& actions) {
-  BenchViewState& v = state.bench;
+void flip_view(BenchPanelState& state, const SweepResult& r, const PairSet& set,
+               StudioActions& actions) {
+  BenchViewState& v = state.view;
   const int n = static_cast<int>(r.settings.size());
   v.flip_a = std::clamp(v.flip_a, 0, n - 1);
   v.flip_b = std::clamp(v.flip_b, 0, n - 1);
@@ -148,8 +149,7 @@ void flip_view(AppState& state, const SweepResult& r, const PairSet& set, Studio
     if (ui::selectable(label.c_str(), false) && i < set.pairs.size()) {
       try {
         set_fields_json(state.config, b.setting.values);
-        show_pair(state, set.pairs[i]);
-        actions.submit_data();
+        actions.open_pair(set.pairs[i], std::nullopt);
       } catch (const Error& e) {
         actions.notify(Message::error(e.what()));
       }
@@ -163,7 +163,7 @@ void flip_view(AppState& state, const SweepResult& r, const PairSet& set, Studio
 }
 
 // One row per setting with its rates; "apply" sets the swept values only.
-void settings_table(AppState& state, const SweepResult& r, StudioActions& actions) {
+void settings_table(Config& config, const SweepResult& r, StudioActions& actions) {
   // The figures' columns as wide as their text; the setting (two parameters' values in a 2-D
   // sweep) takes the rest and wraps, so the last column is never cut.
   if (!ImGui::BeginTable(
@@ -198,7 +198,7 @@ void settings_table(AppState& state, const SweepResult& r, StudioActions& action
                          "Set this setting's swept values in the session's parameters; every "
                          "other parameter stays as it is.")) {
       try {
-        set_fields_json(state.config, x.setting.values);
+        set_fields_json(config, x.setting.values);
         actions.submit_config();
       } catch (const Error& e) {
         actions.notify(Message::error(e.what()));
@@ -212,13 +212,13 @@ void settings_table(AppState& state, const SweepResult& r, StudioActions& action
       ImGui::GetStyle().Colors[ImGuiCol_TextDisabled], true);
 }
 
-void run_controls(AppState& state, BenchWorker& bench, const BenchStatus& st,
+void run_controls(BenchPanelState& state, BenchWorker& bench, const BenchStatus& st,
                   StudioActions& actions) {
-  BenchViewState& v = state.bench;
-  ui::input_text("find##sweep", &state.search.sweep,
+  BenchViewState& v = state.view;
+  ui::input_text("find##sweep", &state.sweep_search,
                  "Narrow the parameter lists below to the keys or descriptions that hold every "
                  "word typed here (case-insensitive).");
-  dimension_fields("dim1", v.sweep_path, v.sweep_values, state.config, state.search.sweep);
+  dimension_fields("dim1", v.sweep_path, v.sweep_values, state.config, state.sweep_search);
   bool two = !v.sweep_path2.empty();
   if (ui::checkbox("second parameter (2-D)##sweep", &two,
                    "Sweep every combination of two parameters.")) {
@@ -227,7 +227,7 @@ void run_controls(AppState& state, BenchWorker& bench, const BenchStatus& st,
     if (!two) v.sweep_path2.clear();
   }
   if (two)
-    dimension_fields("dim2", v.sweep_path2, v.sweep_values2, state.config, state.search.sweep);
+    dimension_fields("dim2", v.sweep_path2, v.sweep_values2, state.config, state.sweep_search);
   if (ui::button("run sweep##sweep", ImVec2(0, 0),
                  "Every combination over the open set, reusing each pair's cached stages, with the "
                  "view's jobs (pairs at once).")) {
@@ -253,7 +253,7 @@ void run_controls(AppState& state, BenchWorker& bench, const BenchStatus& st,
 
 }  // namespace
 
-void sweep_section(AppState& state, BenchWorker& bench, const BenchStatus& st,
+void sweep_section(BenchPanelState& state, BenchWorker& bench, const BenchStatus& st,
                    StudioActions& actions) {
   run_controls(state, bench, st, actions);
   const auto record = bench.sweep_result();
@@ -265,12 +265,12 @@ void sweep_section(AppState& state, BenchWorker& bench, const BenchStatus& st,
   else
     ui::figure("the sweep below is of these parameters and this set", kGood);
   ImGui::PushStyleVar(ImGuiStyleVar_Alpha, stale.empty() ? 1.0f : 0.55f);
-  settings_table(state, r, actions);
+  settings_table(state.config, r, actions);
   if (ui::header("Flip view: pairs that changed between two settings##sweep", true))
     flip_view(state, r, bench.set(), actions);
   const float w = ImGui::GetContentRegionAvail().x;
   const Plot line = sweep_line_plot(r);
-  const Exports to{state.bench.plot_path, actions};
+  const Exports to{state.view.plot_path, actions};
   plot_with_exports(to, "sweep", sweep_success_plot(r), line.series.empty() ? w : w * 0.5f - 4);
   if (!line.series.empty()) {
     ImGui::SameLine();

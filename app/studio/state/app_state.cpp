@@ -4,7 +4,6 @@
 #include <cctype>
 #include <filesystem>
 #include <fstream>
-#include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "pagor/errors.hpp"
@@ -56,8 +55,16 @@ bool is_indoor(const PairSource& data) {
   return data.kind == PairSource::Kind::files && is_floor_plan_path(data.target);
 }
 
+std::string resolve_path(const std::string& base_dir, const std::string& path) {
+  return resolve(path, std::filesystem::path(base_dir));
+}
+
 std::string resolve_path(const AppState& s, const std::string& path) {
-  return resolve(path, std::filesystem::path(s.base_dir));
+  return resolve_path(s.base_dir, path);
+}
+
+BenchPanelState bench_panel_state(AppState& s) {
+  return {s.bench, s.config, s.preset, s.search.sweep, s.main_view, s.base_dir};
 }
 
 PairSource resolved_data(const AppState& s) {
@@ -127,16 +134,6 @@ bool step_pair_index(AppState& state, int delta) {
   state.pair_index = state.pair_index < 0 ? 0 : std::clamp(state.pair_index + delta, 0, n - 1);
   show_pair(state, state.pairs.pairs[static_cast<std::size_t>(state.pair_index)]);
   return true;
-}
-
-std::string preset_of(const std::string& config_json, const std::string& fallback) {
-  const auto j = nlohmann::json::parse(config_json, nullptr, false);
-  if (j.is_object() && j.contains("preset") && j["preset"].is_string()) {
-    const std::string name = j["preset"].get<std::string>();
-    const auto names = preset_names();
-    if (std::find(names.begin(), names.end(), name) != names.end()) return name;
-  }
-  return fallback;
 }
 
 namespace {

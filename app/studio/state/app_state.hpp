@@ -209,6 +209,21 @@ struct AppState : SessionState, UiState {
   int pair_index = -1;   ///< the pair of `pairs` shown, -1: none of them
 };
 
+/// The part of the state the benchmark view draws and edits (panels/benchmark_view.hpp): its
+/// settings, the parameters its set runs with and their preset, the sweep's search field and which
+/// main view is shown. Its relative paths are taken from `base_dir`.
+struct BenchPanelState {
+  BenchViewState& view;
+  Config& config;
+  std::string& preset;
+  std::string& sweep_search;
+  MainView& main_view;
+  const std::string& base_dir;
+};
+
+/// That part of `state`.
+BenchPanelState bench_panel_state(AppState& state);
+
 /// Writes the session's part of the state as a session file (schema pagor.session/1). Throws
 /// pagor::InputError.
 void save_session(const SessionState& state, const std::string& path);
@@ -220,6 +235,8 @@ void load_session(const std::string& path, AppState& state);
 
 /// A path the user wrote, resolved against `base_dir` when relative.
 std::string resolve_path(const AppState& state, const std::string& path);
+/// The same against a base directory (empty: the working directory).
+std::string resolve_path(const std::string& base_dir, const std::string& path);
 
 /// `data` with its relative paths resolved against `base_dir`.
 PairSource resolved_data(const AppState& state);
@@ -247,9 +264,6 @@ bool step_pair_index(AppState& state, int delta);
 /// `path` made absolute and normal (relative to the working directory); unchanged when empty or
 /// when the working directory cannot be read.
 std::string absolute_path(const std::string& path);
-
-/// The preset a configuration document names (its top-level "preset"), else `fallback`.
-std::string preset_of(const std::string& config_json, const std::string& fallback = "default");
 
 /// Adds `path` (made absolute) to the front of `state.recent` (at most 12, no duplicates) and
 /// writes the list to `state.recent_file` when one is set (errors are ignored: a list that cannot

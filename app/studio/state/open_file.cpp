@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "common/config_args.hpp"
 #include "pagor/errors.hpp"
 #include "pagor/indoor/floor_plan.hpp"
 
@@ -166,7 +167,7 @@ Opened open_file_into(AppState& s, const std::string& path, FilePurpose purpose)
       std::ostringstream text;
       text << in.rdbuf();
       s.config = load_config(p);
-      s.preset = preset_of(text.str());
+      s.preset = cli::preset_of(text.str());
       o.config = true, o.what = "parameters from " + p;
       return o;
     }

@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
+#include "common/config_args.hpp"
 #include "pagor/errors.hpp"
 #include "pagor/io/atomic_file.hpp"
 #include "pagor/io/file_input.hpp"
@@ -279,7 +280,7 @@ void load_session(const std::string& path, AppState& s) {
 
   if (const json* c = find(j, "config")) {
     next.config = parse_config(c->dump(), path + " (config)");
-    next.preset = preset_of(c->dump());
+    next.preset = cli::preset_of(c->dump());
   }
   if (const json* d = find(j, "data")) {
     next.data = read_data(*d, path + ": data", next.inline_truth);

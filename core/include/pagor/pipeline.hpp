@@ -170,6 +170,7 @@ class Pipeline {
   /// Whether the landmarks take part: clouds, and no matches or fused ones.
   bool uses_landmarks() const;
   void warn_if_numberings_differ();
+  void warn_if_numbering_unsure();
   void judge_acceptance();
   /// Calls f(cloud, landmarks) for the source and the target, in parallel with threads > 1.
   template <class F>

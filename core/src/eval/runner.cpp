@@ -224,6 +224,7 @@ std::vector<PairOutcome> run_set(SetRunner& runner, const Config& config,
       out[i] = std::move(*reused);
       --progress.to_run;
     } else {
+      if (hooks.prepare) hooks.prepare(i);
       out[i] = runner.run(i, config, hooks.cancel);
       ++progress.ran;
       if (hooks.finished) hooks.finished(i, out[i]);
@@ -369,6 +370,7 @@ std::vector<PairOutcome> run_set(std::vector<std::unique_ptr<SetRunner>>& runner
   run_parallel(
       static_cast<int>(runners.size()), to_run,
       [&](int w, std::size_t i, const std::atomic<int>* lent, const std::atomic<bool>* stop) {
+        if (hooks.prepare) hooks.prepare(i);
         out[i] = runners[static_cast<std::size_t>(w)]->run(i, config, stop, lent);
       },
       [&](std::size_t i) {

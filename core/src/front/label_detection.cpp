@@ -174,4 +174,16 @@ LabelReading read_labels(const PointCloud& cloud, const LabelScheme& configured)
   return r;
 }
 
+std::string numbering_doubt(const LabelReading& r) {
+  const LabelDetection& d = r.detection;
+  if (!r.automatic || r.scheme.ignores_labels() || d.runner_up.empty() ||
+      d.margin >= kMismatchMargin)
+    return {};
+  char margin[32];
+  std::snprintf(margin, sizeof(margin), "%.2f", d.margin);
+  return "labels read in numbering '" + d.scheme + "', but '" + d.runner_up +
+         "' fits them almost as well (" + margin +
+         " nats a point apart): set label_scheme if they are in that one";
+}
+
 }  // namespace pagor

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <map>
 #include <numeric>
+#include <optional>
 
 #include "front/point_features.hpp"
 #include "pagor/errors.hpp"
@@ -221,25 +222,31 @@ double estimate_spacing(const std::vector<Eigen::Vector3f>& points,
     sample.push_back(points[subset ? static_cast<std::size_t>((*subset)[i]) : i]);
   if (sample.size() < 2) return 0.0;
   const std::size_t stride = std::max<std::size_t>(1, sample.size() / kQueries);
-  // Each query's nearest neighbour on a grid whose cell grows until more than half of the queries
-  // have theirs within one cell: the others are farther, so the median is then exact. The first
-  // cell is an eighth of the spacing of a square surface of the sample's extent.
+  // Each query's nearest neighbour within a radius that grows until more than half of the queries
+  // have theirs within it: the others are farther, so the median is then exact. The first radius
+  // is an eighth of the spacing of a square surface of the sample's extent. The grid's cells are
+  // kRadii radii wide, so that the doublings rarely rebuild it: a nearest point within the radius
+  // is the same at any cell at least as wide, and so is the median; cells of one radius cost
+  // twice the time in building the grid's many small cells (KITTI's classes).
+  constexpr double kRadii = 4;
   Eigen::Vector3f lo = sample[0], hi = lo;
   for (const auto& p : sample) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
-  double cell = std::max(1e-3, static_cast<double>((hi - lo).maxCoeff()) /
-                                   std::sqrt(static_cast<double>(sample.size())) / 8);
+  double radius = std::max(1e-3, static_cast<double>((hi - lo).maxCoeff()) /
+                                     std::sqrt(static_cast<double>(sample.size())) / 8);
   std::vector<float> d;
+  std::optional<RadiusGrid> grid;
   for (;;) {
-    const RadiusGrid grid(sample, cell);
+    if (!grid || static_cast<double>(grid->cell()) < radius) grid.emplace(sample, radius * kRadii);
+    const auto r = static_cast<float>(radius);  // at most the cell, as nearest() asks
     d.clear();
     std::size_t found = 0;
     for (std::size_t i = 0; i < sample.size(); i += stride) {
-      const auto [index, d2] = grid.nearest(sample[i], grid.cell(), static_cast<int>(i));
+      const auto [index, d2] = grid->nearest(sample[i], r, static_cast<int>(i));
       d.push_back(index >= 0 ? std::sqrt(d2) : HUGE_VALF);
       found += index >= 0;
     }
     if (found > d.size() / 2) break;
-    cell *= 2;
+    radius *= 2;
   }
   std::nth_element(d.begin(), d.begin() + static_cast<long>(d.size() / 2), d.end());
   return d[d.size() / 2] / std::sqrt(static_cast<double>(thin));

@@ -96,9 +96,14 @@ struct SetProgress {
 /// "12/40 pairs, 1.9 pairs/s, 15 s left" (the rate and time left "n/a" while undefined).
 std::string progress_text(const SetProgress& progress);
 
-/// What a caller of run_set may do around each pair. Every hook is called on the calling thread,
-/// one call at a time, also when the pairs run on several worker threads.
+/// What a caller of run_set may do around each pair. Every hook but `prepare` is called on the
+/// calling thread, one call at a time, also when the pairs run on several worker threads.
 struct RunSetHooks {
+  /// Just before pair i runs, on the thread that runs it: with jobs > 1 a worker thread, and calls
+  /// for different pairs at once. Work per pair that need not hold up the others (the result keys
+  /// of `pagor bench --out` fingerprint the pair's files here); what it writes for pair i is
+  /// visible to `finished(i)` and `done(i)`. Not called for a reused pair.
+  std::function<void(std::size_t i)> prepare;
   /// Before pair i runs: an outcome to use instead (a result taken from an earlier run, with
   /// `timed = false`), or nullopt to run it. With jobs > 1 it is asked for every pair first.
   std::function<std::optional<PairOutcome>(std::size_t i)> reuse;

@@ -24,6 +24,10 @@
 
 namespace pagor {
 
+/// The numbering of the scenes' labels. Detection cannot be trusted with it here: a corridor whose
+/// pillars (trunk) are half the points reads to it like a driving scan in the learning map.
+inline const std::string kSelfSimilarLabelScheme = "semantickitti-train";
+
 /// The kind of repetition.
 enum class SelfSimilarKind { corridor, facades, sliding_street, symmetric_hall };
 

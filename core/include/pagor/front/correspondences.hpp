@@ -19,7 +19,6 @@ struct CorrespondenceParams {
   int fpfh_max_per_class = 300;
   double fpfh_ratio = 1.0;
   double shape_scale = 0.5;
-  ///< score e^-1
   bool fuse_matches = false;
 
   template <class V>

@@ -53,4 +53,10 @@ struct LabelReading {
 /// than a nat per point).
 LabelReading read_labels(const PointCloud& cloud, const LabelScheme& configured);
 
+/// For labels whose numbering was detected (`auto`) when another built-in one explains them
+/// almost as well (within a nat per point, where a numbering shifted by one usually loses several
+/// on real scans): a warning naming both and how to settle it; empty otherwise. Class shares far
+/// from a driving scan's (a corridor of pillars labelled trunk) can make the wrong one win.
+std::string numbering_doubt(const LabelReading& reading);
+
 }  // namespace pagor
