@@ -244,6 +244,31 @@ TEST_CASE("a pose a period off is ambiguous, naming the alternative and how far 
   CHECK(b.ambiguity > 2.0);
 }
 
+TEST_CASE("a tiny mu against a wide target: the ambiguity's grids stay bounded and still judge") {
+  // mu / 2 = 50 um over a corridor tens of metres long would be ~1e17 cells: the grid is coarsened
+  // to fit and the pose a period off is still found ambiguous.
+  const SelfSimilarScene s = self_similar(SelfSimilarKind::corridor, true);
+  const Transform& off = s.look_alikes[2];
+  const Config c = default_config();
+  VerificationParams tiny = c.verification;
+  tiny.mu = 1e-4;
+  const Verifier verifier(s.source, s.target, c.verification.voxel_size);
+  std::vector<PoseEstimate> candidates(1);
+  candidates[0].valid = true;
+  candidates[0].T_target_source = off;
+  candidates[0].inliers = {0, 1, 2, 3, 4, 5};
+  VerificationResult v;
+  v.selected = 0;
+  v.scores = {verifier.score(off, tiny.mu, ScoreKind::truncated, 1, &v.selected_distances)};
+  v.distance_bound = static_cast<float>(tiny.mu);
+  AcceptanceParams params = ambiguity_only();
+  const Acceptance a = judge_selection(verifier, candidates, v, tiny, params, PoseModel::se3);
+  INFO(a.reason);
+  CHECK_FALSE(a.accepted);
+  CHECK_THAT(a.reason, Catch::StartsWith("ambiguous: "));
+  CHECK(a.ambiguity > 2.0);
+}
+
 TEST_CASE("the same corridor with a car, a sign and a bench is accepted at its true pose") {
   const SelfSimilarScene s = self_similar(SelfSimilarKind::corridor, true);
   const Acceptance a = judge_pose(s, s.T_target_source, AcceptanceParams{});

@@ -62,7 +62,16 @@ class Occupancy {
       }
     frame_.lower = lo;
     middle_ = Eigen::Vector2d(lo.x() + hi.x(), lo.y() + hi.y()) / 2;
-    for (int k = 0; k < 3; ++k) size_[k] = static_cast<int>((hi[k] - lo[k]) / cell_) + 1;
+    // A cell so fine that the grid would pass kMaxCells (a tiny mu against a wide target) is
+    // coarsened until it fits: the correlation then finds its peaks on the coarser grid.
+    const Eigen::Vector3d span = hi - lo;
+    for (;;) {
+      const Eigen::Vector3d n = (span / cell_).array().floor() + 1.0;
+      const double cells = n.prod();
+      if (cells <= kMaxCells) break;
+      cell_ *= std::max(1.01, std::cbrt(cells / kMaxCells));
+    }
+    for (int k = 0; k < 3; ++k) size_[k] = static_cast<int>(span[k] / cell_) + 1;
     occupied_.assign(static_cast<std::size_t>(size_[0]) * size_[1] * size_[2], 0);
     along_y_ = occupied_;
     for (std::size_t i = 0; i < points.size(); ++i)
@@ -79,9 +88,10 @@ class Occupancy {
   double cell() const { return cell_; }
   double extent(int axis) const { return size_[axis] * cell_; }
   Eigen::Vector3i key(const Eigen::Vector3d& p) const {
-    const Eigen::Vector3d f = (frame_.to_frame(p) - frame_.lower) / cell_;
-    return {static_cast<int>(std::floor(f.x())), static_cast<int>(std::floor(f.y())),
-            static_cast<int>(std::floor(f.z()))};
+    // Clamped: a point far off the grid (a wild pose) stays off it without overflowing an int.
+    const Eigen::Vector3d f =
+        ((frame_.to_frame(p) - frame_.lower) / cell_).array().floor().cwiseMax(-1e9).cwiseMin(1e9);
+    return f.cast<int>();
   }
   int size(int axis) const { return size_[axis]; }
   /// The cells along `axis` (0 or 1) through `k`, one flag each (size(axis) of them), or null
@@ -97,6 +107,7 @@ class Occupancy {
   std::size_t index(const Eigen::Vector3i& k) const {
     return (static_cast<std::size_t>(k.z()) * size_[1] + k.y()) * size_[0] + k.x();
   }
+  static constexpr double kMaxCells = 1 << 24;  // 16 MB a grid, 2 grids
   double cell_;
   Frame frame_;
   Eigen::Vector2d middle_ = Eigen::Vector2d::Zero();  // of the structure, in the frame (u, v)
@@ -185,9 +196,16 @@ class Footprint {
     if (target.empty() || everywhere) return;
     Eigen::Vector2f lo = target[0].head<2>(), hi = lo;
     for (const auto& p : target) lo = lo.cwiseMin(p.head<2>()), hi = hi.cwiseMax(p.head<2>());
+    // As the occupancy: a cell too fine for the target's extent is coarsened until the grid fits.
+    const Eigen::Vector2d span = (hi - lo).cast<double>();
+    for (;;) {
+      const double cells = (std::floor(span.x() / cell_) + 3) * (std::floor(span.y() / cell_) + 3);
+      if (cells <= kMaxCells) break;
+      cell_ *= std::max(1.01, std::sqrt(cells / kMaxCells));
+    }
     lower_ = lo.cast<double>() - Eigen::Vector2d::Constant(cell_);
-    nx_ = static_cast<int>((hi.x() - lo.x()) / cell_) + 3;
-    ny_ = static_cast<int>((hi.y() - lo.y()) / cell_) + 3;
+    nx_ = static_cast<int>(span.x() / cell_) + 3;
+    ny_ = static_cast<int>(span.y() / cell_) + 3;
     std::vector<char> held(static_cast<std::size_t>(nx_) * ny_, 0);
     for (const auto& p : target) {
       const auto [x, y] = key(p.cast<double>());
@@ -208,9 +226,11 @@ class Footprint {
 
  private:
   std::pair<int, int> key(const Eigen::Vector3d& q) const {
-    return {static_cast<int>(std::floor((q.x() - lower_.x()) / cell_)),
-            static_cast<int>(std::floor((q.y() - lower_.y()) / cell_))};
+    const Eigen::Vector2d f =
+        ((q.head<2>() - lower_) / cell_).array().floor().cwiseMax(-1e9).cwiseMin(1e9);
+    return {static_cast<int>(f.x()), static_cast<int>(f.y())};
   }
+  static constexpr double kMaxCells = 1 << 24;
   double cell_;
   bool everywhere_;
   Eigen::Vector2d lower_ = Eigen::Vector2d::Zero();
