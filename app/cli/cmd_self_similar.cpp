@@ -3,6 +3,8 @@
 // objects, labelled and not; eval/self_similar.hpp) as a pairs set that `pagor bench` scores
 // beside the real sets: where a wrong pose can look as aligned as the right one.
 
+#include <unistd.h>
+
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -45,6 +47,7 @@ int run_self_similar(const Args& args) {
       "): each the source, the target and their relative pose T_target_source.\n"
       "# Run: pagor bench --manifest " + manifest.string() + "\n";
   std::size_t done = 0;
+  const bool progress = isatty(STDERR_FILENO);  // in a log it would run into one line
   for (const SelfSimilarParams& p : set) {
     const SelfSimilarScene s = make_self_similar_scene(p);
     const fs::path sub = dir / s.name;
@@ -58,9 +61,10 @@ int run_self_similar(const Args& args) {
     pairs += s.name + "/source.pcd " + s.name + "/target.pcd gt=" + s.name +
              "/T_target_source.txt" + (p.labelled ? " scheme=" + kSelfSimilarLabelScheme : "") +
              " name=" + s.name + "\n";
-    std::fprintf(stderr, "\rwriting scenes: %zu/%zu", ++done, set.size());
+    ++done;
+    if (progress) std::fprintf(stderr, "\rwriting scenes: %zu/%zu", done, set.size());
   }
-  std::fprintf(stderr, "\n");
+  if (progress) std::fprintf(stderr, "\n");
   write_file_atomic(manifest.string(), pairs);
   std::printf("wrote %zu scenes to %s\nrun: pagor bench --manifest %s\n", set.size(),
               dir.string().c_str(), manifest.string().c_str());
