@@ -2,7 +2,7 @@
 written as ``pagor bench --out`` writes them (one result line per pair, in set order, through a
 journal: a killed run loses no finished pair, ``--resume`` continues it, one writer at a time).
 
-    python3 -m pagor bench --manifest M [--config C] [--jobs N | --scheduler ADDRESS] --out F [--resume]
+    python3 -m pagor bench --manifest M [--config C] [--preset P] [--jobs N | --scheduler ADDRESS] --out F [--resume]
     python3 -m pagor bench --kitti-root ROOT [--sequence 00] --pairs FILE ... --out F
 
 Errors are one line naming the file or argument, exit status 1; wrong usage exits with 2."""
@@ -27,7 +27,11 @@ def _parser() -> argparse.ArgumentParser:
     what.add_argument("--kitti-root", metavar="DIR", help="KITTI root holding sequences/")
     bench.add_argument("--sequence", default="00", help="KITTI sequence (default 00)")
     bench.add_argument("--pairs", metavar="FILE", help="KITTI pairs file (with --kitti-root)")
-    bench.add_argument("--config", metavar="FILE", help="configuration JSON")
+    bench.add_argument("--config", metavar="FILE",
+                       help="configuration JSON (absent keys: the preset's values)")
+    bench.add_argument("--preset", metavar="NAME", choices=_pagor.preset_names(),
+                       help="base configuration: " + ", ".join(_pagor.preset_names())
+                       + " (default default; paper: the published one)")
     where = bench.add_mutually_exclusive_group()
     where.add_argument("--jobs", metavar="N", help="pairs at once on this machine (default 1; "
                        "'auto': the cores)")
@@ -74,7 +78,7 @@ def bench(args: argparse.Namespace, parser: argparse.ArgumentParser) -> int:
             parser.error(f"--out {args.out} is an input of the run")
     pairs = (sets.KittiPairs(args.kitti_root, args.pairs, args.sequence) if args.kitti_root
              else args.manifest)
-    spec, text = sets._spec(pairs, args.scheduler is not None), sets.config_json(args.config)
+    spec, text = sets._spec(pairs, args.scheduler is not None), sets.config_json(args.config, args.preset)
     names = sets.pair_keys(spec, text)
     journal = Journal(args.out, args.resume)
     try:

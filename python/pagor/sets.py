@@ -159,16 +159,20 @@ def run_shard(spec: Spec, indices: List[int], config_json: str, threads: int = 1
     return _call(_pagor.bench_pairs, spec, list(indices), config_json, threads)
 
 
-def config_json(config: Any) -> str:
+def config_json(config: Any, preset: Optional[str] = None) -> str:
     """The configuration as the JSON text the workers parse: None (the default), a dict (the
-    JSON configuration's keys) or the path of a JSON configuration file (as ``--config``)."""
+    JSON configuration's keys) or the path of a JSON configuration file (as ``--config``).
+    ``preset`` (as ``--preset``) fills the keys the configuration leaves out; a 'preset' key of
+    its own wins, as in ``pagor bench``."""
     if config is None or isinstance(config, dict):
+        if preset is not None:
+            config = {"preset": preset, **(config or {})}
         return _pagor.config_json(config)
     if isinstance(config, (str, bytes, os.PathLike)):
         path = os.fsdecode(os.fspath(config))
         if not os.path.exists(path):
             raise FileNotFoundError(2, "config: no such file", path)
-        return _pagor.config_file_json(path)
+        return _pagor.config_file_json(path, preset or "default")
     raise TypeError("config: expected None, a dict or a JSON file's path, got "
                     f"{type(config).__name__}")
 

@@ -74,6 +74,28 @@ def test_the_module_writes_the_tools_file_and_resumes(tmp_path, manifest, one_jo
     assert [untimed(json.loads(r)) for r in resumed] == [untimed(r) for r in one_job]
 
 
+def test_a_preset_gives_the_tools_lines_under_that_preset(tmp_path, manifest, one_job):
+    """--preset paper over the semreg-dev configuration, as `pagor bench --preset paper`: the
+    file's absent keys come from the paper's preset, in both."""
+    from bench_rows import cli_rows
+    if not os.environ.get("PAGOR_CLI"):
+        pytest.skip("PAGOR_CLI is not set (ctest sets it)")
+    tool = cli_rows(manifest, tmp_path / "cli.jsonl", "--preset", "paper")
+    out = tmp_path / "rows.jsonl"
+    bench("--manifest", manifest, "--config", SEMREG_CONFIG, "--preset", "paper", "--jobs", 2,
+          "--out", out, "--quiet")
+    rows = read_rows(out)
+    assert [untimed(r, build=True) for r in rows] == [untimed(r, build=True) for r in tool]
+    # Another configuration than without the preset (the run key hashes it), the one a file
+    # naming the preset gives.
+    assert all(a["run_key"] != b["run_key"] for a, b in zip(rows, one_job))
+    named = pagor.run_pairs(manifest, {"preset": "paper", **json.loads(SEMREG_CONFIG.read_text())},
+                            progress=False)
+    assert [r["run_key"] for r in rows] == [r["run_key"] for r in named]
+    bad = bench("--manifest", manifest, "--preset", "bogus", "--out", out, check=False)
+    assert bad.returncode == 2 and "--preset" in bad.stderr and "paper" in bad.stderr
+
+
 def test_the_lock_and_bad_input_name_what_is_wrong(tmp_path, manifest):
     out = tmp_path / "rows.jsonl"
     held = pagor._pagor.FileLock(str(out), "a test")

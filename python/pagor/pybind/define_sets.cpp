@@ -116,8 +116,10 @@ void define_sets(py::module_& m) {
       py::arg("config"));
   m.def(
       "config_file_json",
-      [](const std::string& path) { return config_to_json(load_config(path), -1); },
-      py::arg("path"));
+      [](const std::string& path, const std::string& base_preset) {
+        return config_to_json(load_config(path, base_preset), -1);
+      },
+      py::arg("path"), py::arg("base_preset") = "default");
   m.def(
       "progress_text",
       [](std::size_t done, std::size_t total, std::size_t ran, std::size_t to_run,
