@@ -66,8 +66,8 @@ class Occupancy {
     // coarsened until it fits: the correlation then finds its peaks on the coarser grid.
     const Eigen::Vector3d span = hi - lo;
     for (;;) {
-      const Eigen::Vector3d n = (span / cell_).array().floor() + 1.0;
-      const double cells = n.prod();
+      const Eigen::Vector3d across = (span / cell_).array().floor() + 1.0;
+      const double cells = across.prod();
       if (cells <= kMaxCells) break;
       cell_ *= std::max(1.01, std::cbrt(cells / kMaxCells));
     }
