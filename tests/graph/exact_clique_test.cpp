@@ -386,10 +386,10 @@ TEST_CASE("the search for a larger clique finds one whenever it exists, from any
     const std::vector<int> degree = detail::level_degrees(g, 0);
     for (int v = 0; v < n; ++v) {
       const std::vector<int> start = detail::extend_clique(view, {v}, degree, 1, marks);
-      bool optimal = false;
-      const std::vector<int> got = detail::larger_clique(g, 0, start, 1000000, optimal);
+      bool proven = false;
+      const std::vector<int> got = detail::larger_clique(g, 0, start, 1000000, proven);
       INFO("seed " << seed << ", start vertex " << v << ", start size " << start.size());
-      CHECK(optimal);
+      CHECK(proven);
       CHECK(is_clique(g, 0, got));
       CHECK(got.size() == maximum);
     }
@@ -397,19 +397,19 @@ TEST_CASE("the search for a larger clique finds one whenever it exists, from any
   // A 5-cycle: its maximum clique (an edge) is proved only by the search (a greedy colouring
   // needs 3 colours); a 5-cycle with one chord and a triangle: the colouring proves it.
   const PyramidGraph cycle = test::graph_from_lists({{1, 4}, {0, 2}, {1, 3}, {2, 4}, {0, 3}});
-  bool optimal = false;
-  CHECK(detail::larger_clique(cycle, 0, {0, 1}, 1000, optimal).size() == 2);
-  CHECK(optimal);
+  bool proven = false;
+  CHECK(detail::larger_clique(cycle, 0, {0, 1}, 1000, proven).size() == 2);
+  CHECK(proven);
   const PyramidGraph chord = test::graph_from_lists({{1, 2, 4}, {0, 2}, {0, 1, 3}, {2, 4}, {0, 3}});
-  CHECK(detail::larger_clique(chord, 0, {3, 4}, 1000, optimal).size() == 3);
-  CHECK(optimal);
-  CHECK(detail::larger_clique(chord, 0, {0, 1, 2}, 1000, optimal) == std::vector<int>{0, 1, 2});
-  CHECK(optimal);
+  CHECK(detail::larger_clique(chord, 0, {3, 4}, 1000, proven).size() == 3);
+  CHECK(proven);
+  CHECK(detail::larger_clique(chord, 0, {0, 1, 2}, 1000, proven) == std::vector<int>{0, 1, 2});
+  CHECK(proven);
   // The octahedron (every vertex but its opposite one adjacent): 4-regular, so each vertex's
   // subproblem (a 4-cycle) survives pruning and needs search nodes, but three colours suffice and
   // prove its triangles maximum. With no node budget only the colouring can prove it.
   const PyramidGraph octahedron = test::graph_from_lists(
       {{2, 3, 4, 5}, {2, 3, 4, 5}, {0, 1, 4, 5}, {0, 1, 4, 5}, {0, 1, 2, 3}, {0, 1, 2, 3}});
-  CHECK(detail::larger_clique(octahedron, 0, {0, 2, 4}, 0, optimal) == std::vector<int>{0, 2, 4});
-  CHECK(optimal);
+  CHECK(detail::larger_clique(octahedron, 0, {0, 2, 4}, 0, proven) == std::vector<int>{0, 2, 4});
+  CHECK(proven);
 }

@@ -332,17 +332,17 @@ bool is_clique(const Graph& g, const std::vector<int>& vertices, Marks& marks) {
 }
 
 /// Exact search for a clique larger than `best` on `level` (the exact solver, started from
-/// `best`): the largest clique found, `best` itself when there is none; `optimal` tells whether
+/// `best`): the largest clique found, `best` itself when there is none; `proven` tells whether
 /// the search finished within `max_nodes` branch-and-bound nodes.
 /// `bound`, if given, receives the upper bound on the clique number the search reached.
 std::vector<int> larger_clique(const PyramidGraph& g, int level, std::vector<int> best,
-                               long max_nodes, bool& optimal, int* bound = nullptr,
+                               long max_nodes, bool& proven, int* bound = nullptr,
                                Deadline deadline = kNoDeadline, bool* out_of_time = nullptr);
 
 /// larger_clique on the |best|-core already found: `keep` (sorted pyramid ids, empty when the
 /// core is) and the level's subgraph induced by it, in local ids.
 std::vector<int> larger_clique_in(const LevelCsr& core, const std::vector<int>& keep,
-                                  std::vector<int> best, long max_nodes, bool& optimal,
+                                  std::vector<int> best, long max_nodes, bool& proven,
                                   int* bound = nullptr, Deadline deadline = kNoDeadline,
                                   bool* out_of_time = nullptr);
 

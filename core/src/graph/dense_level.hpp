@@ -86,7 +86,7 @@ CoreDecomposition core_decomposition(const CoreView& g);
 
 /// larger_clique_in (clique_graph.hpp) on the view: the same clique, bound and proof.
 std::vector<int> larger_clique_in(const CoreView& core, std::vector<int> best, long max_nodes,
-                                  bool& optimal, int* bound = nullptr,
+                                  bool& proven, int* bound = nullptr,
                                   Deadline deadline = kNoDeadline, bool* out_of_time = nullptr);
 
 }  // namespace pagor::detail

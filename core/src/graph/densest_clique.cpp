@@ -97,7 +97,7 @@ bool proven_without_relaxation(const PyramidGraph& g, int level, const CliquePar
                                UnprovenSearch& unproven) {
   if (!proves_first(g, level, p)) return false;
   detail::Marks marks(g.vertices);
-  bool optimal = false, late = false;
+  bool proven = false, late = false;
   int bound = 0;
   std::vector<int> lower;
   if (bits || detail::dense_level(g, level)) {
@@ -113,21 +113,21 @@ bool proven_without_relaxation(const PyramidGraph& g, int level, const CliquePar
     lower = lower_bound(*bits, deg, known_clique, p, marks, LowerBound::known_or_greedy);
     const std::vector<int> keep = detail::k_core(*bits, deg, static_cast<int>(lower.size()));
     if (detail::colouring_from_clique_proves(*bits, keep, lower)) {
-      optimal = true;
+      proven = true;
       bound = static_cast<int>(lower.size());
       std::sort(lower.begin(), lower.end());
     } else {
       lower = detail::larger_clique_in(detail::CoreView(*bits, keep), std::move(lower),
-                                       p.cascade_check_nodes, optimal, &bound, deadline, &late);
+                                       p.cascade_check_nodes, proven, &bound, deadline, &late);
     }
   } else {
     const detail::PyramidLevel view{g, level};
     lower = lower_bound(view, detail::level_degrees(g, level), known_clique, p, marks,
                         LowerBound::known_or_greedy);
-    lower = detail::larger_clique(g, level, std::move(lower), p.cascade_check_nodes, optimal,
-                                  &bound, deadline, &late);
+    lower = detail::larger_clique(g, level, std::move(lower), p.cascade_check_nodes, proven, &bound,
+                                  deadline, &late);
   }
-  if (!optimal) {
+  if (!proven) {
     unproven = {true, std::move(lower), bound, late};
     return false;
   }

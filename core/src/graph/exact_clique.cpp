@@ -267,18 +267,18 @@ bool colouring_proves(const Graph& g, const detail::CoreDecomposition& cd, int s
 
 // The exact search from the clique `best`: one subproblem per vertex that could be in a larger
 // one, from the end of the degeneracy order (the densest part first, where large cliques are).
-// When the budget runs out, `optimal` is false and `bound` an upper bound on the clique number:
+// When the budget runs out, `proven` is false and `bound` an upper bound on the clique number:
 // the largest bound of an interrupted subproblem or core number + 1 of a vertex not searched.
 // Graph: a detail::LevelCsr, or a detail::CoreView (at most kMaxLevelBits vertices: always on
 // bits).
 template <typename Graph>
 std::vector<int> search_from(const Graph& csr, const detail::CoreDecomposition& cd,
-                             std::vector<int> best, detail::SearchBudget& budget, bool& optimal,
+                             std::vector<int> best, detail::SearchBudget& budget, bool& proven,
                              int& bound) {
-  optimal = true;
+  proven = true;
   bound = 0;
   constexpr bool view = !std::is_same_v<Graph, detail::LevelCsr>;
-  const auto proven = [&] {
+  const auto maximum = [&] {
     std::sort(best.begin(), best.end());
     bound = static_cast<int>(best.size());
     return std::move(best);
@@ -286,7 +286,7 @@ std::vector<int> search_from(const Graph& csr, const detail::CoreDecomposition& 
   // On a CSR, the colouring's proof comes first: a sparse level's suffix may be large, and is
   // built only when the proof fails.
   if constexpr (!view)
-    if (!best.empty() && colouring_proves(csr, cd, static_cast<int>(best.size()))) return proven();
+    if (!best.empty() && colouring_proves(csr, cd, static_cast<int>(best.size()))) return maximum();
   int i = csr.size() - 1;
   // Cores grow along the degeneracy order: the vertices that could be in a larger clique are a
   // suffix of it, searched on bit rows when it is not too large.
@@ -305,7 +305,7 @@ std::vector<int> search_from(const Graph& csr, const detail::CoreDecomposition& 
       for (int k = 0; k < s.size(); ++k) detail::set_bit(U.data(), k);  // U starts empty
       if (detail::colour_greedily(s, U.data(), Q.data(), s.words(), s.size(),
                                   static_cast<int>(best.size())) == 0)
-        return proven();
+        return maximum();
     }
     for (; i >= first && !budget.exhausted() && ((i & 15) != 0 || budget.in_time()); --i) {
       const int size = static_cast<int>(best.size());
@@ -314,7 +314,7 @@ std::vector<int> search_from(const Graph& csr, const detail::CoreDecomposition& 
         break;
       }
       std::vector<int> c =
-          solve_subproblem_bits(s, csr.size() - 1 - i, size, budget, optimal, bound, C, U, Q);
+          solve_subproblem_bits(s, csr.size() - 1 - i, size, budget, proven, bound, C, U, Q);
       if (c.size() > best.size()) {
         best.clear();
         for (int k : c) best.push_back(s.ids[static_cast<std::size_t>(k)]);
@@ -326,14 +326,14 @@ std::vector<int> search_from(const Graph& csr, const detail::CoreDecomposition& 
       const int v = cd.order[static_cast<std::size_t>(i)];
       const int size = static_cast<int>(best.size());
       if (cd.core[static_cast<std::size_t>(v)] < size) continue;  // in no clique larger than best
-      std::vector<int> c = solve_subproblem(csr, cd, v, size, budget, optimal, bound, local);
+      std::vector<int> c = solve_subproblem(csr, cd, v, size, budget, proven, bound, local);
       if (c.size() > best.size()) best = std::move(c);
     }
   }
   for (; i >= 0; --i) {  // not searched: a clique through v has at most core(v) + 1 vertices
     const int c = cd.core[static_cast<std::size_t>(cd.order[static_cast<std::size_t>(i)])];
     if (c >= static_cast<int>(best.size())) {
-      optimal = false;
+      proven = false;
       bound = std::max(bound, c + 1);
     }
   }
@@ -345,7 +345,7 @@ std::vector<int> search_from(const Graph& csr, const detail::CoreDecomposition& 
 }  // namespace
 
 std::vector<int> detail::larger_clique(const PyramidGraph& g, int level, std::vector<int> best,
-                                       long max_nodes, bool& optimal, int* bound, Deadline deadline,
+                                       long max_nodes, bool& proven, int* bound, Deadline deadline,
                                        bool* out_of_time) {
   // Every member of a larger clique has at least |best| neighbours in the |best|-core: the search
   // runs on that core alone (often empty on the sparse levels, which proves best maximum at once;
@@ -355,7 +355,7 @@ std::vector<int> detail::larger_clique(const PyramidGraph& g, int level, std::ve
       detail::k_core(view, detail::level_degrees(g, level), static_cast<int>(best.size()),
                      [&](int v) { return view.row_length(v); });
   return larger_clique_in(keep.empty() ? detail::LevelCsr{} : detail::level_csr(g, level, keep),
-                          keep, std::move(best), max_nodes, optimal, bound, deadline, out_of_time);
+                          keep, std::move(best), max_nodes, proven, bound, deadline, out_of_time);
 }
 
 namespace {
@@ -363,8 +363,8 @@ namespace {
 // larger_clique_in's search, on either form of the core (`ids`: local -> pyramid id).
 template <typename Graph, typename Ids>
 std::vector<int> search_core(const Graph& core, Ids ids, std::vector<int> best, long max_nodes,
-                             bool& optimal, int* bound, Deadline deadline, bool* out_of_time) {
-  optimal = true;
+                             bool& proven, int* bound, Deadline deadline, bool* out_of_time) {
+  proven = true;
   if (bound) *bound = static_cast<int>(best.size());
   std::sort(best.begin(), best.end());
   if (core.size() == 0) return best;
@@ -376,7 +376,7 @@ std::vector<int> search_core(const Graph& core, Ids ids, std::vector<int> best, 
   // search_from only reads best's size; what it returns is best itself or a larger clique in the
   // core's local ids.
   std::vector<int> found =
-      search_from(core, detail::core_decomposition(core), best, budget, optimal, reached);
+      search_from(core, detail::core_decomposition(core), best, budget, proven, reached);
   if (bound) *bound = reached;
   if (out_of_time) *out_of_time = budget.out_of_time;
   if (found.size() <= best.size()) return best;
@@ -388,18 +388,18 @@ std::vector<int> search_core(const Graph& core, Ids ids, std::vector<int> best, 
 }  // namespace
 
 std::vector<int> detail::larger_clique_in(const LevelCsr& csr, const std::vector<int>& keep,
-                                          std::vector<int> best, long max_nodes, bool& optimal,
+                                          std::vector<int> best, long max_nodes, bool& proven,
                                           int* bound, Deadline deadline, bool* out_of_time) {
   return search_core(
       csr, [&](int v) { return keep[static_cast<std::size_t>(v)]; }, std::move(best), max_nodes,
-      optimal, bound, deadline, out_of_time);
+      proven, bound, deadline, out_of_time);
 }
 
 std::vector<int> detail::larger_clique_in(const CoreView& core, std::vector<int> best,
-                                          long max_nodes, bool& optimal, int* bound,
+                                          long max_nodes, bool& proven, int* bound,
                                           Deadline deadline, bool* out_of_time) {
   return search_core(
-      core, [&](int v) { return core.id(v); }, std::move(best), max_nodes, optimal, bound, deadline,
+      core, [&](int v) { return core.id(v); }, std::move(best), max_nodes, proven, bound, deadline,
       out_of_time);
 }
 
