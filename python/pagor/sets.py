@@ -162,8 +162,15 @@ def run_shard(spec: Spec, indices: List[int], config_json: str, threads: int = 1
 def config_json(config: Any, preset: Optional[str] = None) -> str:
     """The configuration as the JSON text the workers parse: None (the default), a dict (the
     JSON configuration's keys) or the path of a JSON configuration file (as ``--config``).
-    ``preset`` (as ``--preset``) fills the keys the configuration leaves out; a 'preset' key of
-    its own wins, as in ``pagor bench``."""
+    ``preset`` (as ``--preset``; None: 'default') fills the keys the configuration leaves out; a
+    'preset' key of its own wins, as in ``pagor bench``. An unknown preset raises ValueError, even
+    where the configuration names its own."""
+    if preset is not None:
+        names = _pagor.preset_names()
+        if not isinstance(preset, str):
+            raise TypeError(f"preset: expected a str, got {type(preset).__name__}")
+        if preset not in names:
+            raise ValueError(f"preset: unknown preset '{preset}' (presets: {', '.join(names)})")
     if config is None or isinstance(config, dict):
         if preset is not None:
             config = {"preset": preset, **(config or {})}
@@ -172,7 +179,7 @@ def config_json(config: Any, preset: Optional[str] = None) -> str:
         path = os.fsdecode(os.fspath(config))
         if not os.path.exists(path):
             raise FileNotFoundError(2, "config: no such file", path)
-        return _pagor.config_file_json(path, preset or "default")
+        return _pagor.config_file_json(path, "default" if preset is None else preset)
     raise TypeError("config: expected None, a dict or a JSON file's path, got "
                     f"{type(config).__name__}")
 
@@ -254,11 +261,12 @@ def _dask_rows(spec: Spec, indices: List[int], text: str, client: Any, threads: 
 def iter_rows(pairs: Any, config: Any = None, *, jobs: Optional[int] = None,
               client: Any = None, progress: bool = True, threads: int = 1,
               shard_size: Optional[int] = None, skip: Optional[Set[int]] = None,
+              preset: Optional[str] = None,
               _spec_text: Optional[Tuple[Spec, str]] = None) -> Iterator[dict]:
     """The row dicts of run_shard, each pair once, as they finish (any order): what run_pairs
     and ``python3 -m pagor bench`` are made of. `skip`: set indices not to run (taken from an
     earlier run)."""
-    spec, text = _spec_text or (_spec(pairs, client is not None), config_json(config))
+    spec, text = _spec_text or (_spec(pairs, client is not None), config_json(config, preset))
     names = pair_keys(spec, text)
     indices = [i for i in range(len(names)) if not skip or i not in skip]
     jobs = _jobs(jobs)
@@ -294,8 +302,8 @@ def _jobs(jobs: Any) -> int:
 
 
 def run_pairs(pairs: Any, config: Any = None, *, jobs: Optional[int] = None, client: Any = None,
-              progress: bool = True, threads: int = 1,
-              shard_size: Optional[int] = None) -> Rows:
+              progress: bool = True, threads: int = 1, shard_size: Optional[int] = None,
+              preset: Optional[str] = None) -> Rows:
     """Runs every pair of a set and returns its rows: the lines ``pagor bench --out`` writes, as
     dicts (pagor.register/1 without the config, with 'pair', 'run_key' and 'tool_version'), in
     set order.
@@ -309,6 +317,8 @@ def run_pairs(pairs: Any, config: Any = None, *, jobs: Optional[int] = None, cli
         `..` kept), so those rows name the files by absolute paths.
     config: None (the default), a dict with the JSON configuration's keys, or a JSON file's path
         (as ``--config``).
+    preset: the preset the configuration's absent keys come from (as ``--preset``: 'default',
+        'paper', 'indoor'); a 'preset' key in the configuration wins.
     jobs: pairs at once on this machine, each on a thread of its own (None: 1; 'auto': the
         cores). Ignored with a client.
     client: a dask.distributed Client, or a scheduler's address ('tcp://host:8786'): the pairs
@@ -326,7 +336,7 @@ def run_pairs(pairs: Any, config: Any = None, *, jobs: Optional[int] = None, cli
     import json
     import warnings
 
-    spec, text = _spec(pairs, client is not None), config_json(config)
+    spec, text = _spec(pairs, client is not None), config_json(config, preset)
     lines: Dict[int, str] = {}
     out = Rows()
     out.failed = {}

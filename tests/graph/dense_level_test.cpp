@@ -72,12 +72,12 @@ TEST_CASE(
         CHECK(cb.position == ca.position);
         CHECK(cb.degeneracy == ca.degeneracy);
         for (long nodes : {0L, 50L, 1000000L}) {
-          bool optimal_a = false, optimal_b = false;
+          bool proven_a = false, proven_b = false;
           int bound_a = -1, bound_b = -1;
           const std::vector<int> found_a =
-              detail::larger_clique_in(a, keep, greedy, nodes, optimal_a, &bound_a);
-          CHECK(detail::larger_clique_in(b, greedy, nodes, optimal_b, &bound_b) == found_a);
-          CHECK(optimal_b == optimal_a);
+              detail::larger_clique_in(a, keep, greedy, nodes, proven_a, &bound_a);
+          CHECK(detail::larger_clique_in(b, greedy, nodes, proven_b, &bound_b) == found_a);
+          CHECK(proven_b == proven_a);
           CHECK(bound_b == bound_a);
         }
       }

@@ -314,17 +314,17 @@ TEST_CASE("the paper's preset runs the relaxation on every level") {
 
 namespace {
 
-// Two nested levels on n vertices: a planted clique of k and edges of probability p0 at level 0,
-// and at level 1 also those of probability p1 (a dense level, as the loosest of a learned
-// matcher's problem).
-PyramidGraph two_levels(int n, int k, double p0, double p1, std::uint64_t seed) {
+// Two nested levels on n vertices: edges of probability p0 at level 0, and at level 1 also those
+// of probability p1 (a dense level, as the loosest of a learned matcher's problem); a planted
+// clique of k vertices from level `planted` on.
+PyramidGraph two_levels(int n, int k, double p0, double p1, std::uint64_t seed, int planted = 0) {
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> draw(0.0, 1.0);
   std::vector<std::vector<std::pair<int, std::uint8_t>>> adj(static_cast<std::size_t>(n));
   for (int i = 0; i < n; ++i)
     for (int j = i + 1; j < n; ++j) {
       const double x = draw(rng);
-      const int level = (i < k && j < k) || x < p0 ? 0 : x < p1 ? 1 : -1;
+      const int level = x < p0 ? 0 : (i < k && j < k) ? planted : x < p1 ? 1 : -1;
       if (level < 0) continue;
       adj[static_cast<std::size_t>(i)].emplace_back(j, static_cast<std::uint8_t>(level));
       adj[static_cast<std::size_t>(j)].emplace_back(i, static_cast<std::uint8_t>(level));
@@ -380,4 +380,24 @@ TEST_CASE("a level the bounded proof cannot settle keeps that search's clique an
     }
   }
   CHECK(unsettled > 0);  // the path was taken
+}
+
+// The relaxation finds a clique larger than the bounded proof's (planted at level 1 only): the
+// search runs again from it, and its stronger pruning proves the level.
+TEST_CASE("a relaxation's larger clique is searched from, and proven, after a failed proof") {
+  int proven = 0;
+  for (std::uint64_t seed : {31u, 32u, 33u, 34u}) {
+    const PyramidGraph g = two_levels(200, 30, 0.05, 0.4, seed, 1);
+    CliqueParams cp;
+    cp.prove_first_min_edges = 0;
+    cp.cascade_check_nodes = 30;
+    const auto r = solve_pyramid(g, cp);
+    INFO("seed " << seed << ": level 1 " << r[1].vertices.size() << " members, bound "
+                 << r[1].clique_number_bound << (r[1].proven ? ", proven" : ""));
+    CHECK(is_clique(g, 1, r[1].vertices));
+    CHECK(r[1].vertices.size() >= 30u);
+    proven += r[1].proven;
+    if (r[1].proven) CHECK(r[1].clique_number_bound == static_cast<int>(r[1].vertices.size()));
+  }
+  CHECK(proven == 4);
 }

@@ -94,6 +94,12 @@ def test_a_preset_gives_the_tools_lines_under_that_preset(tmp_path, manifest, on
     assert [r["run_key"] for r in rows] == [r["run_key"] for r in named]
     bad = bench("--manifest", manifest, "--preset", "bogus", "--out", out, check=False)
     assert bad.returncode == 2 and "--preset" in bad.stderr and "paper" in bad.stderr
+    # The library takes the same preset, and refuses an unknown one whatever the configuration.
+    lib = pagor.run_pairs(manifest, SEMREG_CONFIG, preset="paper", progress=False)
+    assert [r["run_key"] for r in lib] == [r["run_key"] for r in named]
+    for config in (None, {"preset": "paper"}, SEMREG_CONFIG):
+        with pytest.raises(ValueError, match="preset: unknown preset 'bogus'"):
+            pagor.run_pairs(manifest, config, preset="bogus")
 
 
 def test_the_lock_and_bad_input_name_what_is_wrong(tmp_path, manifest):

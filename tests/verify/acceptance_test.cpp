@@ -245,28 +245,46 @@ TEST_CASE("a pose a period off is ambiguous, naming the alternative and how far 
 }
 
 TEST_CASE("a tiny mu against a wide target: the ambiguity's grids stay bounded and still judge") {
-  // mu / 2 = 50 um over a corridor tens of metres long would be ~1e17 cells: the grid is coarsened
-  // to fit and the pose a period off is still found ambiguous.
+  // The correlation's grid is mu / 2 but no finer than half the inlier distance; at 50 um over a
+  // corridor tens of metres long it would be ~1e17 cells: such a grid is coarsened to fit, and the
+  // pose a period off is still not accepted.
   const SelfSimilarScene s = self_similar(SelfSimilarKind::corridor, true);
   const Transform& off = s.look_alikes[2];
   const Config c = default_config();
-  VerificationParams tiny = c.verification;
-  tiny.mu = 1e-4;
   const Verifier verifier(s.source, s.target, c.verification.voxel_size);
-  std::vector<PoseEstimate> candidates(1);
-  candidates[0].valid = true;
-  candidates[0].T_target_source = off;
-  candidates[0].inliers = {0, 1, 2, 3, 4, 5};
-  VerificationResult v;
-  v.selected = 0;
-  v.scores = {verifier.score(off, tiny.mu, ScoreKind::truncated, 1, &v.selected_distances)};
-  v.distance_bound = static_cast<float>(tiny.mu);
-  AcceptanceParams params = ambiguity_only();
-  const Acceptance a = judge_selection(verifier, candidates, v, tiny, params, PoseModel::se3);
+  const auto judge = [&](double mu, const AcceptanceParams& params) {
+    VerificationParams tiny = c.verification;
+    tiny.mu = mu;
+    std::vector<PoseEstimate> candidates(1);
+    candidates[0].valid = true;
+    candidates[0].T_target_source = off;
+    candidates[0].inliers = {0, 1, 2, 3, 4, 5};
+    VerificationResult v;
+    v.selected = 0;
+    v.scores = {verifier.score(off, tiny.mu, ScoreKind::truncated, 1, &v.selected_distances)};
+    v.distance_bound = static_cast<float>(tiny.mu);
+    return judge_selection(verifier, candidates, v, tiny, params, PoseModel::se3);
+  };
+  const Acceptance a = judge(1e-4, ambiguity_only());
   INFO(a.reason);
   CHECK_FALSE(a.accepted);
   CHECK_THAT(a.reason, Catch::StartsWith("ambiguous: "));
   CHECK(a.ambiguity > 2.0);
+  // The smallest mu and inlier distance the configuration takes: the cell rounds to 0 (the grid
+  // once never stopped coarsening it).
+  AcceptanceParams tiny = ambiguity_only();
+  tiny.inlier_distance = 1e-4;
+  CHECK_FALSE(judge(5e-324, tiny).accepted);
+  tiny.inlier_distance = 5e-324;
+  CHECK_FALSE(judge(5e-324, tiny).accepted);
+  // The footprint's cell is half the distinct translation but no finer than the inlier distance
+  // (a finer one, full of holes between the target's points, once let this pose through).
+  AcceptanceParams fine = ambiguity_only();
+  fine.distinct_translation = 1e-9;
+  const Acceptance f = judge(c.verification.mu, fine);
+  INFO(f.reason);
+  CHECK_FALSE(f.accepted);
+  CHECK_THAT(f.reason, Catch::StartsWith("ambiguous: "));
 }
 
 TEST_CASE("the same corridor with a car, a sign and a bench is accepted at its true pose") {

@@ -229,14 +229,17 @@ CliqueResult solve_level(const PyramidGraph& g, int level, const std::vector<dou
   // whose core number is below its size; a greedy colouring may prove it maximum at once). Unless
   // that proves the clique maximum, the level is also solved from the cold start, exactly as the
   // independent solver does, and the larger clique is kept: the cascade never loses to it.
-  // Where prove_first's search of this level already ran out of the same budget, it is not run
-  // again (on the densest levels it found no proof the second time either, and was a quarter of
-  // the time): its largest clique stands in for the second search's.
+  // Where prove_first's search of this level already ran out of the same budget and the
+  // relaxation found no larger clique than it did, the search is not run again from a clique no
+  // larger than its own (on the densest levels it found no proof the second time either, and was
+  // a quarter of the time): its largest clique and bound stand in. A larger clique from the
+  // relaxation prunes more: then the search runs from it, and often proves it at once.
   if (warm && !r.proven) {
     bool late = false;
-    if (searched.ran) {
+    if (searched.ran && r.vertices.size() <= searched.clique.size()) {
       if (searched.clique.size() > r.vertices.size()) r.vertices = std::move(searched.clique);
       r.clique_number_bound = searched.bound;
+      r.proven = static_cast<int>(r.vertices.size()) >= searched.bound;
       late = searched.late;
     } else {
       r.vertices = detail::larger_clique(g, level, std::move(r.vertices), p.cascade_check_nodes,

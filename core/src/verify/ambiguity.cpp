@@ -65,6 +65,9 @@ class Occupancy {
     // A cell so fine that the grid would pass kMaxCells (a tiny mu against a wide target) is
     // coarsened until it fits: the correlation then finds its peaks on the coarser grid.
     const Eigen::Vector3d span = hi - lo;
+    // At most 2^20 cells across first (a cell of mu / 2 that rounds to 0, or divides the span to
+    // infinity, would leave the loop below nothing finite to work on).
+    cell_ = std::max({cell_, span.maxCoeff() / 1048576.0, 1e-6});
     for (;;) {
       const Eigen::Vector3d across = (span / cell_).array().floor() + 1.0;
       const double cells = across.prod();
@@ -198,6 +201,7 @@ class Footprint {
     for (const auto& p : target) lo = lo.cwiseMin(p.head<2>()), hi = hi.cwiseMax(p.head<2>());
     // As the occupancy: a cell too fine for the target's extent is coarsened until the grid fits.
     const Eigen::Vector2d span = (hi - lo).cast<double>();
+    cell_ = std::max({cell_, span.maxCoeff() / 1048576.0, 1e-6});
     for (;;) {
       const double cells = (std::floor(span.x() / cell_) + 3) * (std::floor(span.y() / cell_) + 3);
       if (cells <= kMaxCells) break;
@@ -254,7 +258,10 @@ class Comparison {
  public:
   explicit Comparison(const AmbiguityInput& in)
       : in_(in),
-        footprint_(in.verifier->target_points(), in.distinct.max_translation_error / 2,
+        // No finer than the inlier distance: finer cells leave holes between the target's
+        // points, and a pose that moves the evidence into them looked unrivalled.
+        footprint_(in.verifier->target_points(),
+                   std::max(in.distinct.max_translation_error / 2, in.inlier_distance),
                    in.target_complete),
         r_(static_cast<float>(in.inlier_distance)) {
     d_sel_ = in.selected_distances ? *in.selected_distances
@@ -373,7 +380,10 @@ AcceptanceAlternative find_best_alternative(const AmbiguityInput& in,
                                             const std::vector<Transform>& candidates,
                                             const std::vector<std::string>& names) {
   AcceptanceAlternative best;
-  const Occupancy occ(in.verifier->target_points(), *in.target_counts, in.mu / 2);
+  // The correlation's grid: mu / 2, no finer than half the inlier distance (what aligns is
+  // judged at that scale).
+  const Occupancy occ(in.verifier->target_points(), *in.target_counts,
+                      std::max(in.mu, in.inlier_distance) / 2);
   const Comparison cmp(in);
   const auto distinct = [&](const Transform& T) {
     return !pose_error(T, in.T_selected, in.distinct).success;
@@ -416,7 +426,8 @@ AcceptanceAlternative find_best_alternative(const AmbiguityInput& in,
   each(peaks.size(), [&](std::size_t i) { e[i] = cmp.ratio(peaks[i].T); });
   for (std::size_t i = 0; i < peaks.size(); ++i) order[i] = i;
   std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return e[a] > e[b]; });
-  // The best few moved to their own optimum: a peak is found on a grid of mu / 2.
+  // The best few moved to their own optimum: a peak is found on the occupancy's grid (mu / 2, or
+  // coarser against a target too wide for it).
   std::vector<Transform> moved_to(peaks.size());
   for (std::size_t i = 0; i < peaks.size(); ++i) moved_to[i] = peaks[i].T;
   each(std::min(kPeaksRefined, order.size()), [&](std::size_t r) {

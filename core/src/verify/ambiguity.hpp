@@ -42,7 +42,8 @@ struct AmbiguityInput {
   /// 2 inlier_distance;
   /// null: searched here
   const std::vector<float>* selected_distances = nullptr;
-  double mu = 1.0;               ///< D's truncation [m]: the correlation's grid is mu / 2
+  /// D's truncation [m]: the correlation's grid is mu / 2 (at least inlier_distance / 2)
+  double mu = 1.0;
   double inlier_distance = 0.5;  ///< a point counts as aligned within this [m]
   EvaluationParams distinct;     ///< a pose within this of the selected one is the same answer
   double search_range = 40.0;    ///< furthest shift searched along an axis [m]
