@@ -203,7 +203,7 @@ void Pipeline::run_stage(Stage stage) {
       break;
     case Stage::clique: {
       const Deadline deadline = clique_deadline();
-      cliques_ = solve_pyramid(graph_.graph(), config_.clique, deadline);
+      cliques_ = solve_pyramid(graph_.graph(), config_.clique, deadline, threads_now());
       // A level cut short by time after the pair's deadline (not by the exact solver's own share).
       pair_budget_hit_ = false;
       if (deadline != kNoDeadline && std::chrono::steady_clock::now() > deadline)

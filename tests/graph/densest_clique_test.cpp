@@ -401,3 +401,31 @@ TEST_CASE("a relaxation's larger clique is searched from, and proven, after a fa
   }
   CHECK(proven == 4);
 }
+
+// With two threads, a level whose bounded proof fails solves its cold-start fallback beside the
+// warm relaxation: every level's result is the one thread's, field by field.
+TEST_CASE("two threads give the one-thread cliques, the fallback run beside the relaxation") {
+  int beside = 0;
+  for (std::uint64_t seed : {21u, 22u, 31u, 32u}) {
+    const PyramidGraph g = two_levels(300, 25, 0.05, 0.5, seed, seed > 30 ? 1 : 0);
+    CliqueParams cp;
+    cp.prove_first_min_edges = 0;
+    cp.cascade_check_nodes = 30;
+    const auto one = solve_pyramid(g, cp);
+    const auto two = solve_pyramid(g, cp, kNoDeadline, 2);
+    REQUIRE(one.size() == two.size());
+    for (std::size_t l = 0; l < one.size(); ++l) {
+      INFO("seed " << seed << ", level " << l);
+      CHECK(two[l].vertices == one[l].vertices);
+      CHECK(two[l].proven == one[l].proven);
+      CHECK(two[l].clique_number_bound == one[l].clique_number_bound);
+      CHECK(two[l].budget == one[l].budget);
+      CHECK(two[l].start == one[l].start);
+      CHECK(two[l].gradient_steps == one[l].gradient_steps);
+      CHECK(two[l].penalty_updates == one[l].penalty_updates);
+      CHECK(two[l].u == one[l].u);
+      beside += l > 0 && !one[l].proven;  // where the fallback ran
+    }
+  }
+  CHECK(beside > 0);
+}

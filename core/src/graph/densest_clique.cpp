@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <future>
 #include <numeric>
 #include <random>
 
@@ -210,10 +211,19 @@ CliqueResult relax_level(const PyramidGraph& g, int level, const std::vector<dou
 
 namespace {
 
-// solve_clipper, given the level's bit rows if solve_pyramid built them.
+// The cascade's fallback: the level solved from the cold start, as the independent solver does.
+CliqueResult cold_start(const PyramidGraph& g, int level, const CliqueParams& p,
+                        Deadline deadline) {
+  return relax_level(g, level, random_start(g.vertices, p.seed), p, {}, 0.0, deadline);
+}
+
+// solve_clipper, given the level's bit rows if solve_pyramid built them. With `threads` > 1, a
+// warm level whose bounded proof failed (the fallback will most likely run) starts the fallback
+// beside the warm relaxation on a second thread; it is used only where it would have run, so the
+// result is the same (unless the deadline passes meanwhile).
 CliqueResult solve_level(const PyramidGraph& g, int level, const std::vector<double>& u0,
                          const CliqueParams& p, const std::vector<int>& known_clique, double d0,
-                         Deadline deadline, const detail::BitGraph* bits) {
+                         Deadline deadline, const detail::BitGraph* bits, int threads = 1) {
   const auto t0 = Clock::now();
   CliqueResult r;
   UnprovenSearch searched;
@@ -221,8 +231,11 @@ CliqueResult solve_level(const PyramidGraph& g, int level, const std::vector<dou
     r.time_ms = ms_since(t0);
     return r;
   }
-  r = relax_level(g, level, u0, p, known_clique, d0, deadline);
   const bool warm = p.prune && !known_clique.empty() && g.vertices > 0;
+  std::future<CliqueResult> early;
+  if (threads > 1 && warm && searched.ran && p.cascade_fallback)
+    early = std::async(std::launch::async, [&] { return cold_start(g, level, p, deadline); });
+  r = relax_level(g, level, u0, p, known_clique, d0, deadline);
   // A warm start can settle in a worse local optimum than a cold one (KITTI 20 -> 30, level 2:
   // 29 against 30; gedi-dev 03, level 2: 66 against 68). A warm level therefore ends with a
   // bounded exact search for a larger clique (cheap here: the clique found prunes every vertex
@@ -251,8 +264,7 @@ CliqueResult solve_level(const PyramidGraph& g, int level, const std::vector<dou
     else if (!r.proven && p.cascade_check_nodes > 0)
       r.budget = CliqueBudget::nodes;
     if (!r.proven && p.cascade_fallback && r.budget != CliqueBudget::time) {
-      CliqueResult cold =
-          relax_level(g, level, random_start(g.vertices, p.seed), p, {}, 0.0, deadline);
+      CliqueResult cold = early.valid() ? early.get() : cold_start(g, level, p, deadline);
       if (cold.budget == CliqueBudget::time) r.budget = CliqueBudget::time;
       r.gradient_steps += cold.gradient_steps;
       r.penalty_updates += cold.penalty_updates;
@@ -301,7 +313,7 @@ CliqueResult lower_bound_only(const PyramidGraph& g, int level, const CliquePara
 }  // namespace
 
 std::vector<CliqueResult> solve_pyramid(const PyramidGraph& g, const CliqueParams& p,
-                                        Deadline deadline) {
+                                        Deadline deadline, int threads) {
   const auto t0 = Clock::now();
   std::vector<CliqueResult> out;
   const std::vector<double> start = random_start(g.vertices, p.seed);
@@ -353,7 +365,7 @@ std::vector<CliqueResult> solve_pyramid(const PyramidGraph& g, const CliqueParam
         else
           out.push_back(solve_level(g, l, out.back().u, p, out.back().vertices,
                                     p.warm_start_penalty * out.back().penalty, deadline,
-                                    bits_of(l)));
+                                    bits_of(l), threads));
         break;
     }
   }

@@ -228,9 +228,10 @@ CliqueResult exact_max_clique(const PyramidGraph& graph, int level, const Clique
 /// One clique per level, in level order, with the solver `params.solver` selects. After
 /// `deadline` every search stops with the best clique it has (a level not yet started keeps its
 /// lower bound: the previous level's clique grown, or greedy cliques), and its `budget` reads
-/// `time`.
+/// `time`. With `threads` > 1 (cascaded), a level whose bounded proof fails solves its cold-start
+/// fallback beside the warm relaxation: the same cliques, sooner (unless the deadline passes).
 std::vector<CliqueResult> solve_pyramid(const PyramidGraph& graph, const CliqueParams& params,
-                                        Deadline deadline = kNoDeadline);
+                                        Deadline deadline = kNoDeadline, int threads = 1);
 
 /// Whether every pair of `vertices` is adjacent at `level`.
 bool is_clique(const PyramidGraph& graph, int level, const std::vector<int>& vertices);
