@@ -364,8 +364,8 @@ std::vector<CliqueResult> solve_pyramid(const PyramidGraph& g, const CliqueParam
           out.push_back(solve_level(g, l, start, p, {}, 0.0, deadline, bits_of(l)));
         else
           out.push_back(solve_level(g, l, out.back().u, p, out.back().vertices,
-                                    p.warm_start_penalty * out.back().penalty, deadline,
-                                    bits_of(l), threads));
+                                    p.warm_start_penalty * out.back().penalty, deadline, bits_of(l),
+                                    threads));
         break;
     }
   }
