@@ -147,20 +147,23 @@ TEST_CASE("a pose that aligns only the ground of a sloped street is not trusted"
 
 namespace {
 
-// Judges `T` as the only candidate of a self-similar scene, with the given thresholds.
-Acceptance judge_pose(const SelfSimilarScene& s, const Transform& T,
-                      const AcceptanceParams& params) {
+// Judges `T` as the only candidate of a self-similar scene, with the given thresholds and D's
+// truncation `mu` (< 0: the default configuration's).
+Acceptance judge_pose(const SelfSimilarScene& s, const Transform& T, const AcceptanceParams& params,
+                      double mu = -1) {
   const Config c = default_config();
-  const Verifier verifier(s.source, s.target, c.verification.voxel_size);
+  VerificationParams verification = c.verification;
+  if (mu >= 0) verification.mu = mu;
+  const Verifier verifier(s.source, s.target, verification.voxel_size);
   std::vector<PoseEstimate> candidates(1);
   candidates[0].valid = true;
   candidates[0].T_target_source = T;
   candidates[0].inliers = {0, 1, 2, 3, 4, 5};
   VerificationResult v;
   v.selected = 0;
-  v.scores = {verifier.score(T, c.verification.mu, ScoreKind::truncated, 1, &v.selected_distances)};
-  v.distance_bound = static_cast<float>(c.verification.mu);
-  return judge_selection(verifier, candidates, v, c.verification, params, PoseModel::se3);
+  v.scores = {verifier.score(T, verification.mu, ScoreKind::truncated, 1, &v.selected_distances)};
+  v.distance_bound = static_cast<float>(verification.mu);
+  return judge_selection(verifier, candidates, v, verification, params, PoseModel::se3);
 }
 
 SelfSimilarScene self_similar(SelfSimilarKind kind, bool objects) {
@@ -250,20 +253,8 @@ TEST_CASE("a tiny mu against a wide target: the ambiguity's grids stay bounded a
   // pose a period off is still not accepted.
   const SelfSimilarScene s = self_similar(SelfSimilarKind::corridor, true);
   const Transform& off = s.look_alikes[2];
-  const Config c = default_config();
-  const Verifier verifier(s.source, s.target, c.verification.voxel_size);
   const auto judge = [&](double mu, const AcceptanceParams& params) {
-    VerificationParams tiny = c.verification;
-    tiny.mu = mu;
-    std::vector<PoseEstimate> candidates(1);
-    candidates[0].valid = true;
-    candidates[0].T_target_source = off;
-    candidates[0].inliers = {0, 1, 2, 3, 4, 5};
-    VerificationResult v;
-    v.selected = 0;
-    v.scores = {verifier.score(off, tiny.mu, ScoreKind::truncated, 1, &v.selected_distances)};
-    v.distance_bound = static_cast<float>(tiny.mu);
-    return judge_selection(verifier, candidates, v, tiny, params, PoseModel::se3);
+    return judge_pose(s, off, params, mu);
   };
   const Acceptance a = judge(1e-4, ambiguity_only());
   INFO(a.reason);
@@ -281,7 +272,7 @@ TEST_CASE("a tiny mu against a wide target: the ambiguity's grids stay bounded a
   // (a finer one, full of holes between the target's points, once let this pose through).
   AcceptanceParams fine = ambiguity_only();
   fine.distinct_translation = 1e-9;
-  const Acceptance f = judge(c.verification.mu, fine);
+  const Acceptance f = judge(-1, fine);
   INFO(f.reason);
   CHECK_FALSE(f.accepted);
   CHECK_THAT(f.reason, Catch::StartsWith("ambiguous: "));

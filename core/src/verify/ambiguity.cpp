@@ -21,6 +21,24 @@ constexpr std::size_t kPeaksScored = 6, kPeaksRefined = 2;
 // 2.5 m^2 of surface, the end of a car.
 constexpr double kPriorPoints = 10.0;
 
+// Cells a grid holds at most: 16 MB a grid of flags.
+constexpr double kMaxGridCells = 1 << 24;
+
+// `cell` [m], coarsened where a grid over `span` with `pad` more cells along each axis would pass
+// kMaxGridCells (a tiny mu, or distinct distance, against a wide target). At most 2^20 cells
+// across first: a cell that rounds to 0, or divides the span to infinity, would leave the loop
+// nothing finite to work on.
+template <int N>
+double fitted_cell(double cell, const Eigen::Matrix<double, N, 1>& span, double pad) {
+  cell = std::max({cell, span.maxCoeff() / 1048576.0, 1e-6});
+  for (;;) {
+    const double cells = ((span / cell).array().floor() + pad).prod();
+    if (cells <= kMaxGridCells) return cell;
+    const double excess = cells / kMaxGridCells;
+    cell *= std::max(1.01, N == 3 ? std::cbrt(excess) : std::sqrt(excess));
+  }
+}
+
 // The target structure's horizontal principal axes (columns, major first) and, in that frame
 // (u, v, z), the grid's lower corner.
 struct Frame {
@@ -62,18 +80,9 @@ class Occupancy {
       }
     frame_.lower = lo;
     middle_ = Eigen::Vector2d(lo.x() + hi.x(), lo.y() + hi.y()) / 2;
-    // A cell so fine that the grid would pass kMaxCells (a tiny mu against a wide target) is
-    // coarsened until it fits: the correlation then finds its peaks on the coarser grid.
+    // A grid too fine for the target is coarsened: the correlation then finds its peaks there.
     const Eigen::Vector3d span = hi - lo;
-    // At most 2^20 cells across first (a cell of mu / 2 that rounds to 0, or divides the span to
-    // infinity, would leave the loop below nothing finite to work on).
-    cell_ = std::max({cell_, span.maxCoeff() / 1048576.0, 1e-6});
-    for (;;) {
-      const Eigen::Vector3d across = (span / cell_).array().floor() + 1.0;
-      const double cells = across.prod();
-      if (cells <= kMaxCells) break;
-      cell_ *= std::max(1.01, std::cbrt(cells / kMaxCells));
-    }
+    cell_ = fitted_cell<3>(cell_, span, 1);
     for (int k = 0; k < 3; ++k) size_[k] = static_cast<int>(span[k] / cell_) + 1;
     occupied_.assign(static_cast<std::size_t>(size_[0]) * size_[1] * size_[2], 0);
     along_y_ = occupied_;
@@ -110,7 +119,6 @@ class Occupancy {
   std::size_t index(const Eigen::Vector3i& k) const {
     return (static_cast<std::size_t>(k.z()) * size_[1] + k.y()) * size_[0] + k.x();
   }
-  static constexpr double kMaxCells = 1 << 24;  // 16 MB a grid, 2 grids
   double cell_;
   Frame frame_;
   Eigen::Vector2d middle_ = Eigen::Vector2d::Zero();  // of the structure, in the frame (u, v)
@@ -199,14 +207,8 @@ class Footprint {
     if (target.empty() || everywhere) return;
     Eigen::Vector2f lo = target[0].head<2>(), hi = lo;
     for (const auto& p : target) lo = lo.cwiseMin(p.head<2>()), hi = hi.cwiseMax(p.head<2>());
-    // As the occupancy: a cell too fine for the target's extent is coarsened until the grid fits.
     const Eigen::Vector2d span = (hi - lo).cast<double>();
-    cell_ = std::max({cell_, span.maxCoeff() / 1048576.0, 1e-6});
-    for (;;) {
-      const double cells = (std::floor(span.x() / cell_) + 3) * (std::floor(span.y() / cell_) + 3);
-      if (cells <= kMaxCells) break;
-      cell_ *= std::max(1.01, std::sqrt(cells / kMaxCells));
-    }
+    cell_ = fitted_cell<2>(cell_, span, 3);
     lower_ = lo.cast<double>() - Eigen::Vector2d::Constant(cell_);
     nx_ = static_cast<int>(span.x() / cell_) + 3;
     ny_ = static_cast<int>(span.y() / cell_) + 3;
@@ -234,7 +236,6 @@ class Footprint {
         ((q.head<2>() - lower_) / cell_).array().floor().cwiseMax(-1e9).cwiseMin(1e9);
     return {static_cast<int>(f.x()), static_cast<int>(f.y())};
   }
-  static constexpr double kMaxCells = 1 << 24;
   double cell_;
   bool everywhere_;
   Eigen::Vector2d lower_ = Eigen::Vector2d::Zero();
