@@ -35,7 +35,7 @@ void print_row(const PairOutcome& o) {
   if (o.timed) std::snprintf(time, sizeof(time), "%.1f", o.total_ms);
   const char* diagnosis = o.diagnosis.empty() ? "-" : o.diagnosis.c_str();
   // The one outcome a loop-closing user cannot afford: marked, in red on a terminal.
-  const std::string mark = !o.accepted_wrong()     ? ""
+  const std::string mark = !o.accepted_wrong()      ? ""
                            : isatty(fileno(stdout)) ? "  \033[1;31m<- WRONG POSE ACCEPTED\033[0m"
                                                     : "  <- WRONG POSE ACCEPTED";
   if (o.error)
@@ -85,19 +85,16 @@ void print_summary(const BenchmarkSummary& s, const Config& config) {
 }  // namespace
 
 std::vector<Option> bench_options() {
-  std::vector<Option> o = pair_set_options();
-  const std::vector<Option> more = {
-      {"out", 1, "FILE", "write one JSON line per pair (pagor.register/1 without config)"},
-      {"resume", 0, "", "with --out: continue a killed run, skipping pairs already written"},
-      threads_option(),
-      jobs_option(),
-      {"compare-thresholds", 0, "",
-       "instead: the pyramid vs each threshold alone vs each alone with the exact maximum "
-       "clique (TEASER++-like), success rates"}};
-  o.insert(o.end(), more.begin(), more.end());
-  for (Option& c : config_options_for("default, indoor when every target is a floor plan"))
-    o.push_back(std::move(c));
-  return o;
+  return joined(
+      pair_set_options(),
+      {{{"out", 1, "FILE", "write one JSON line per pair (pagor.register/1 without config)"},
+        {"resume", 0, "", "with --out: continue a killed run, skipping pairs already written"},
+        threads_option(),
+        jobs_option(),
+        {"compare-thresholds", 0, "",
+         "instead: the pyramid vs each threshold alone vs each alone with the exact maximum "
+         "clique (TEASER++-like), success rates"}},
+       config_options_for("default, indoor when every target is a floor plan")});
 }
 
 namespace {
@@ -124,8 +121,8 @@ std::string key_of(const PairEntry& e, const Config& config, const std::string& 
 }
 
 // Every pair's key, on `jobs` threads (each key its own thread's).
-std::vector<std::string> all_keys(const PairSet& set, const Config& config,
-                                  const std::string& tool, int jobs) {
+std::vector<std::string> all_keys(const PairSet& set, const Config& config, const std::string& tool,
+                                  int jobs) {
   std::vector<std::string> keys(set.pairs.size());
   const auto n = static_cast<std::size_t>(std::max(1, jobs));
   std::vector<std::thread> threads;

@@ -12,6 +12,7 @@
 #include "bench_journal.hpp"
 #include "command.hpp"
 #include "common/outputs.hpp"
+#include "pagor/config.hpp"
 #include "pagor/errors.hpp"
 #include "pagor/eval/sweep.hpp"
 #include "pagor/io/atomic_file.hpp"
@@ -74,28 +75,34 @@ void print_table(const SweepResult& r, const Config& base) {
   std::printf("\n");
 }
 
+// An enum's names as a --trim/--model/--solver list takes them: "ratio,difference".
+template <class E>
+std::string names_of() {
+  std::string out;
+  for (const auto& e : enum_entries(E{})) out += (out.empty() ? "" : ",") + std::string(e.name);
+  return out;
+}
+
 }  // namespace
 
 std::vector<Option> sweep_options() {
-  std::vector<Option> o = pair_set_options();
-  const std::vector<Option> more = {
-      {"thresholds", 1, "SETS", "threshold sets, e.g. '0.02,0.04,0.08;0.03,0.06'"},
-      {"mu", 1, "LIST", "verification truncations [m], e.g. '0.5,1,2'"},
-      {"trim", 1, "LIST", "TRIM kinds: ratio,difference"},
-      {"model", 1, "LIST", "pose models: se3,se2,four_dof"},
-      {"solver", 1, "LIST", "clique solvers: cascaded,independent,exact"},
-      {"param", 1, "PATH=LIST",
-       "any parameter by key path, e.g. 'gnc.noise_bound=0.5,1,2'; several separated by "
-       "spaces (pagor config --describe lists the paths)"},
-      {"out", 1, "FILE", "write one JSON line per setting (pagor.sweep/1)"},
-      {"csv", 1, "FILE", "write the table as CSV"},
-      {"plot", 1, "PNG", "draw success and upper bound per setting as a PNG"},
-      {"plot-csv", 1, "FILE", "write the plotted numbers as CSV"},
-      threads_option(),
-      jobs_option()};
-  o.insert(o.end(), more.begin(), more.end());
-  for (Option& c : config_options_for()) o.push_back(std::move(c));
-  return o;
+  return joined(
+      pair_set_options(),
+      {{{"thresholds", 1, "SETS", "threshold sets, e.g. '0.02,0.04,0.08;0.03,0.06'"},
+        {"mu", 1, "LIST", "verification truncations [m], e.g. '0.5,1,2'"},
+        {"trim", 1, "LIST", "TRIM kinds: " + names_of<TrimKind>()},
+        {"model", 1, "LIST", "pose models: " + names_of<PoseModel>()},
+        {"solver", 1, "LIST", "clique solvers: " + names_of<CliqueSolver>()},
+        {"param", 1, "PATH=LIST",
+         "any parameter by key path, e.g. 'gnc.noise_bound=0.5,1,2'; several separated by "
+         "spaces (pagor config --describe lists the paths)"},
+        {"out", 1, "FILE", "write one JSON line per setting (pagor.sweep/1)"},
+        {"csv", 1, "FILE", "write the table as CSV"},
+        {"plot", 1, "PNG", "draw success and upper bound per setting as a PNG"},
+        {"plot-csv", 1, "FILE", "write the plotted numbers as CSV"},
+        threads_option(),
+        jobs_option()},
+       config_options_for()});
 }
 
 int run_sweep_command(const Args& args) {

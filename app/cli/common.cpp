@@ -21,8 +21,8 @@ std::vector<Option> single_cloud_options() {
   return {
       {"source", 1, "FILE", "cloud to read (.bin, .pcd, .ply)"},
       {"source-labels", 1, "FILE", "SemanticKITTI .label file for --source"},
-      {"kitti-root", 1, "DIR", "KITTI root holding sequences/ (instead of --source)"},
-      {"sequence", 1, "SEQ", "KITTI sequence (default 00)"},
+      kitti_root_option("instead of --source"),
+      sequence_option(),
       {"frame", 1, "N", "KITTI frame number"},
       {"synthetic", 1, "SEED", "use the generated scene's source scan (instead of --source)"},
   };
@@ -41,7 +41,7 @@ LoadedCloud load_single_cloud(const Args& args, std::string& name) {
   if (args.has("source-labels")) throw UsageError("--source-labels goes with --source");
   if (args.has("kitti-root")) {
     if (!args.has("frame")) throw UsageError("--kitti-root needs --frame N");
-    const KittiSequence seq(args.get("kitti-root"), args.get("sequence", "00"));
+    const KittiSequence seq(args.get("kitti-root"), sequence_from_args(args));
     const int frame = args.get_int("frame", 0);
     name = seq.scan_path(frame);
     return seq.load_frame(frame);

@@ -4,6 +4,13 @@
 
 namespace pagor::cli {
 
+std::vector<Option> joined(std::vector<Option> first,
+                           std::initializer_list<std::vector<Option>> more) {
+  for (const std::vector<Option>& group : more)
+    first.insert(first.end(), group.begin(), group.end());
+  return first;
+}
+
 int parse_int(const std::string& text, const std::string& what) {
   char* end = nullptr;
   const long v = std::strtol(text.c_str(), &end, 10);

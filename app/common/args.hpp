@@ -3,6 +3,7 @@
 /// A small command-line parser: `--name value`, `--name v1 v2` and `--flag` options, declared per
 /// command, so that every command lists and checks its own options.
 
+#include <initializer_list>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -23,6 +24,11 @@ struct Option {
   std::string meta;  ///< value placeholder for the help, e.g. "FILE"
   std::string help;  ///< one line
 };
+
+/// A command's options: `first`, then each group of `more` in order (shared groups and the
+/// command's own).
+std::vector<Option> joined(std::vector<Option> first,
+                           std::initializer_list<std::vector<Option>> more);
 
 /// Parsed options of one command.
 class Args {

@@ -2,14 +2,26 @@
 
 namespace pagor::cli {
 
+Option kitti_root_option(const std::string& beside) {
+  return {"kitti-root", 1, "DIR", "KITTI root holding sequences/ (" + beside + ")"};
+}
+
+Option sequence_option() {
+  return {"sequence", 1, "SEQ", "KITTI sequence (default 00)"};
+}
+
+std::string sequence_from_args(const Args& args) {
+  return args.get("sequence", "00");
+}
+
 std::vector<Option> pair_options() {
   return {
       {"source", 1, "FILE", "source cloud (.bin, .pcd, .ply)"},
       {"target", 1, "FILE", "target cloud"},
       {"source-labels", 1, "FILE", "SemanticKITTI .label file for --source"},
       {"target-labels", 1, "FILE", "SemanticKITTI .label file for --target"},
-      {"kitti-root", 1, "DIR", "KITTI root holding sequences/ (instead of --source/--target)"},
-      {"sequence", 1, "SEQ", "KITTI sequence (default 00)"},
+      kitti_root_option("instead of --source/--target"),
+      sequence_option(),
       {"pair", 2, "S T", "KITTI source and target frame numbers"},
       {"synthetic", 1, "SEED", "the generated scene with that seed"},
       {"ground-truth", 1, "FILE", "4x4 T_target_source (row-major) to judge the result against"},
@@ -21,8 +33,8 @@ std::vector<Option> pair_set_options() {
       {"manifest", 1, "FILE",
        "pairs manifest: 'SOURCE TARGET [gt=FILE] [source_labels=FILE] [target_labels=FILE] "
        "[name=TEXT] [overlap=no]' per line, paths relative to it"},
-      {"kitti-root", 1, "DIR", "KITTI root holding sequences/ (with --pairs)"},
-      {"sequence", 1, "SEQ", "KITTI sequence (default 00)"},
+      kitti_root_option("with --pairs"),
+      sequence_option(),
       {"pairs", 1, "FILE", "KITTI pairs file: 'source target' frame numbers per line"},
   };
 }
@@ -46,7 +58,7 @@ std::optional<PairSource> pair_source_from_args(const Args& args) {
     if (!args.has("pair")) throw UsageError("--kitti-root needs --pair S T");
     src.kind = PairSource::Kind::kitti;
     src.kitti_root = args.get("kitti-root");
-    src.sequence = args.get("sequence", "00");
+    src.sequence = sequence_from_args(args);
     src.source_frame = parse_int(args.all("pair")[0], "--pair (source frame)");
     src.target_frame = parse_int(args.all("pair")[1], "--pair (target frame)");
   } else {
@@ -66,7 +78,7 @@ PairSet pair_set_from_args(const Args& args, const std::string& command) {
   }
   if (!args.has("kitti-root") || !args.has("pairs"))
     throw UsageError(command + " needs --manifest FILE, or --kitti-root DIR and --pairs FILE");
-  return kitti_pair_set(args.get("kitti-root"), args.get("sequence", "00"), args.get("pairs"));
+  return kitti_pair_set(args.get("kitti-root"), sequence_from_args(args), args.get("pairs"));
 }
 
 }  // namespace pagor::cli

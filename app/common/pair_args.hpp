@@ -3,6 +3,7 @@
 /// The options that select a registration pair, shared by `pagor` and `pagor-studio`.
 
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "common/args.hpp"
@@ -10,6 +11,13 @@
 #include "pagor/eval/pair_set.hpp"
 
 namespace pagor::cli {
+
+/// `--kitti-root DIR`; `beside` says how it goes with the other inputs ("instead of --source").
+Option kitti_root_option(const std::string& beside);
+/// `--sequence SEQ`, with kitti-root: the sequence (sequence_from_args).
+Option sequence_option();
+/// The sequence `--sequence` names; 00 when none does.
+std::string sequence_from_args(const Args& args);
 
 /// `--source/--target` (+ labels), `--kitti-root/--sequence/--pair`, or `--synthetic`.
 std::vector<Option> pair_options();

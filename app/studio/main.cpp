@@ -28,32 +28,31 @@ namespace pagor::studio {
 namespace {
 
 std::vector<cli::Option> studio_options() {
-  std::vector<cli::Option> o = cli::pair_options();
-  const std::vector<cli::Option> more = {
-      {"pairs", 1, "FILE", "pairs file to step through"},
-      {"correspondences", 1, "FILE",
-       "a matcher's correspondences (px py pz qx qy qz [weight [inlier]] per line), as pagor "
-       "register --correspondences: alone, or verified on --source/--target"},
-      {"session", 1, "FILE", "session JSON (data, parameters, camera, layers, level)"},
-      {"headless", 0, "", "render offscreen through OSMesa (no display needed)"},
-      {"screenshot", 1, "PNG", "headless: write the rendered UI to this PNG"},
-      {"size", 1, "WxH", "image or window size in pixels (default 1280x720)"},
-      {"frames", 1, "N", "headless: also time N frames and print the frame time"},
-      {"orbit", 0, "",
-       "headless, with --frames: turn the camera 3 degrees before each timed frame (the frame "
-       "time of an orbit; still frames reuse the last picture of the 3D view)"},
-      {"timings", 0, "",
-       "headless: show wall-clock times in the picture (hidden by default, so that two renders "
-       "of the same inputs are equal byte for byte)"},
-      {"json", 1, "OUT",
-       "headless: write the result as pagor register --json does (schema pagor.register/1)"},
-      {"timeout", 1, "S",
-       "headless: give up waiting for the computation after S seconds (default 600)"},
-  };
-  o.insert(o.end(), more.begin(), more.end());
-  for (cli::Option& c : cli::config_options_for("default, indoor when the target is a floor plan"))
-    o.push_back(std::move(c));
-  return o;
+  return cli::joined(
+      cli::pair_options(),
+      {{
+           {"pairs", 1, "FILE", "pairs file to step through"},
+           {"correspondences", 1, "FILE",
+            "a matcher's correspondences (px py pz qx qy qz [weight [inlier]] per line), as pagor "
+            "register --correspondences: alone, or verified on --source/--target"},
+           {"session", 1, "FILE", "session JSON (data, parameters, camera, layers, level)"},
+           {"headless", 0, "", "render offscreen through OSMesa (no display needed)"},
+           {"screenshot", 1, "PNG", "headless: write the rendered UI to this PNG"},
+           {"size", 1, "WxH", "image or window size in pixels (default 1280x720)"},
+           {"frames", 1, "N", "headless: also time N frames and print the frame time"},
+           {"orbit", 0, "",
+            "headless, with --frames: turn the camera 3 degrees before each timed frame (the frame "
+            "time of an orbit; still frames reuse the last picture of the 3D view)"},
+           {"timings", 0, "",
+            "headless: show wall-clock times in the picture (hidden by default, so that two "
+            "renders "
+            "of the same inputs are equal byte for byte)"},
+           {"json", 1, "OUT",
+            "headless: write the result as pagor register --json does (schema pagor.register/1)"},
+           {"timeout", 1, "S",
+            "headless: give up waiting for the computation after S seconds (default 600)"},
+       },
+       cli::config_options_for("default, indoor when the target is a floor plan")});
 }
 
 AppState state_from_args(const cli::Args& args) {

@@ -10,6 +10,20 @@
 #include "pagor/io/file_input.hpp"
 
 namespace pagor {
+namespace {
+
+// A class made into landmarks by Euclidean clusters: voxel and tolerance [m], sizes [voxels].
+ClassParams cluster_class(const char* name, double voxel_size, double tolerance, int min_points,
+                          int max_points) {
+  ClassParams c{name, LandmarkMethod::cluster};
+  c.voxel_size = voxel_size;
+  c.cluster_tolerance = tolerance;
+  c.min_points = min_points;
+  c.max_points = max_points;
+  return c;
+}
+
+}  // namespace
 
 ClassParams default_structure_keypoints() {
   ClassParams k;
@@ -28,20 +42,10 @@ ClassParams default_structure_keypoints() {
 Config default_config() {
   Config c;
   c.label_scheme = builtin_label_scheme("auto");
-  ClassParams car{"car", LandmarkMethod::cluster};
-  car.voxel_size = 0.2;
-  car.cluster_tolerance = 0.5;
-  car.min_points = 20;
-  car.max_points = 2000;
-  ClassParams trunk{"trunk", LandmarkMethod::cluster};
-  trunk.voxel_size = 0.1;
-  trunk.cluster_tolerance = 0.3;
-  trunk.min_points = 8;
-  trunk.max_points = 1000;
-  ClassParams pole = trunk;
-  pole.name = "pole";
-  ClassParams sign = trunk;
-  sign.name = "traffic-sign";
+  const ClassParams car = cluster_class("car", 0.2, 0.5, 20, 2000);
+  const ClassParams trunk = cluster_class("trunk", 0.1, 0.3, 8, 1000);
+  const ClassParams pole = cluster_class("pole", 0.1, 0.3, 8, 1000);
+  const ClassParams sign = cluster_class("traffic-sign", 0.1, 0.3, 8, 1000);
   ClassParams building{"building", LandmarkMethod::fpfh};
   building.voxel_size = 0.6;
   building.normal_radius = 1.2;
@@ -57,12 +61,7 @@ Config default_config() {
 static Config indoor_config() {
   Config c;
   c.label_scheme = builtin_label_scheme("indoor");
-  ClassParams column{"column", LandmarkMethod::cluster};
-  column.voxel_size = 0.05;
-  column.cluster_tolerance = 0.2;
-  column.min_points = 5;
-  column.max_points = 400;
-  c.landmarks.classes = {column};
+  c.landmarks.classes = {cluster_class("column", 0.05, 0.2, 5, 400)};
   c.landmarks.adapt_to_spacing = false;
   c.landmarks.fallback.mode = FallbackMode::never;
   c.correspondences.max_correspondences = 3000;

@@ -7,7 +7,7 @@ is computed here on its own account.
 """
 from __future__ import annotations
 
-from typing import Any, Dict, List, Optional, Tuple
+from typing import Any, Dict, Generic, List, Optional, Tuple, TypeVar, overload
 
 import numpy as np
 
@@ -24,6 +24,32 @@ def _transform(value: Any) -> Optional[np.ndarray]:
     return None if value is None else np.array(value, dtype=np.float64).reshape(4, 4)
 
 
+_T = TypeVar("_T")
+
+
+class _Key(Generic[_T]):
+    """A read-only attribute that is the report's key of the same name (None where the report
+    does not hold it): the name is written once, as the attribute's."""
+
+    def __init__(self, doc: str):
+        self.__doc__ = doc
+        self._key = ""
+
+    def __set_name__(self, owner: type, name: str) -> None:
+        self._key = name
+
+    @overload
+    def __get__(self, obj: None, owner: type) -> "_Key[_T]": ...
+
+    @overload
+    def __get__(self, obj: object, owner: type) -> _T: ...
+
+    def __get__(self, obj: Any, owner: Optional[type] = None) -> Any:
+        if obj is None:
+            return self
+        return obj._data.get(self._key)
+
+
 def _indent(indent: Optional[int]) -> int:
     if indent is None:
         return -1
@@ -37,95 +63,86 @@ class Level:
     ``levels[i]``; attributes the report does not hold are None)."""
 
     def __init__(self, level: Dict[str, Any]):
-        self._level = level
+        self._data = level
         #: The level's densest clique: indices into `Result.correspondences`, increasing (int64).
         self.clique: np.ndarray = np.asarray(level.get("clique", []), dtype=np.int64)
 
-    @property
-    def level(self) -> int:
-        """The level's index, 0 for the tightest threshold."""
-        return self._level.get("level")
+    level: _Key[int] = _Key(
+        """The level's index, 0 for the tightest threshold.""")
 
-    @property
-    def epsilon(self) -> float:
-        """The TRIM threshold: [m] for a difference TRIM, unitless for a ratio TRIM."""
-        return self._level.get("epsilon")
+    epsilon: _Key[float] = _Key(
+        """The TRIM threshold: [m] for a difference TRIM, unitless for a ratio TRIM.""")
 
-    @property
-    def vertices(self) -> int:
-        """Correspondences with at least one consistency edge at this level."""
-        return self._level.get("vertices")
+    vertices: _Key[int] = _Key(
+        """Correspondences with at least one consistency edge at this level.""")
 
-    @property
-    def edges(self) -> int:
-        """Consistency edges at this level."""
-        return self._level.get("edges")
+    edges: _Key[int] = _Key(
+        """Consistency edges at this level.""")
 
-    @property
-    def clique_size(self) -> int:
-        """Members of the level's clique (len(clique))."""
-        return self._level.get("clique_size")
+    clique_size: _Key[int] = _Key(
+        """Members of the level's clique (len(clique)).""")
 
-    @property
-    def clique_proven(self) -> Optional[bool]:
-        """Whether the clique is proven maximum on its level."""
-        return self._level.get("clique_proven")
+    clique_proven: _Key[Optional[bool]] = _Key(
+        """Whether the clique is proven maximum on its level.""")
 
-    @property
-    def inliers(self) -> int:
-        """GNC-TLS inliers of the level's pose (a count)."""
-        return self._level.get("inliers")
+    inliers: _Key[int] = _Key(
+        """GNC-TLS inliers of the level's pose (a count).""")
 
-    @property
-    def pose_valid(self) -> bool:
-        """Whether the level has a pose (its clique was large enough for the pose model)."""
-        return self._level.get("pose_valid")
+    pose_valid: _Key[bool] = _Key(
+        """Whether the level has a pose (its clique was large enough for the pose model).""")
 
     @property
     def T_target_source(self) -> Optional[np.ndarray]:
         """The level's pose (4 x 4 float64) in the frames of the inputs; None when invalid."""
-        return _transform(self._level.get("T_target_source"))
+        return _transform(self._data.get("T_target_source"))
 
-    @property
-    def score_D(self) -> Optional[float]:
+    score_D: _Key[Optional[float]] = _Key(
         """Verification score D [m] on the clouds, lower is better; None when not scored (no
-        valid pose, or no clouds)."""
-        return self._level.get("score_D")
+    valid pose, or no clouds).""")
 
-    @property
-    def support(self) -> Optional[int]:
-        """Selected without clouds: the correspondences the pose explains; None otherwise."""
-        return self._level.get("support")
+    support: _Key[Optional[int]] = _Key(
+        """Selected without clouds: the correspondences the pose explains; None otherwise.""")
 
-    @property
-    def translation_error_m(self) -> Optional[float]:
-        """Translation error against the ground truth [m]; None without one."""
-        return self._level.get("translation_error_m")
+    translation_error_m: _Key[Optional[float]] = _Key(
+        """Translation error against the ground truth [m]; None without one.""")
 
-    @property
-    def rotation_error_deg(self) -> Optional[float]:
-        """Rotation error against the ground truth [deg]; None without one."""
-        return self._level.get("rotation_error_deg")
+    rotation_error_deg: _Key[Optional[float]] = _Key(
+        """Rotation error against the ground truth [deg]; None without one.""")
 
-    @property
-    def success(self) -> Optional[bool]:
-        """Within the success criterion of the ground truth; None without one."""
-        return self._level.get("success")
+    success: _Key[Optional[bool]] = _Key(
+        """Within the success criterion of the ground truth; None without one.""")
 
     def to_dict(self) -> Dict[str, Any]:
         """The report's ``levels[i]`` (the dict itself: do not change it)."""
-        return self._level
+        return self._data
 
     def __eq__(self, other: object) -> bool:
-        return isinstance(other, Level) and self._level == other._level
+        return isinstance(other, Level) and self._data == other._data
 
     def __repr__(self) -> str:
-        return (f"<pagor.Level {self._level.get('level', -1)}: epsilon "
-                f"{self._level.get('epsilon', 0.0):g}, clique {self._level.get('clique_size', 0)}"
-                f", inliers {self._level.get('inliers', 0)}>")
+        return (f"<pagor.Level {self._data.get('level', -1)}: epsilon "
+                f"{self._data.get('epsilon', 0.0):g}, clique {self._data.get('clique_size', 0)}"
+                f", inliers {self._data.get('inliers', 0)}>")
 
 
-class Landmarks:
+class _Rows:
+    """Rows that each have a class: `class_index` into `class_names`, -1 for none."""
+
+    class_index: np.ndarray
+    class_names: Tuple[str, ...]
+
+    @property
+    def class_name(self) -> np.ndarray:
+        """Each row's class name (an array of str; "" where there is none: a matcher's
+        correspondence)."""
+        table = np.array(list(self.class_names) + [""], dtype=str)
+        return table[np.where(self.class_index < 0, len(self.class_names), self.class_index)]
+
+    def __len__(self) -> int:
+        return len(self.class_index)
+
+
+class Landmarks(_Rows):
     """A cloud's landmarks: `positions` (N x 3 float64 [m], in the frame of the points as given)
     and `class_index` (N int32, into `class_names`; the configured classes)."""
 
@@ -135,24 +152,11 @@ class Landmarks:
         self.class_index = class_index
         self.class_names = class_names
 
-    @property
-    def class_name(self) -> np.ndarray:
-        """Each landmark's class name (an array of str)."""
-        return _names(self.class_names, self.class_index)
-
-    def __len__(self) -> int:
-        return len(self.positions)
-
     def __repr__(self) -> str:
         return f"<pagor.Landmarks: {len(self)}>"
 
 
-def _names(names: Tuple[str, ...], index: np.ndarray) -> np.ndarray:
-    table = np.array(list(names) + [""], dtype=str)  # index -1 (no class): ""
-    return table[np.where(index < 0, len(names), index)]
-
-
-class Correspondences:
+class Correspondences(_Rows):
     """The putative correspondences the pyramid was built on; each level's `clique` indexes
     them. `p`, `q`: source and target points (N x 3 float64 [m], in the frames of the inputs);
     `class_index` (N int32, into `class_names`; -1 for a matcher's correspondence, which has no
@@ -170,14 +174,6 @@ class Correspondences:
         self.score: np.ndarray = arrays["score"]
         self.class_names = class_names
 
-    @property
-    def class_name(self) -> np.ndarray:
-        """Each correspondence's class name ("" for a matcher's)."""
-        return _names(self.class_names, self.class_index)
-
-    def __len__(self) -> int:
-        return len(self.p)
-
     def __repr__(self) -> str:
         counts = ", ".join(f"{o} {int((self.origin == o).sum())}" for o in ORIGINS)
         return f"<pagor.Correspondences: {len(self)} ({counts})>"
@@ -193,7 +189,7 @@ class Result:
     and `correspondences` (Correspondences: the rows the cliques index)."""
 
     def __init__(self, run: Dict[str, Any]):
-        self._report: Dict[str, Any] = run["report"]
+        self._data: Dict[str, Any] = run["report"]
         names = tuple(run["class_names"])
         self.landmarks: Dict[str, Landmarks] = {
             side: Landmarks(run["landmarks"][side]["positions"],
@@ -202,56 +198,52 @@ class Result:
         """Each cloud's landmarks ('source', 'target'); empty without clouds."""
         self.correspondences = Correspondences(run["correspondences"], names)
         """The correspondences the levels' cliques index."""
-        self.levels: List[Level] = [Level(level) for level in self._report.get("levels", [])]
+        self.levels: List[Level] = [Level(level) for level in self._data.get("levels", [])]
         """Per pyramid level: threshold, clique, pose, score (pagor.Level)."""
 
     @property
     def T_target_source(self) -> Optional[np.ndarray]:
         """The selected transform (4 x 4 float64) that maps source points into the target frame,
         in the frames of the points as given; None when no level has a valid pose."""
-        return _transform(self._report.get("T_target_source"))
+        return _transform(self._data.get("T_target_source"))
 
-    @property
-    def selected_level(self) -> Optional[int]:
-        """Index into `levels` of the selected pose; None when no level has a valid pose."""
-        return self._report.get("selected_level")
+    selected_level: _Key[Optional[int]] = _Key(
+        """Index into `levels` of the selected pose; None when no level has a valid pose.""")
 
-    @property
-    def selected_by(self) -> str:
+    selected_by: _Key[str] = _Key(
         """'score_D' (lowest D on the clouds) or 'without_clouds' (the best support among the
-        correspondences, when there were no clouds)."""
-        return self._report.get("selected_by")
+    correspondences, when there were no clouds).""")
 
     @property
     def accepted(self) -> bool:
         """The verdict: whether the selected pose is trusted. False when there is no pose, and
         False when there were no clouds to verify it on (`verified` is then False too)."""
-        return bool(self._report["acceptance"]["accepted"]) and self.T_target_source is not None
+        return bool(self._data["acceptance"]["accepted"]) and self.T_target_source is not None
 
     @property
     def verified(self) -> bool:
         """Whether the pose was judged on clouds (False for correspondences alone)."""
-        return bool(self._report["acceptance"].get("verified", True))
+        return bool(self._data["acceptance"].get("verified", True))
 
     @property
     def acceptance(self) -> Dict[str, Any]:
         """The verdict's numbers: accepted, verified, overlap, inliers, margin, sharpness,
         ambiguity, alternative, tests, reason (why it was rejected, or that there was nothing to
         verify on), wrong_pose_accepted (accepted while the ground truth calls it wrong)."""
-        return self._report["acceptance"]
+        return self._data["acceptance"]
 
     @property
     def acceptance_tests(self) -> List[Dict[str, Any]]:
         """Every test of the verdict with its value and threshold, in the order the reason is
         chosen: dicts with name, value, threshold, comparison (">=" or "<="), passed, applies,
         unit, description. Empty when nothing was judged."""
-        return self._report["acceptance"].get("tests", [])
+        return self._data["acceptance"].get("tests", [])
 
     @property
     def alternative(self) -> Optional[Dict[str, Any]]:
         """The best distinct pose that explains the clouds about as well as the selected one
         (description, ratio, T_target_source as a 4 x 4 array), or None."""
-        alt = self._report["acceptance"].get("alternative")
+        alt = self._data["acceptance"].get("alternative")
         if alt is None:
             return None
         return {**alt, "T_target_source": _transform(alt["T_target_source"])}
@@ -259,47 +251,39 @@ class Result:
     @property
     def wrong_pose_accepted(self) -> bool:
         """Accepted although the ground truth calls the pose wrong (False without a truth)."""
-        return bool(self._report["acceptance"].get("wrong_pose_accepted", False))
+        return bool(self._data["acceptance"].get("wrong_pose_accepted", False))
 
-    @property
-    def ground_truth(self) -> Optional[Dict[str, Any]]:
+    ground_truth: _Key[Optional[Dict[str, Any]]] = _Key(
         """Against the ground truth given: T_target_source, errors, success, upper_bound (some
-        level's pose is right); None without one."""
-        return self._report.get("ground_truth")
+    level's pose is right); None without one.""")
 
-    @property
-    def diagnosis(self) -> Optional[Dict[str, Any]]:
+    diagnosis: _Key[Optional[Dict[str, Any]]] = _Key(
         """The stage at fault against the ground truth (a dict with 'verdict'); None without
-        ground truth."""
-        return self._report.get("diagnosis")
+    ground truth.""")
 
-    @property
-    def timings_ms(self) -> Dict[str, float]:
-        """Wall time per stage and in total ('total') [ms]."""
-        return self._report.get("timings_ms")
+    timings_ms: _Key[Dict[str, float]] = _Key(
+        """Wall time per stage and in total ('total') [ms].""")
 
     @property
     def warnings(self) -> List[str]:
         """The run's warnings (also in the report)."""
-        return self._report.get("warnings", [])
+        return self._data.get("warnings", [])
 
-    @property
-    def config(self) -> Dict[str, Any]:
-        """The full configuration used (pagor.check_config's form)."""
-        return self._report.get("config")
+    config: _Key[Dict[str, Any]] = _Key(
+        """The full configuration used (pagor.check_config's form).""")
 
     def to_dict(self) -> Dict[str, Any]:
         """The report as a dict (json.loads(to_json())); the Result's own, do not change it."""
-        return self._report
+        return self._data
 
     def to_json(self, indent: Optional[int] = 2) -> str:
         """The report as JSON text, exactly as ``pagor register --json`` writes it (schema
         pagor.register/1; keys sorted). indent: spaces per level, at most 16 (larger is
         clamped); -1 or None: one line."""
-        return _pagor.dump_json(self._report, _indent(indent))
+        return _pagor.dump_json(self._data, _indent(indent))
 
     def __eq__(self, other: object) -> bool:
-        return isinstance(other, Result) and self._report == other._report
+        return isinstance(other, Result) and self._data == other._data
 
     def __repr__(self) -> str:
         T = self.T_target_source

@@ -45,6 +45,16 @@ std::vector<int> core_numbers_by_definition(const detail::LevelCsr& g) {
   return core;
 }
 
+// A level's search that its node budget cut short: not proven, says so, and still returns a
+// clique of level 0 under a bound no smaller than it.
+void check_cut_by_nodes(const PyramidGraph& g, const CliqueResult& r) {
+  CHECK_FALSE(r.proven);
+  CHECK(r.budget == CliqueBudget::nodes);
+  CHECK(is_clique(g, 0, r.vertices));
+  CHECK_FALSE(r.vertices.empty());
+  CHECK(r.clique_number_bound >= static_cast<int>(r.vertices.size()));
+}
+
 }  // namespace
 
 TEST_CASE("core numbers, degeneracy order and k-cores agree with their definitions") {
@@ -246,11 +256,7 @@ TEST_CASE("the exact solver stops at its node budget and says so") {
   cp.exact_max_nodes = 5;
   const PyramidGraph g = random_graph(200, 0.5, 0, 1);
   const CliqueResult r = exact_max_clique(g, 0, cp);
-  CHECK_FALSE(r.proven);
-  CHECK(r.budget == CliqueBudget::nodes);
-  CHECK(is_clique(g, 0, r.vertices));
-  CHECK_FALSE(r.vertices.empty());
-  CHECK(r.clique_number_bound >= static_cast<int>(r.vertices.size()));
+  check_cut_by_nodes(g, r);
 }
 
 TEST_CASE("a near-complete graph's search stops at its node budget and says so") {
@@ -264,11 +270,7 @@ TEST_CASE("a near-complete graph's search stops at its node budget and says so")
     const CliqueResult r = exact_max_clique(g, 0, cp);
     INFO("seed " << seed << ", clique " << r.vertices.size() << ", bound "
                  << r.clique_number_bound);
-    CHECK_FALSE(r.proven);
-    CHECK(r.budget == CliqueBudget::nodes);
-    CHECK(is_clique(g, 0, r.vertices));
-    CHECK_FALSE(r.vertices.empty());
-    CHECK(r.clique_number_bound >= static_cast<int>(r.vertices.size()));
+    check_cut_by_nodes(g, r);
   }
 }
 

@@ -27,6 +27,17 @@ std::vector<Correspondence> random_correspondences(int m, std::uint64_t seed) {
   return c;
 }
 
+// Checks, array by array (a failure names the array), that `got` is the graph `want` is.
+void check_same_graph(const PyramidGraph& got, const PyramidGraph& want) {
+  CHECK(got.vertices == want.vertices);
+  CHECK(got.thresholds == want.thresholds);
+  CHECK(got.offsets == want.offsets);
+  CHECK(got.neighbors == want.neighbors);
+  CHECK(got.level == want.level);
+  CHECK(got.trim == want.trim);
+  CHECK(got.edges_at_level == want.edges_at_level);
+}
+
 // Lowest level of pair (i, j) by the definition, or -1.
 int reference_level(const std::vector<Correspondence>& c, std::size_t i, std::size_t j,
                     const GraphParams& p) {
@@ -84,10 +95,8 @@ TEST_CASE("threads give the same graph") {
   const PyramidGraph one = build_pyramid_graph(c, p, 1);
   const PyramidGraph two = build_pyramid_graph(c, p, 2);
   const PyramidGraph three = build_pyramid_graph(c, p, 3);
-  CHECK(one.offsets == two.offsets);
-  CHECK(one.neighbors == two.neighbors);
-  CHECK(one.level == two.level);
-  CHECK(one.neighbors == three.neighbors);
+  check_same_graph(two, one);
+  check_same_graph(three, one);
 }
 
 TEST_CASE("a builder reusing its storage gives the graphs of fresh builds, whatever came before") {
@@ -115,12 +124,7 @@ TEST_CASE("a builder reusing its storage gives the graphs of fresh builds, whate
     CAPTURE(s.m, s.threads);
     CHECK(&built == &kept);  // the same object, rebuilt
     CHECK(built.vertices == s.m);
-    CHECK(built.thresholds == p.thresholds);
-    CHECK(built.offsets == fresh.offsets);
-    CHECK(built.neighbors == fresh.neighbors);
-    CHECK(built.level == fresh.level);
-    CHECK(built.trim == fresh.trim);
-    CHECK(built.edges_at_level == fresh.edges_at_level);
+    check_same_graph(built, fresh);
     if (s.m > 0) CHECK(built.edges_at_level.back() > 0);
   }
   // A copy has the graph; a moved-from builder builds again.
@@ -152,10 +156,7 @@ TEST_CASE("large and far-flung graphs (tiled placement, the exact path) equal th
     const PyramidGraph& g = builder.build(c, p, 3);
     const PyramidGraph one = build_pyramid_graph(c, p, 1);
     CAPTURE(scale, c.size());
-    CHECK(g.offsets == one.offsets);
-    CHECK(g.neighbors == one.neighbors);
-    CHECK(g.level == one.level);
-    CHECK(g.edges_at_level == one.edges_at_level);
+    check_same_graph(g, one);
     REQUIRE(g.edges_at_level.back() > 0);
     for (int v = 0; v < g.vertices; ++v) {  // rows sorted, every edge in both rows, same level
       const auto b = static_cast<std::size_t>(g.offsets[static_cast<std::size_t>(v)]);

@@ -24,21 +24,6 @@ using namespace pagor::test;
 
 namespace {
 
-// Two semreg-dev pairs (03 and the first known negative) as a manifest in `tmp`.
-std::string small_manifest(const TempDir& tmp) {
-  const std::string d = shared_data() + "/semreg-dev/";
-  const std::string path = tmp.file("pairs.txt");
-  std::ofstream(path) << d << "03/source.pcd " << d << "03/target.pcd gt=" << d
-                      << "03/T_target_source.txt name=03\n"
-                      << d << "05/source.pcd " << d << "05/target.pcd gt=" << d
-                      << "05/T_target_source.txt name=05\n";
-  return path;
-}
-
-Config semreg_config() {
-  return load_config(PAGOR_SOURCE_DIR "/bench/manifests/semreg-dev.json");
-}
-
 void wait(studio::BenchWorker& w) {
   REQUIRE(w.wait_idle(600));
 }
@@ -47,7 +32,7 @@ void wait(studio::BenchWorker& w) {
 
 TEST_CASE("benchmark view: a parameter change re-evaluates the set as a fresh run would") {
   TempDir tmp;
-  const PairSet set = read_pair_manifest(small_manifest(tmp));
+  const PairSet set = read_pair_manifest(semreg_manifest(tmp, {"03", "05"}));
   studio::BenchWorker worker;
   Config config = semreg_config();
   worker.open(set, config);
@@ -97,7 +82,7 @@ TEST_CASE("benchmark view: a parameter change re-evaluates the set as a fresh ru
 // verdict, selected level and score.
 void check_sweep_equals_core(int jobs) {
   TempDir tmp;
-  const PairSet set = read_pair_manifest(small_manifest(tmp));
+  const PairSet set = read_pair_manifest(semreg_manifest(tmp, {"03", "05"}));
   studio::BenchWorker worker;
   worker.set_jobs(jobs);
   worker.open(set, semreg_config());
@@ -134,7 +119,7 @@ TEST_CASE("benchmark view: a sweep over the open set equals core run_sweep") {
 
 // The small manifest and a pair whose source file is empty (its row fails on its own account).
 PairSet set_with_broken_pair(const TempDir& tmp) {
-  PairSet set = read_pair_manifest(small_manifest(tmp));
+  PairSet set = read_pair_manifest(semreg_manifest(tmp, {"03", "05"}));
   PairEntry broken = set.pairs.front();
   broken.name = "broken";
   broken.source.source = tmp.file("empty.pcd");
@@ -428,15 +413,12 @@ TEST_CASE("benchmark view: jobs saved with the session, 1 when absent, checked w
 
 TEST_CASE("every widget of the benchmark view, driven") {
   TempDir tmp;
-  studio::AppState s = files_state(tmp);
-  s.config = semreg_config();
-  s.bench.path = small_manifest(tmp);
+  studio::AppState s = semreg_files_state(tmp);
+  s.bench.path = semreg_manifest(tmp, {"03", "05"});
   s.bench.plot_path = tmp.file("plot");
   UiDriver d(s);
   d.settle();
-  REQUIRE(d.click_widget("benchmark view...", "Pagor Studio"));
-  d.frames(2);
-  REQUIRE(d.click_widget("open and run##bench", "Benchmark"));
+  d.open_and_run_bench();
   d.settle_bench();
   CHECK(d.studio().bench().status().done == 2);
   // A row opens its pair in the pair view; the data panel leads back with the table kept.
@@ -455,7 +437,7 @@ TEST_CASE("every widget of the benchmark view, driven") {
         d.state().dialog.open = false;  // the file browser has a test of its own
         if (d.state().main_view == studio::MainView::benchmark && d.studio().bench().can_rerun())
           return;
-        d.state().bench.path = small_manifest(tmp);
+        d.state().bench.path = semreg_manifest(tmp, {"03", "05"});
         d.state().bench.source = studio::BenchSource::manifest;
         if (!d.studio().bench().can_rerun()) d.studio().open_benchmark_now();
         d.state().main_view = studio::MainView::benchmark;
@@ -571,7 +553,7 @@ TEST_CASE("a session reopens its set in the view it was saved in") {
   for (const studio::MainView view : {studio::MainView::pair, studio::MainView::benchmark}) {
     studio::AppState s = files_state(tmp);
     s.config = semreg_config();
-    s.bench.path = small_manifest(tmp);
+    s.bench.path = semreg_manifest(tmp, {"03", "05"});
     s.bench.open = true;  // a set is open, and the view is `view` (a row opened: the pair view)
     s.main_view = view;
     studio::save_session(s, tmp.file("s.json"));

@@ -16,21 +16,6 @@ using namespace pagor::test;
 
 namespace {
 
-// semreg-dev pairs 03 to 06 as a manifest in `tmp`.
-std::string manifest(const TempDir& tmp) {
-  const std::string d = shared_data() + "/semreg-dev/";
-  const std::string path = tmp.file("pairs.txt");
-  std::ofstream out(path);
-  for (const char* n : {"03", "04", "05", "06"})
-    out << d << n << "/source.pcd " << d << n << "/target.pcd gt=" << d << n
-        << "/T_target_source.txt name=" << n << "\n";
-  return path;
-}
-
-Config semreg_config() {
-  return load_config(PAGOR_SOURCE_DIR "/bench/manifests/semreg-dev.json");
-}
-
 // Waits (up to 10 min) until `done` holds for the worker's status.
 template <class Done>
 studio::BenchStatus wait_for(const studio::BenchWorker& w, Done done) {
@@ -47,7 +32,7 @@ studio::BenchStatus wait_for(const studio::BenchWorker& w, Done done) {
 
 TEST_CASE("benchmark view: a cancelled pass stops between pairs, and resume finishes it") {
   TempDir tmp;
-  const PairSet set = read_pair_manifest(manifest(tmp));
+  const PairSet set = read_pair_manifest(semreg_manifest(tmp, {"03", "04", "05", "06"}));
   studio::BenchWorker worker;
   worker.open(set, semreg_config());
   worker.cancel();  // before its first pair: none runs
@@ -67,7 +52,7 @@ TEST_CASE("benchmark view: a cancelled pass stops between pairs, and resume fini
 
 TEST_CASE("benchmark view: a cancelled sweep leaves no result, and the next sweep runs") {
   TempDir tmp;
-  const PairSet set = read_pair_manifest(manifest(tmp));
+  const PairSet set = read_pair_manifest(semreg_manifest(tmp, {"03", "04", "05", "06"}));
   studio::BenchWorker worker;
   worker.open(set, semreg_config());
   REQUIRE(worker.wait_idle(600));
@@ -95,14 +80,11 @@ TEST_CASE("benchmark view: a cancelled sweep leaves no result, and the next swee
 
 TEST_CASE("benchmark view: the cancel and resume buttons, driven") {
   TempDir tmp;
-  studio::AppState s = files_state(tmp);
-  s.config = semreg_config();
-  s.bench.path = manifest(tmp);
+  studio::AppState s = semreg_files_state(tmp);
+  s.bench.path = semreg_manifest(tmp, {"03", "04", "05", "06"});
   UiDriver d(s);
   d.settle();
-  REQUIRE(d.click_widget("benchmark view...", "Pagor Studio"));
-  d.frames(2);
-  REQUIRE(d.click_widget("open and run##bench", "Benchmark"));
+  d.open_and_run_bench();
   d.frame();
   REQUIRE(d.find("cancel##bench", "Benchmark"));  // four pairs take seconds
   const studio::BenchStatus running = d.studio().bench().status();

@@ -27,10 +27,6 @@ std::string semreg(const std::string& file) {
   return shared_data() + "/semreg-dev/" + file;
 }
 
-Config semreg_config() {
-  return load_config(PAGOR_SOURCE_DIR "/bench/manifests/semreg-dev.json");
-}
-
 // A pipeline run as `pagor register` runs it.
 Pipeline cli_run(const PairSource& src, const Config& config) {
   const LoadedPair pair = load_pair(src, config.indoor);
@@ -108,8 +104,7 @@ TEST_CASE(
     "3: a sweep is marked stale when the parameters or the set change; apply sets only the "
     "swept values") {
   TempDir tmp;
-  studio::AppState s = files_state(tmp);
-  s.config = semreg_config();
+  studio::AppState s = semreg_files_state(tmp);
   const std::string manifest = tmp.file("pairs.txt");
   std::ofstream(manifest) << semreg("03/source.pcd") << " " << semreg("03/target.pcd")
                           << " gt=" << semreg("03/T_target_source.txt") << " name=03\n";
@@ -147,9 +142,7 @@ TEST_CASE(
 #ifdef PAGOR_HAVE_KITTI
 TEST_CASE("4: a pose refinement rescues is a success within the upper bound, and so diagnosed") {
   TempDir tmp;
-  studio::AppState s = kitti_state(tmp);
-  s.data.source_frame = 0;
-  s.data.target_frame = 20;
+  studio::AppState s = kitti_state(tmp, 0, 20);
   s.config.evaluation.max_translation_error =
       1.34;  // every candidate misses (1.35 m..), the refined not
   UiDriver d(s, 1400, 900);
@@ -256,8 +249,7 @@ TEST_CASE(
     "8: Left/Right step through any manifest; long paths show their end; defaults keep "
     "the label scheme") {
   TempDir tmp;
-  studio::AppState s = files_state(tmp);
-  s.config = semreg_config();
+  studio::AppState s = semreg_files_state(tmp);
   s.pairs_file = PAGOR_SOURCE_DIR "/tests/studio/bench_pairs.txt";
   UiDriver d(s, 800, 700);
   d.settle();

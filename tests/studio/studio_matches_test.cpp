@@ -87,6 +87,15 @@ studio::AppState empty_files_state(const TempDir& tmp) {
   return s;
 }
 
+// gedi-dev problem 03 alone (no clouds), with its ground truth when `truth`.
+studio::AppState gedi_state(const TempDir& tmp, bool truth = true) {
+  studio::AppState s = empty_files_state(tmp);
+  s.data.correspondences = gedi("03.txt");
+  if (truth) s.data.ground_truth = gedi("03.T.txt");
+  s.have_data = true;
+  return s;
+}
+
 }  // namespace
 
 TEST_CASE("a correspondences file is told apart from pairs files and transforms") {
@@ -156,10 +165,7 @@ TEST_CASE("a gedi-dev problem opened alone through the file browser: the back en
 
 TEST_CASE("a matcher's clique stands out: members marked at both ends, the rest faint") {
   TempDir tmp;
-  studio::AppState st = empty_files_state(tmp);
-  st.data.correspondences = gedi("03.txt");
-  st.data.ground_truth = gedi("03.T.txt");
-  st.have_data = true;
+  studio::AppState st = gedi_state(tmp);
   st.view.pose = studio::PoseShown::ground_truth;  // true members: lines of (almost) no length
   UiDriver d(st, 1280, 800);
   d.settle();
@@ -191,9 +197,8 @@ TEST_CASE("a matcher's clique stands out: members marked at both ends, the rest 
   for (int v : clique) {
     const Correspondence& c = snap->correspondences[static_cast<std::size_t>(v)];
     Eigen::Vector2f a, b;
-    REQUIRE(studio::project_to_screen(r.view_projection,
-                                      studio::transform_point(*snap->ground_truth, c.p), 600, 600,
-                                      a));
+    REQUIRE(studio::project_to_screen(
+        r.view_projection, studio::transform_point(*snap->ground_truth, c.p), 600, 600, a));
     REQUIRE(studio::project_to_screen(r.view_projection, c.q.cast<float>(), 600, 600, b));
     if ((a - b).norm() >= 1.0f) continue;
     ++short_lines;
@@ -280,10 +285,7 @@ TEST_CASE("an epsilon or mu change on gedi-dev 03 re-runs on the worker (latency
   const bool truth = GENERATE(false, true);  // with a ground truth the diagnosis runs too
   std::printf("gedi-dev 03 %s ground truth:\n", truth ? "with" : "without");
   TempDir tmp;
-  studio::AppState s = empty_files_state(tmp);
-  s.data.correspondences = gedi("03.txt");
-  if (truth) s.data.ground_truth = gedi("03.T.txt");
-  s.have_data = true;
+  studio::AppState s = gedi_state(tmp, truth);
   UiDriver d(std::move(s), 1024, 700);
   d.settle();
   REQUIRE(d.studio().worker().snapshot());
@@ -336,10 +338,7 @@ TEST_CASE("an epsilon or mu change on gedi-dev 03 re-runs on the worker (latency
 
 TEST_CASE("diagnosis of a correspondences file without clouds: no D, the rule named, as the CLI") {
   TempDir tmp;
-  studio::AppState s = empty_files_state(tmp);
-  s.data.correspondences = gedi("03.txt");
-  s.data.ground_truth = gedi("03.T.txt");
-  s.have_data = true;
+  studio::AppState s = gedi_state(tmp);
   s.view.diagnosis.panel = true;
   UiDriver d(std::move(s), 1400, 900);
   d.settle();

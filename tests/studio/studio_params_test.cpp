@@ -24,6 +24,15 @@ bool marked(const studio::ui::WidgetRecord& w) {
   return w.label.rfind("* ", 0) == 0;
 }
 
+// The editor's verification.mu slider, once the studio has settled with every node open.
+const studio::ui::WidgetRecord& mu_slider(UiDriver& d) {
+  d.settle();
+  d.open_all_nodes();
+  const auto* mu = d.find_param("verification.mu");
+  REQUIRE(mu);
+  return *mu;
+}
+
 }  // namespace
 
 TEST_CASE("every number of the catalog gets a widget over its own range and scale") {
@@ -56,10 +65,7 @@ TEST_CASE("every number of the catalog gets a widget over its own range and scal
 TEST_CASE("a parameter edited in the editor is marked, reset to the preset, and undone") {
   TempDir tmp;
   UiDriver d(synthetic_state(tmp), 900, 1000);
-  d.settle();
-  d.open_all_nodes();
-  const auto* mu = d.find_param("verification.mu");
-  REQUIRE(mu);
+  const auto* mu = &mu_slider(d);
   CHECK_FALSE(marked(*mu));
   CHECK(mu->has_tooltip);
   CHECK(mu->lo == Approx(0.0).margin(1e-3));  // (0, 1000] on a log scale
@@ -177,9 +183,7 @@ TEST_CASE("a search narrows the parameter editor and the sweep's parameter list"
   CHECK(params_shown() == all);
 
   // The sweep's parameter list.
-  REQUIRE(d.click_widget("benchmark view...", "Pagor Studio"));
-  d.frames(2);
-  REQUIRE(d.click_widget("open and run##bench", "Benchmark"));
+  d.open_and_run_bench();
   d.settle_bench();
   const auto* sweep_find = d.find("find##sweep", "Benchmark");
   REQUIRE(sweep_find);
@@ -269,10 +273,7 @@ TEST_CASE(
     "a value typed into a slider is applied once, when the field is left, not per keystroke") {
   TempDir tmp;
   UiDriver d(synthetic_state(tmp), 900, 1000);
-  d.settle();
-  d.open_all_nodes();
-  const auto* mu = d.find_param("verification.mu");
-  REQUIRE(mu);
+  const auto* mu = &mu_slider(d);
   const ImGuiID id = mu->id;
   const double mu0 = d.state().config.verification.mu;
   REQUIRE(mu0 != 0.35);

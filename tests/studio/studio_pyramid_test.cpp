@@ -115,9 +115,7 @@ TEST_CASE("the verdict line gives the refined errors and the candidate's, each l
 #ifdef PAGOR_HAVE_KITTI
 TEST_CASE("the selected level's refined pose is a labelled row under its candidate") {
   TempDir tmp;
-  studio::AppState s = kitti_state(tmp);
-  s.data.source_frame = 0;
-  s.data.target_frame = 20;
+  studio::AppState s = kitti_state(tmp, 0, 20);
   UiDriver d(s, 1400, 900);
   d.settle();
   const auto snap = d.studio().worker().snapshot();

@@ -1,8 +1,11 @@
 #pragma once
 // States the studio tests open, and where the shared data is.
 
+#include <fstream>
+#include <initializer_list>
 #include <string>
 
+#include "pagor/config.hpp"
 #include "pagor/io/kitti.hpp"
 #include "state/app_state.hpp"
 #include "support/test_util.hpp"
@@ -11,6 +14,22 @@ namespace pagor::test {
 
 inline std::string shared_data() {
   return PAGOR_SHARED_DATA;
+}
+
+/// semreg-dev pairs `names` ("03", ...) with their ground truths as a manifest in `tmp`.
+inline std::string semreg_manifest(const TempDir& tmp, std::initializer_list<const char*> names) {
+  const std::string d = shared_data() + "/semreg-dev/";
+  const std::string path = tmp.file("pairs.txt");
+  std::ofstream out(path);
+  for (const char* n : names)
+    out << d << n << "/source.pcd " << d << n << "/target.pcd gt=" << d << n
+        << "/T_target_source.txt name=" << n << "\n";
+  return path;
+}
+
+/// The configuration the semreg-dev benchmark runs with (its label scheme).
+inline Config semreg_config() {
+  return load_config(PAGOR_SOURCE_DIR "/bench/manifests/semreg-dev.json");
 }
 
 /// Keeps the dense clouds hidden: llvmpipe draws them in 25-100 ms a frame, the UI alone in
@@ -44,13 +63,22 @@ inline studio::AppState files_state(const TempDir& tmp) {
   return s;
 }
 
-inline studio::AppState kitti_state(const TempDir& tmp) {
+/// files_state with the configuration of the semreg-dev benchmark.
+inline studio::AppState semreg_files_state(const TempDir& tmp) {
+  studio::AppState s = files_state(tmp);
+  s.config = semreg_config();
+  return s;
+}
+
+/// KITTI sequence 00, frames `source_frame` and `target_frame`, stepping through the dev pairs.
+inline studio::AppState kitti_state(const TempDir& tmp, int source_frame = 20,
+                                    int target_frame = 30) {
   studio::AppState s = base_state(tmp);
   s.data.kind = PairSource::Kind::kitti;
   s.data.kitti_root = PAGOR_KITTI_DIR;
   s.data.sequence = "00";
-  s.data.source_frame = 20;
-  s.data.target_frame = 30;
+  s.data.source_frame = source_frame;
+  s.data.target_frame = target_frame;
   s.pairs_file = std::string(PAGOR_KITTI_DIR) + "/pairs_00_dev.txt";
   s.pairs = studio::read_step_pairs(s.pairs_file, PAGOR_KITTI_DIR, "00");
   s.pair_index = studio::index_of_pair(s.pairs, s.data);

@@ -21,6 +21,15 @@ PairSource synthetic(std::uint64_t seed) {
   return d;
 }
 
+// Two cloud files as a pair.
+PairSource files(const std::string& source, const std::string& target) {
+  PairSource d;
+  d.kind = PairSource::Kind::files;
+  d.source = source;
+  d.target = target;
+  return d;
+}
+
 }  // namespace
 
 TEST_CASE("requests submitted during a run: the last one is answered, readers see whole results") {
@@ -71,10 +80,8 @@ TEST_CASE("an invalid configuration is reported and the last good result kept") 
 #ifdef PAGOR_HAVE_KITTI
 TEST_CASE("an unlabelled pair runs on class-agnostic landmarks instead of being refused") {
   Worker worker;
-  PairSource d;
-  d.kind = PairSource::Kind::files;
-  d.source = std::string(PAGOR_KITTI_DIR) + "/sequences/00/velodyne/000020.bin";
-  d.target = std::string(PAGOR_KITTI_DIR) + "/sequences/00/velodyne/000030.bin";
+  const std::string scans = std::string(PAGOR_KITTI_DIR) + "/sequences/00/velodyne/";
+  const PairSource d = files(scans + "000020.bin", scans + "000030.bin");
   worker.submit(d, default_config());
   REQUIRE(worker.wait_idle(kTimeout));
   CHECK(worker.status().error.empty());
@@ -89,11 +96,9 @@ TEST_CASE("an unlabelled pair runs on class-agnostic landmarks instead of being 
 #if defined(PAGOR_GEDI_DIR) && defined(PAGOR_HAVE_SEMREG_DATA)
 TEST_CASE("a matcher's correspondences replace the landmark ones, or join them when fused") {
   Worker worker;
-  PairSource d;
-  d.kind = PairSource::Kind::files;
-  d.source = std::string(PAGOR_SEMREG_DIR) + "/08/source.pcd";
-  d.target = std::string(PAGOR_SEMREG_DIR) + "/08/target.pcd";
-  d.ground_truth = std::string(PAGOR_SEMREG_DIR) + "/08/T_target_source.txt";
+  const std::string pair = std::string(PAGOR_SEMREG_DIR) + "/08/";
+  PairSource d = files(pair + "source.pcd", pair + "target.pcd");
+  d.ground_truth = pair + "T_target_source.txt";
   d.correspondences = std::string(PAGOR_GEDI_DIR) + "/08.txt";
   Config config = default_config();
   worker.submit(d, config);

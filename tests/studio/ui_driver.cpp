@@ -144,10 +144,14 @@ void UiDriver::settle_bench() {
   frames(3);
 }
 
-void UiDriver::run_bench_and_sweep() {
+void UiDriver::open_and_run_bench() {
   REQUIRE(click_widget("benchmark view...", "Pagor Studio"));
   frames(2);
   REQUIRE(click_widget("open and run##bench", "Benchmark"));
+}
+
+void UiDriver::run_bench_and_sweep() {
+  open_and_run_bench();
   settle_bench();
   REQUIRE(click_widget("run sweep##sweep", "Benchmark"));
   settle_bench();

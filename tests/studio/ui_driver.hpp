@@ -56,6 +56,8 @@ class UiDriver {
   void settle(double timeout_s = 240);
   /// Frames until the benchmark view's worker is idle and its sweep, if any, has ended.
   void settle_bench();
+  /// From the main window: opens the benchmark view and starts its set (not waiting for it).
+  void open_and_run_bench();
   /// From the main window: opens the benchmark view, runs its set, then its sweep, each settled.
   void run_bench_and_sweep();
   void resize(int width, int height);

@@ -20,6 +20,15 @@ SyntheticScene scene_with_seed(std::uint64_t seed) {
   return make_synthetic_scene(p);
 }
 
+// Registers `source` to `target` with the ground truth known, so that the selection is judged.
+void run_with_truth(Pipeline& p, const PointCloud& source, const PointCloud& target,
+                    const Transform& truth) {
+  p.set_input(source, target);
+  p.set_ground_truth(truth);
+  p.run();
+  REQUIRE(p.selected_error());
+}
+
 }  // namespace
 
 TEST_CASE("the ground layer is found under the structure") {
@@ -37,10 +46,7 @@ TEST_CASE("a true pair is accepted, two scenes that share nothing are rejected")
   const SyntheticScene a = scene_with_seed(7), b = scene_with_seed(8);
 
   Pipeline positive;
-  positive.set_input(a.source, a.target);
-  positive.set_ground_truth(a.T_target_source);
-  positive.run();
-  REQUIRE(positive.selected_error());
+  run_with_truth(positive, a.source, a.target, a.T_target_source);
   CHECK(positive.selected_error()->success);
   const Acceptance& yes = positive.acceptance();
   INFO("positive: overlap " << yes.overlap << ", inliers " << yes.inliers << ", " << yes.reason);
@@ -322,10 +328,7 @@ TEST_CASE("the diagnosis says when the ambiguity's rival is right and the select
   sp.distinct_objects = true;
   const SelfSimilarScene s = make_self_similar_scene(sp);
   Pipeline p;
-  p.set_input(s.source, s.target);
-  p.set_ground_truth(s.T_target_source);
-  p.run();
-  REQUIRE(p.selected_error());
+  run_with_truth(p, s.source, s.target, s.T_target_source);
   REQUIRE_FALSE(p.selected_error()->success);
   const Acceptance& a = p.acceptance();
   INFO(a.reason);
@@ -341,10 +344,7 @@ TEST_CASE("the diagnosis says when the ambiguity's rival is right and the select
   // A right selection never reports its rival as right.
   const SelfSimilarScene hall = self_similar(SelfSimilarKind::symmetric_hall, true);
   Pipeline q;
-  q.set_input(hall.source, hall.target);
-  q.set_ground_truth(hall.T_target_source);
-  q.run();
-  REQUIRE(q.selected_error());
+  run_with_truth(q, hall.source, hall.target, hall.T_target_source);
   CHECK(q.selected_error()->success);
   CHECK(q.acceptance().accepted);
   CHECK_FALSE(diagnose(q)->alternative_right);

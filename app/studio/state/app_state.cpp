@@ -4,11 +4,11 @@
 #include <cctype>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
 #include "pagor/errors.hpp"
 #include "pagor/io/atomic_file.hpp"
 #include "state/app_state.hpp"
+#include "state/open_file.hpp"
 
 namespace pagor::studio {
 namespace {
@@ -17,23 +17,11 @@ constexpr std::size_t kMaxRecent = 12;
 
 // Whether the first pair line of `path` is two frame numbers (a KITTI pairs file).
 bool is_kitti_pairs_file(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open the pairs file");
-  std::string line;
-  while (std::getline(in, line)) {
-    const auto hash = line.find('#');
-    if (hash != std::string::npos) line.resize(hash);
-    std::istringstream words(line);
-    std::string a, b, rest;
-    if (!(words >> a)) continue;  // blank or comment
-    words >> b >> rest;
-    const auto digits = [](const std::string& w) {
-      return !w.empty() &&
-             std::all_of(w.begin(), w.end(), [](unsigned char c) { return std::isdigit(c) != 0; });
-    };
-    return digits(a) && digits(b) && rest.empty();
-  }
-  throw InputError(path + ": no pairs in the file");
+  const std::vector<std::string> w = first_words(path);
+  const auto digits = [](const std::string& s) {
+    return std::all_of(s.begin(), s.end(), [](unsigned char c) { return std::isdigit(c) != 0; });
+  };
+  return w.size() == 2 && digits(w[0]) && digits(w[1]);
 }
 
 // The same file, though written differently (relative, through a symbolic link).
@@ -76,9 +64,8 @@ PairSource resolved_data(const AppState& s) {
     d.source = d.source_labels = d.target = d.target_labels = d.ground_truth = d.correspondences =
         "";
   if (d.kind != PairSource::Kind::kitti) d.kitti_root = "";
-  for (std::string* p :
-       {&d.kitti_root, &d.source, &d.source_labels, &d.target, &d.target_labels, &d.ground_truth,
-        &d.correspondences})
+  for (std::string* p : {&d.kitti_root, &d.source, &d.source_labels, &d.target, &d.target_labels,
+                         &d.ground_truth, &d.correspondences})
     *p = resolve(*p, base);
   return d;
 }

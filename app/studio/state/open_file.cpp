@@ -22,22 +22,6 @@ std::string lower_extension(const std::string& path) {
   return e;
 }
 
-// The first line of `path` that is neither blank nor a comment, split into words.
-std::vector<std::string> first_words(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open");
-  std::string line;
-  while (std::getline(in, line)) {
-    const auto hash = line.find('#');
-    if (hash != std::string::npos) line.resize(hash);
-    std::istringstream s(line);
-    std::vector<std::string> words;
-    for (std::string w; s >> w;) words.push_back(w);
-    if (!words.empty()) return words;
-  }
-  throw InputError(path + ": the file is empty");
-}
-
 bool is_number(const std::string& w) {
   char* end = nullptr;
   std::strtod(w.c_str(), &end);
@@ -94,6 +78,21 @@ PairSource& files_data(AppState& s) {
 }
 
 }  // namespace
+
+std::vector<std::string> first_words(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path + ": cannot open");
+  std::string line;
+  while (std::getline(in, line)) {
+    const auto hash = line.find('#');
+    if (hash != std::string::npos) line.resize(hash);
+    std::istringstream s(line);
+    std::vector<std::string> words;
+    for (std::string w; s >> w;) words.push_back(w);
+    if (!words.empty()) return words;
+  }
+  throw InputError(path + ": the file is empty");
+}
 
 bool data_ready(const PairSource& d) {
   return d.kind != PairSource::Kind::files || !d.correspondences.empty() ||
@@ -219,59 +218,51 @@ Opened open_files_into(AppState& s, const std::vector<std::string>& paths,
   return all;
 }
 
+namespace {
+
+/// What the file browser says of each purpose, and which extensions it lists (none: all).
+struct PurposeEntry {
+  FilePurpose purpose;
+  const char* name;
+  std::vector<std::string> extensions;
+};
+
+const std::vector<PurposeEntry>& purpose_table() {
+  static const std::vector<PurposeEntry> table = {
+      {FilePurpose::any, "a file", {}},
+      {FilePurpose::source_cloud, "the source cloud", {".pcd", ".ply", ".bin"}},
+      {FilePurpose::target_cloud,
+       "the target cloud or floor plan",
+       {".pcd", ".ply", ".bin", ".json", ".svg"}},
+      {FilePurpose::source_labels, "the source labels", {".label"}},
+      {FilePurpose::target_labels, "the target labels", {".label"}},
+      {FilePurpose::ground_truth, "a ground truth (4x4 T_target_source)", {".txt"}},
+      {FilePurpose::correspondences,
+       "a matcher's correspondences (px py pz qx qy qz [weight [inlier]])",
+       {".txt"}},
+      {FilePurpose::pairs, "a pairs file or manifest", {".txt"}},
+      {FilePurpose::config, "a configuration", {".json"}},
+      {FilePurpose::session, "a session", {".json"}},
+      {FilePurpose::bench, "a benchmark set or results", {".txt", ".jsonl", ".json"}},
+      {FilePurpose::kitti_root, "a KITTI root (a directory)", {}},
+  };
+  return table;
+}
+
+const PurposeEntry& purpose_entry(FilePurpose purpose) {
+  for (const PurposeEntry& e : purpose_table())
+    if (e.purpose == purpose) return e;
+  return purpose_table().front();
+}
+
+}  // namespace
+
 std::vector<std::string> purpose_extensions(FilePurpose purpose) {
-  switch (purpose) {
-    case FilePurpose::source_cloud:
-      return {".pcd", ".ply", ".bin"};
-    case FilePurpose::target_cloud:
-      return {".pcd", ".ply", ".bin", ".json", ".svg"};
-    case FilePurpose::source_labels:
-    case FilePurpose::target_labels:
-      return {".label"};
-    case FilePurpose::ground_truth:
-    case FilePurpose::pairs:
-    case FilePurpose::correspondences:
-      return {".txt"};
-    case FilePurpose::config:
-    case FilePurpose::session:
-      return {".json"};
-    case FilePurpose::bench:
-      return {".txt", ".jsonl", ".json"};
-    case FilePurpose::kitti_root:
-    case FilePurpose::any:
-      break;
-  }
-  return {};
+  return purpose_entry(purpose).extensions;
 }
 
 const char* purpose_name(FilePurpose purpose) {
-  switch (purpose) {
-    case FilePurpose::any:
-      return "a file";
-    case FilePurpose::source_cloud:
-      return "the source cloud";
-    case FilePurpose::target_cloud:
-      return "the target cloud or floor plan";
-    case FilePurpose::source_labels:
-      return "the source labels";
-    case FilePurpose::target_labels:
-      return "the target labels";
-    case FilePurpose::ground_truth:
-      return "a ground truth (4x4 T_target_source)";
-    case FilePurpose::pairs:
-      return "a pairs file or manifest";
-    case FilePurpose::correspondences:
-      return "a matcher's correspondences (px py pz qx qy qz [weight [inlier]])";
-    case FilePurpose::config:
-      return "a configuration";
-    case FilePurpose::session:
-      return "a session";
-    case FilePurpose::bench:
-      return "a benchmark set or results";
-    case FilePurpose::kitti_root:
-      return "a KITTI root (a directory)";
-  }
-  return "a file";
+  return purpose_entry(purpose).name;
 }
 
 }  // namespace pagor::studio

@@ -2,8 +2,8 @@
 /// \file open_file.hpp
 /// Opening a user's file in the studio, from the file dialog, a drop on the window or the recent
 /// list: what kind of file it is (a cloud, labels, a ground truth, a configuration, a session, a
-/// pairs file or manifest, a matcher's correspondences, `pagor bench --out` results, a floor plan, a KITTI root) and where in
-/// the state it goes.
+/// pairs file or manifest, a matcher's correspondences, `pagor bench --out` results, a floor plan,
+/// a KITTI root) and where in the state it goes.
 
 #include <string>
 #include <vector>
@@ -43,5 +43,9 @@ Opened open_files_into(AppState& state, const std::vector<std::string>& paths,
 std::vector<std::string> purpose_extensions(FilePurpose purpose);
 /// A few words for the dialog's title ("source cloud", "configuration", ...).
 const char* purpose_name(FilePurpose purpose);
+
+/// The first line of `path` that is neither blank nor a comment (`#` to the end of a line), split
+/// into words. Throws InputError when the file cannot be read or has no such line.
+std::vector<std::string> first_words(const std::string& path);
 
 }  // namespace pagor::studio

@@ -13,6 +13,7 @@
 #include <cstdarg>
 #include <cstdio>
 #include <cstdlib>
+#include <iterator>
 #include <unordered_map>
 
 namespace pagor::studio::ui {
@@ -95,33 +96,13 @@ bool field_typing(ImGuiID id) {
 }  // namespace
 
 const char* to_string(WidgetKind kind) {
-  switch (kind) {
-    case WidgetKind::button:
-      return "button";
-    case WidgetKind::checkbox:
-      return "checkbox";
-    case WidgetKind::radio:
-      return "radio";
-    case WidgetKind::slider:
-      return "slider";
-    case WidgetKind::input_text:
-      return "input_text";
-    case WidgetKind::input_int:
-      return "input_int";
-    case WidgetKind::combo:
-      return "combo";
-    case WidgetKind::selectable:
-      return "selectable";
-    case WidgetKind::tree_node:
-      return "tree_node";
-    case WidgetKind::header:
-      return "header";
-    case WidgetKind::splitter:
-      return "splitter";
-    case WidgetKind::text:
-      return "text";
-  }
-  return "?";
+  static constexpr const char* kNames[] = {"button",     "checkbox",  "radio",    "slider",
+                                           "input_text", "input_int", "combo",    "selectable",
+                                           "tree_node",  "header",    "splitter", "text"};
+  static_assert(std::size(kNames) == static_cast<std::size_t>(WidgetKind::text) + 1,
+                "a name for every WidgetKind");
+  const auto i = static_cast<std::size_t>(kind);
+  return i < std::size(kNames) ? kNames[i] : "?";
 }
 
 std::string DuplicateId::describe() const {

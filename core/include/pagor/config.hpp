@@ -1,28 +1,19 @@
 #pragma once
 /// \file config.hpp
-/// Every parameter of every stage, in one document. Each stage's parameters live beside the stage
-/// (`LandmarkParams` in front/landmarks.hpp, `GraphParams` in graph/pyramid_graph.hpp, ...), each
-/// with its table of fields (util/fields.hpp); this header only gathers them. `Config::sections`
-/// is the one list of the document's sections: the reader, the writer, the checks, the reference
-/// (`pagor config --describe`), the studio's editor and the pipeline's staleness all follow it.
+/// Every parameter of every stage, in one document. The stages' parameter structs, each with
+/// its table of fields (util/fields.hpp), are in params.hpp; this header gathers them.
+/// `Config::sections` is the one list of the document's sections: the reader, the writer, the
+/// checks, the reference (`pagor config --describe`), the studio's editor and the pipeline's
+/// staleness all follow it.
 
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
-#include "pagor/front/correspondences.hpp"
 #include "pagor/front/label_scheme.hpp"
-#include "pagor/front/landmarks.hpp"
-#include "pagor/graph/densest_clique.hpp"
-#include "pagor/graph/pyramid_graph.hpp"
-#include "pagor/indoor/floor_projection.hpp"
-#include "pagor/pose/gnc.hpp"
+#include "pagor/params.hpp"
 #include "pagor/util/fields.hpp"
-#include "pagor/verify/acceptance.hpp"
-#include "pagor/verify/evaluation.hpp"
-#include "pagor/verify/refinement.hpp"
-#include "pagor/verify/verification.hpp"
 
 namespace pagor {
 

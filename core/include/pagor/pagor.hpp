@@ -6,7 +6,7 @@
 ///   Registration, LevelSummary, to_json          the typed result and its JSON (report.hpp)
 ///   Pipeline                                     the stages with caching, for incremental re-runs
 ///   Config, default_config, preset_config        every stage's parameters (config.hpp gathers
-///                                                each stage's Params, declared beside the stage)
+///                                                the stages' Params structs of params.hpp)
 ///   load_cloud, KittiSequence, read_correspondence_file, read_floor_plan   reading inputs
 ///   PointCloud, Transform, Correspondence, Error and its kinds
 ///

@@ -1,10 +1,13 @@
 #include "pagor/eval/self_similar.hpp"
 
 #include <Eigen/Geometry>
+#include <array>
 #include <cmath>
+#include <iterator>
 #include <random>
 
 #include "eval/planar_pose.hpp"
+#include "pagor/errors.hpp"
 
 namespace pagor {
 namespace {
@@ -113,6 +116,24 @@ double periodic_centre(const Layout& l, double x0, double period) {
   return x0 + period * std::round((mid - x0) / period);
 }
 
+// The points x0 + k period within [-half_length, half_length], increasing.
+std::vector<double> lattice(double x0, double period, double half_length) {
+  std::vector<double> xs;
+  for (double x = x0 - period * std::floor(half_length / period); x <= half_length; x += period)
+    xs.push_back(x);
+  return xs;
+}
+
+// The end of a periodic layout: sensors placed along it seeing `range` [m], the symmetries of the
+// lattice x0 + k period, the distinct objects' lateral places [m].
+void finish_periodic(Layout& l, std::mt19937_64& rng, double x0, double range,
+                     const std::array<double, 3>& object_y) {
+  place_sensors_along(l, rng);
+  l.range = range;
+  along_axis_symmetries(l, l.period, periodic_centre(l, x0, l.period));
+  for (std::size_t i = 0; i < object_y.size(); ++i) l.object_y[i] = object_y[i];
+}
+
 Layout corridor(const SelfSimilarParams& p, std::mt19937_64& rng) {
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   Layout l;
@@ -121,13 +142,10 @@ Layout corridor(const SelfSimilarParams& p, std::mt19937_64& rng) {
   for (double side : {-3.0, 3.0})
     add_wall(l.world, {-half_length, side}, {half_length, side}, 3.0, 2 * p.spacing);
   add_floor(l.world, {-half_length, -3}, {half_length, 3}, 4 * p.spacing);
-  for (double x = x0 - l.period * std::floor(half_length / l.period); x <= half_length;
-       x += l.period)  // on the lattice x0 + k period, about whose points the corridor turns
+  // on the lattice x0 + k period, about whose points the corridor turns
+  for (double x : lattice(x0, l.period, half_length))
     for (double side : {-2.6, 2.6}) add_cylinder(l.world, {x, side}, 0.25, 3.0, p.spacing, kTrunk);
-  place_sensors_along(l, rng);
-  l.range = 30;
-  along_axis_symmetries(l, l.period, periodic_centre(l, x0, l.period));
-  l.object_y[0] = -1.1, l.object_y[1] = 1.9, l.object_y[2] = 1.6;
+  finish_periodic(l, rng, x0, 30, {-1.1, 1.9, 1.6});
   return l;
 }
 
@@ -137,17 +155,13 @@ Layout facades(const SelfSimilarParams& p, std::mt19937_64& rng) {
   const double width = 8 + 6 * unit(rng), gap = 2 + 2 * unit(rng), height = 8 + 6 * unit(rng);
   l.period = width + gap;
   const double x0 = l.period * unit(rng), half_length = 90;
-  for (double x = x0 - l.period * std::floor(half_length / l.period); x <= half_length;
-       x += l.period)  // on the lattice x0 + k period
+  for (double x : lattice(x0, l.period, half_length))
     for (double side : {-1.0, 1.0}) {
       add_box(l.world, {x, side * 12}, {width, 10, height}, 0, 2 * p.spacing, kBuilding);
       add_cylinder(l.world, {x, side * 6}, 0.1, 6.0, p.spacing, kPole);
     }
   add_floor(l.world, {-half_length, -7}, {half_length, 7}, 4 * p.spacing);
-  place_sensors_along(l, rng);
-  l.range = 40;
-  along_axis_symmetries(l, l.period, periodic_centre(l, x0, l.period));
-  l.object_y[0] = -3.5, l.object_y[1] = 5.0, l.object_y[2] = 4.6;
+  finish_periodic(l, rng, x0, 40, {-3.5, 5.0, 4.6});
   return l;
 }
 
@@ -258,36 +272,20 @@ PointCloud observe(const World& w, const Transform& T_world_sensor, double range
 }  // namespace
 
 const char* self_similar_kind_name(SelfSimilarKind kind) {
-  switch (kind) {
-    case SelfSimilarKind::corridor:
-      return "corridor";
-    case SelfSimilarKind::facades:
-      return "facades";
-    case SelfSimilarKind::sliding_street:
-      return "sliding-street";
-    case SelfSimilarKind::symmetric_hall:
-      return "symmetric-hall";
-  }
-  return "?";
+  return to_string(kind);
 }
 
 SelfSimilarScene make_self_similar_scene(const SelfSimilarParams& params) {
   std::mt19937_64 rng(params.seed);
-  Layout l;
-  switch (params.kind) {
-    case SelfSimilarKind::corridor:
-      l = corridor(params, rng);
-      break;
-    case SelfSimilarKind::facades:
-      l = facades(params, rng);
-      break;
-    case SelfSimilarKind::sliding_street:
-      l = sliding_street(params, rng);
-      break;
-    case SelfSimilarKind::symmetric_hall:
-      l = symmetric_hall(params, rng);
-      break;
-  }
+  // The layouts in the order of SelfSimilarKind.
+  using MakeLayout = Layout (*)(const SelfSimilarParams&, std::mt19937_64&);
+  static constexpr MakeLayout kLayouts[] = {corridor, facades, sliding_street, symmetric_hall};
+  static_assert(
+      std::size(kLayouts) == static_cast<std::size_t>(SelfSimilarKind::symmetric_hall) + 1,
+      "a layout for every SelfSimilarKind");
+  const auto kind = static_cast<std::size_t>(params.kind);
+  if (kind >= std::size(kLayouts)) throw ConfigError("unknown self-similar scene kind");
+  Layout l = kLayouts[kind](params, rng);
   SelfSimilarScene scene;
   if (params.distinct_objects) scene.objects = add_distinct_objects(l, params, rng);
   scene.name = std::string(self_similar_kind_name(params.kind)) + "-" +

@@ -87,11 +87,18 @@ VoxelMembers members_of_voxels(const VoxelDownsample& ds, const std::vector<int>
   return m;
 }
 
+// Throws ConfigError naming landmarks.classes[class_index].`field` when searches of `radius` [m]
+// over the class's voxels would pass the work budget (work_budget.hpp).
+void check_class_radius(const VoxelDownsample& ds, int class_index, const ClassParams& p,
+                        const char* field, double radius) {
+  check_radius_work(ds.points, radius,
+                    "landmarks.classes[" + std::to_string(class_index) + "]." + field,
+                    "class '" + p.name + "'");
+}
+
 void add_clusters(int class_index, const ClassParams& p, const VoxelDownsample& ds,
                   const VoxelMembers& members, LandmarkSet& out) {
-  check_radius_work(ds.points, p.cluster_tolerance,
-                    "landmarks.classes[" + std::to_string(class_index) + "].cluster_tolerance",
-                    "class '" + p.name + "'");
+  check_class_radius(ds, class_index, p, "cluster_tolerance", p.cluster_tolerance);
   const auto clusters = detail::euclidean_clusters(local_points(ds.points), p.cluster_tolerance,
                                                    p.min_points, p.max_points);
   for (const std::vector<int>& c : clusters) {
@@ -149,9 +156,7 @@ std::vector<int> spread_keypoints(const VoxelDownsample& ds, double voxel_size, 
 // descriptors are computed only at a budget of evenly spread keypoints.
 void add_keypoints(int class_index, const ClassParams& p, const VoxelDownsample& ds,
                    const VoxelMembers& members, LandmarkSet& out) {
-  check_radius_work(ds.points, p.feature_radius,
-                    "landmarks.classes[" + std::to_string(class_index) + "].feature_radius",
-                    "class '" + p.name + "'");
+  check_class_radius(ds, class_index, p, "feature_radius", p.feature_radius);
   const std::vector<Eigen::Vector3f> local = local_points(ds.points);
   const std::vector<Eigen::Vector3f> normals = detail::estimate_normals(local, p.normal_radius);
   const std::vector<int> keypoints = spread_keypoints(ds, p.voxel_size, p.max_keypoints);

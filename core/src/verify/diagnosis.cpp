@@ -266,43 +266,11 @@ void explain_origins(const DiagnosisInput& in, Diagnosis& d) {
 }  // namespace
 
 const char* verdict_name(DiagnosisVerdict v) {
-  switch (v) {
-    case DiagnosisVerdict::success:
-      return "success";
-    case DiagnosisVerdict::label_scheme:
-      return "label-scheme";
-    case DiagnosisVerdict::too_few_true:
-      return "too-few-true";
-    case DiagnosisVerdict::not_consistent:
-      return "not-consistent";
-    case DiagnosisVerdict::clique_missed:
-      return "clique-missed";
-    case DiagnosisVerdict::pose_wrong:
-      return "pose-wrong";
-    case DiagnosisVerdict::verification_wrong:
-      return "verification-wrong";
-  }
-  return "?";
+  return to_string(v);
 }
 
 const char* verdict_sentence(DiagnosisVerdict v) {
-  switch (v) {
-    case DiagnosisVerdict::success:
-      return "success: the selected pose is right";
-    case DiagnosisVerdict::label_scheme:
-      return "labels: they do not fit the label scheme in use";
-    case DiagnosisVerdict::too_few_true:
-      return "front end: too few true correspondences";
-    case DiagnosisVerdict::not_consistent:
-      return "graph: the true correspondences are not consistent at any epsilon";
-    case DiagnosisVerdict::clique_missed:
-      return "clique: the densest clique missed them";
-    case DiagnosisVerdict::pose_wrong:
-      return "pose: wrong from a right clique";
-    case DiagnosisVerdict::verification_wrong:
-      return "verification picked a wrong candidate although one was right";
-  }
-  return "?";
+  return enum_doc(v);
 }
 
 Diagnosis diagnose(const DiagnosisInput& in, const Transform& T_gt, const DiagnosisParams& params) {

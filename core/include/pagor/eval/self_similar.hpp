@@ -21,6 +21,7 @@
 
 #include "pagor/eval/synthetic.hpp"
 #include "pagor/types.hpp"
+#include "pagor/util/fields.hpp"
 
 namespace pagor {
 
@@ -30,6 +31,15 @@ inline const std::string kSelfSimilarLabelScheme = "semantickitti-train";
 
 /// The kind of repetition.
 enum class SelfSimilarKind { corridor, facades, sliding_street, symmetric_hall };
+inline constexpr EnumEntry<SelfSimilarKind> kSelfSimilarKinds[] = {
+    {SelfSimilarKind::corridor, "corridor", "a corridor with a pillar every few metres"},
+    {SelfSimilarKind::facades, "facades", "a street of identical facades"},
+    {SelfSimilarKind::sliding_street, "sliding-street", "a street that slides along itself"},
+    {SelfSimilarKind::symmetric_hall, "symmetric-hall", "a hall that is the same turned 180 deg"},
+};
+inline const auto& enum_entries(SelfSimilarKind) {
+  return kSelfSimilarKinds;
+}
 
 /// Short name of a kind ("corridor", "facades", "sliding-street", "symmetric-hall").
 const char* self_similar_kind_name(SelfSimilarKind kind);

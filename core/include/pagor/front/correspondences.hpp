@@ -7,46 +7,10 @@
 #include <vector>
 
 #include "pagor/front/landmarks.hpp"
+#include "pagor/params.hpp"
 #include "pagor/types.hpp"
 
 namespace pagor {
-
-/// Correspondence generation.
-struct CorrespondenceParams {
-  // Each field's meaning, unit and valid range: fields() below (docs/config.md).
-  int max_correspondences = 1500;
-  bool fpfh_mutual = true;
-  int fpfh_max_per_class = 300;
-  double fpfh_ratio = 1.0;
-  double shape_scale = 0.5;
-  bool fuse_matches = false;
-
-  template <class V>
-  static void fields(V&& v) {
-    v(&CorrespondenceParams::max_correspondences,
-      {"max_correspondences",
-       "Cap on the number of correspondences; the most promising are kept; 0: no cap.", "",
-       Range::closed(1, 1e7), 0.0, true});
-    v(&CorrespondenceParams::fpfh_mutual,
-      {"fpfh_mutual", "FPFH classes: keep only mutual nearest descriptors."});
-    v(&CorrespondenceParams::fpfh_max_per_class,
-      {"fpfh_max_per_class", "FPFH classes: at most this many matches per class, best first.", "",
-       Range::closed(1, 1e6)});
-    v(&CorrespondenceParams::fpfh_ratio,
-      {"fpfh_ratio",
-       "FPFH classes: keep a match only when its descriptor distance is at most this fraction of "
-       "the second nearest's (ratio test); 1: no test.",
-       "", Range::above(0, 1)});
-    v(&CorrespondenceParams::shape_scale,
-      {"shape_scale",
-       "Ranking of cluster pairs: extents differing by this much score e^-1 of alike ones.", "m",
-       Range::above(0, 100)});
-    v(&CorrespondenceParams::fuse_matches,
-      {"fuse_matches",
-       "With a matcher's correspondences and clouds: keep the landmark correspondences too, both "
-       "in one pyramid (false: the matcher's replace them)."});
-  }
-};
 
 /// The correspondences of a pair of clouds.
 struct CorrespondenceSet {

@@ -11,62 +11,10 @@
 #include <vector>
 
 #include "pagor/graph/trim.hpp"
+#include "pagor/params.hpp"
 #include "pagor/types.hpp"
-#include "pagor/util/fields.hpp"
 
 namespace pagor {
-
-/// Edge weights of the consistency graph.
-enum class AffinityKind {
-  binary,    ///< 1 for every consistent pair
-  gaussian,  ///< exp(-c^2 / (2 sigma^2)) with sigma = sigma_ratio * epsilon of the level
-};
-inline constexpr EnumEntry<AffinityKind> kAffinityKinds[] = {
-    {AffinityKind::binary, "binary", "1 for every consistent pair"},
-    {AffinityKind::gaussian, "gaussian",
-     "exp(-c^2 / (2 sigma^2)) with sigma = sigma_ratio * the level's epsilon"},
-};
-inline const auto& enum_entries(AffinityKind) {
-  return kAffinityKinds;
-}
-
-/// The pyramid of consistency graphs.
-struct GraphParams {
-  // Each field's meaning, unit and valid range: fields() below (docs/config.md).
-  TrimKind trim = TrimKind::ratio;
-  std::vector<double> thresholds{0.02, 0.04, 0.08,
-                                 0.16};  ///< epsilon_1 < ... < epsilon_k [TRIM unit]
-  AffinityKind affinity = AffinityKind::binary;
-  double sigma_ratio = 0.5;
-  double min_length = 0.5;
-
-  /// Most levels a pyramid may have.
-  static constexpr std::size_t kMaxLevels = 32;
-
-  template <class V>
-  static void fields(V&& v) {
-    v(&GraphParams::trim, {"trim", "The consistency measure: length ratio or length difference."});
-    v(&GraphParams::thresholds,
-      {"thresholds",
-       "The pyramid's epsilon_1 < ... < epsilon_k, one level each (1 to 32): metres for the "
-       "difference TRIM, unitless for the ratio.",
-       "trim", Range::above(0, 1000), std::numeric_limits<double>::quiet_NaN(), true});
-    v(&GraphParams::affinity, {"affinity", "Edge weights: binary or Gaussian in the TRIM."});
-    v(&GraphParams::sigma_ratio,
-      {"sigma_ratio", "Gaussian: sigma as a fraction of epsilon.", "", Range::above(0, 100)});
-    v(&GraphParams::min_length,
-      {"min_length", "Pairs of landmarks closer than this are never consistent.", "m",
-       Range::closed(0, 1000)});
-  }
-  template <class C>
-  static void check(const GraphParams& p, C& c) {
-    c.require(!p.thresholds.empty() && p.thresholds.size() <= kMaxLevels, "thresholds",
-              "needs 1 to 32 levels");
-    for (std::size_t i = 1; i < p.thresholds.size(); ++i)
-      c.require(p.thresholds[i] > p.thresholds[i - 1], "thresholds[" + std::to_string(i) + "]",
-                "thresholds must increase strictly");
-  }
-};
 
 /// All levels of the pyramid in one symmetric CSR adjacency.
 struct PyramidGraph {

@@ -8,45 +8,9 @@
 #include <vector>
 
 #include "pagor/indoor/floor_plan.hpp"
-#include "pagor/util/fields.hpp"
+#include "pagor/params.hpp"
 
 namespace pagor {
-
-/// The column detector: 2-D clusters of the projected scan whose extent and circle fit match a
-/// column.
-struct ColumnDetectorParams {
-  // Each field's meaning, unit and valid range: fields() below (docs/config.md).
-  double cluster_tolerance = 0.15;
-  double min_radius = 0.2;
-  double max_radius = 0.45;
-  double max_rms = 0.03;
-  int min_points = 6;
-  double min_arc_deg = 60.0;
-
-  template <class V>
-  static void fields(V&& v) {
-    v(&ColumnDetectorParams::cluster_tolerance,
-      {"cluster_tolerance", "The largest gap between points of one cluster.", "m",
-       Range::above(0, 10)});
-    v(&ColumnDetectorParams::min_radius,
-      {"min_radius", "The smallest fitted radius accepted.", "m", Range::above(0, 100)});
-    v(&ColumnDetectorParams::max_radius,
-      {"max_radius", "The largest fitted radius accepted.", "m", Range::above(0, 100)});
-    v(&ColumnDetectorParams::max_rms,
-      {"max_rms", "The largest RMS distance of the points to the fitted circle.", "m",
-       Range::above(0, 10)});
-    v(&ColumnDetectorParams::min_points,
-      {"min_points", "The least points of a cluster (cells of the floor grid).", "",
-       Range::closed(3, 1e6)});
-    v(&ColumnDetectorParams::min_arc_deg,
-      {"min_arc_deg", "The least angle the points cover around the centre.", "deg",
-       Range::closed(0, 360)});
-  }
-  template <class C>
-  static void check(const ColumnDetectorParams& p, C& c) {
-    c.require(p.max_radius > p.min_radius, "max_radius", "must be > min_radius [m]");
-  }
-};
 
 /// A circle fitted to points.
 struct CircleFit {

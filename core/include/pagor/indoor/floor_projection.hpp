@@ -10,52 +10,10 @@
 #include <vector>
 
 #include "pagor/indoor/column_detector.hpp"
+#include "pagor/params.hpp"
 #include "pagor/types.hpp"
 
 namespace pagor {
-
-/// Indoor re-localization against a floor plan (floor_plan.hpp): the plan is sampled into points
-/// and the scan is projected to the floor plane with its columns found. Applies when a pair's
-/// target is a floor plan (`.json` or `.svg`).
-struct IndoorParams {
-  // Each field's meaning, unit and valid range: fields() below (docs/config.md).
-  double plan_spacing = 0.05;
-  double height_min = -0.3;
-  double height_max = 1.9;
-  double floor_voxel = 0.05;
-  double furniture_gap = 1.0;
-  bool detect_columns = true;
-  ColumnDetectorParams columns;
-
-  template <class V>
-  static void fields(V&& v) {
-    v(&IndoorParams::plan_spacing, {"plan_spacing", "Sampling of plan walls and column outlines.",
-                                    "m", Range::closed(1e-3, 10)});
-    v(&IndoorParams::height_min,
-      {"height_min", "Scan points lower than this (scan frame, z up) are left out.", "m",
-       Range::closed(-1000, 1000)});
-    v(&IndoorParams::height_max, {"height_max", "Scan points higher than this are left out.", "m",
-                                  Range::closed(-1000, 1000)});
-    v(&IndoorParams::floor_voxel,
-      {"floor_voxel", "The 2-D grid of the projected scan.", "m", Range::closed(1e-3, 10)});
-    v(&IndoorParams::furniture_gap,
-      {"furniture_gap",
-       "A scan point is on furniture (a car, a person: lower than the walls, in no plan) when a "
-       "higher beam of about its azimuth returned from at least this much further. A projected "
-       "cell all of whose points are is labelled furniture: against the floor plan, acceptance's "
-       "ambiguity test counts it for no pose, and against a pose that puts it on a wall or "
-       "column. Needs the scan in its sensor's frame; 0: off.",
-       "m", Range::closed(0, 1000)});
-    v(&IndoorParams::detect_columns,
-      {"detect_columns",
-       "Find columns with the detector; off: take them from the scan's labels (indoor scheme)."});
-    v(&IndoorParams::columns, {"columns", "The column detector."});
-  }
-  template <class C>
-  static void check(const IndoorParams& p, C& c) {
-    c.require(p.height_max > p.height_min, "height_max", "must be > height_min [m]");
-  }
-};
 
 /// A projected scan.
 struct FloorScan {

@@ -7,68 +7,16 @@
 #include <string>
 #include <vector>
 
+#include "pagor/params.hpp"
 #include "pagor/types.hpp"
-#include "pagor/util/fields.hpp"
 
 namespace pagor {
-
-/// The pose model.
-enum class PoseModel {
-  se3,       ///< rotation and translation in 3D (outdoor)
-  se2,       ///< yaw and planar translation (planar robots, scan vs floor plan)
-  four_dof,  ///< yaw and 3-D translation, roll and pitch held level (ground vehicles, as Quatro)
-  /// SE(3) and 4-DoF both fitted; 4-DoF kept where it explains the correspondences as well (as
-  /// many inliers), else SE(3): any rotation, and level poses where the data is gravity-aligned
-  automatic,
-};
-inline constexpr EnumEntry<PoseModel> kPoseModels[] = {
-    {PoseModel::se3, "se3", "rotation and translation in 3-D"},
-    {PoseModel::se2, "se2", "yaw and planar translation (planar robots, scan vs floor plan)"},
-    {PoseModel::four_dof, "four_dof",
-     "yaw and 3-D translation, roll and pitch held level (ground vehicles)"},
-    {PoseModel::automatic, "auto",
-     "fit SE(3) and 4-DoF; keep 4-DoF where it has as many inliers (gravity-aligned data), else "
-     "SE(3)"},
-};
-inline const auto& enum_entries(PoseModel) {
-  return kPoseModels;
-}
 
 /// The fewest correspondences that fix a pose of the model: 3 in SE(3), 2 in SE(2) and 4-DoF (and
 /// with `automatic`, whose 4-DoF fit needs 2).
 inline int minimal_sample_size(PoseModel model) {
   return model == PoseModel::se3 ? 3 : 2;
 }
-
-/// GNC with a truncated least-squares cost.
-struct GncParams {
-  // Each field's meaning, unit and valid range: fields() below (docs/config.md).
-  PoseModel model = PoseModel::se3;
-  double noise_bound = 1.0;
-  double mu_factor = 1.4;
-  int max_iterations = 100;
-  double cost_tolerance = 1e-6;
-  double level_tolerance = 5.0;
-
-  template <class V>
-  static void fields(V&& v) {
-    v(&GncParams::model, {"model", "The pose model."});
-    v(&GncParams::noise_bound, {"noise_bound", "TLS truncation: residuals beyond it are outliers.",
-                                "m", Range::above(0, 1000)});
-    v(&GncParams::mu_factor, {"mu_factor", "GNC continuation factor.", "", Range::above(1, 100)});
-    v(&GncParams::max_iterations,
-      {"max_iterations", "GNC iterations, at most.", "", Range::closed(1, 10000)});
-    v(&GncParams::cost_tolerance,
-      {"cost_tolerance", "GNC stops when the TLS cost changes less than this.", "m^2",
-       Range::above(0, 1e6), std::numeric_limits<double>::quiet_NaN(), true});
-    v(&GncParams::level_tolerance,
-      {"level_tolerance",
-       "Model auto with clouds: when both scans' ground plane is within this angle of level, the "
-       "pair is gravity-aligned and its poses are 4-DoF; otherwise each level keeps 4-DoF only "
-       "where it has as many inliers as SE(3).",
-       "deg", Range::closed(0, 90)});
-  }
-};
 
 /// A candidate pose.
 struct PoseEstimate {

@@ -64,13 +64,27 @@ struct EnumEntry {
   const char* doc;   ///< one sentence
 };
 
-/// Name of an enum value as written in JSON ("?" for a value not in its table). Works for every
-/// enum whose header defines `enum_entries(E)`.
+/// The table entry of an enum value; nullptr for a value not in its table. Works for every enum
+/// whose header defines `enum_entries(E)`.
+template <class E, class = decltype(enum_entries(E{}))>
+const EnumEntry<E>* enum_entry(E value) {
+  for (const auto& e : enum_entries(E{}))
+    if (e.value == value) return &e;
+  return nullptr;
+}
+
+/// Name of an enum value as written in JSON ("?" for a value not in its table).
 template <class E, class = decltype(enum_entries(E{}))>
 const char* to_string(E value) {
-  for (const auto& e : enum_entries(E{}))
-    if (e.value == value) return e.name;
-  return "?";
+  const EnumEntry<E>* e = enum_entry(value);
+  return e ? e->name : "?";
+}
+
+/// The sentence describing an enum value ("" for a value not in its table).
+template <class E, class = decltype(enum_entries(E{}))>
+const char* enum_doc(E value) {
+  const EnumEntry<E>* e = enum_entry(value);
+  return e ? e->doc : "";
 }
 
 /// The enum value named `name`, if any.

@@ -28,85 +28,12 @@
 #include <string>
 #include <vector>
 
+#include "pagor/params.hpp"
 #include "pagor/pose/gnc.hpp"
-#include "pagor/util/fields.hpp"
 #include "pagor/verify/evaluation.hpp"
 #include "pagor/verify/verification.hpp"
 
 namespace pagor {
-
-/// Whether the selected pose is trusted.
-struct AcceptanceParams {
-  // Each field's meaning, unit and valid range: fields() below (docs/config.md).
-  double inlier_distance = 0.5;
-  double ground_thickness = 0.4;
-  // least fraction of structure points aligned, in [0, 1]; calibrated on the shared data with
-  // refinement on: true pairs 0.27-0.61, scans that share nothing 0.03-0.20
-  double min_overlap = 0.24;
-  int min_inliers = 2;
-  double minimal_support_overlap = 0.3;
-  // least D margin to a distinct candidate, fraction of mu * points; calibrated on the shared
-  // data: true pairs 0.18-1 (1: no distinct candidate), scans that share nothing 0.02-0.05
-  double min_margin = 0.1;
-  // least sharpness: the share of the overlap a shift of distinct_translation
-  // along a horizontal axis loses (Acceptance::sharpness). Measured with refinement on: right
-  // poses 0.17-0.55 (KITTI 0.36-0.43, semreg-dev with and without labels 0.17-0.55); wrong poses
-  // that reach the overlap threshold 0.01-0.07 (a street that slides along itself, hedges)
-  double min_sharpness = 0.1;
-  double max_ambiguity = 0.55;
-  double ambiguity_range = 40.0;
-  double distinct_translation = 2.0;
-  double distinct_rotation = 5.0;
-
-  /// What the verdict counts as another answer: poses apart by more than this.
-  EvaluationParams distinct() const { return {distinct_translation, distinct_rotation}; }
-
-  template <class V>
-  static void fields(V&& v) {
-    v(&AcceptanceParams::inlier_distance,
-      {"inlier_distance", "A verification point counts as aligned within this distance.", "m",
-       Range::above(0, 1000)});
-    v(&AcceptanceParams::ground_thickness,
-      {"ground_thickness", "Points this far above the ground layer are structure.", "m",
-       Range::closed(0, 100)});
-    v(&AcceptanceParams::min_overlap,
-      {"min_overlap", "The least fraction of structure points aligned under the pose.", "",
-       Range::closed(0, 1)});
-    v(&AcceptanceParams::min_inliers,
-      {"min_inliers", "The least GNC inliers of the selected candidate.", "",
-       Range::closed(0, 1e6)});
-    v(&AcceptanceParams::minimal_support_overlap,
-      {"minimal_support_overlap",
-       "The least overlap when the pose rests on the minimal number of inliers.", "",
-       Range::closed(0, 1)});
-    v(&AcceptanceParams::min_sharpness,
-      {"min_sharpness",
-       "The least share of the overlap lost when the pose is moved by distinct_translation "
-       "translation along a horizontal axis.",
-       "", Range::closed(-1000, 1)});
-    v(&AcceptanceParams::min_margin,
-      {"min_margin",
-       "The least D margin to the best distinct candidate, as a fraction of mu times the points.",
-       "", Range::closed(0, 1)});
-    v(&AcceptanceParams::max_ambiguity,
-      {"max_ambiguity",
-       "The largest ratio of points only a distinct alternative pose aligns (another level's, the "
-       "pose turned 180 degrees, moved by a repetition of the scene) to points only the selected "
-       "pose aligns, 10 added to each; 10 or more: off.",
-       "", Range::closed(0, 1e6)});
-    v(&AcceptanceParams::distinct_translation,
-      {"distinct_translation",
-       "Two poses farther apart than this are distinct answers: the margin's runner-up, the "
-       "sharpness test's shift and the ambiguity's alternatives.",
-       "m", Range::above(0, 1e6)});
-    v(&AcceptanceParams::distinct_rotation,
-      {"distinct_rotation", "Two poses turned further apart than this are distinct answers.", "deg",
-       Range::above(0, 180)});
-    v(&AcceptanceParams::ambiguity_range,
-      {"ambiguity_range", "The furthest shift searched for a repetition along each principal axis.",
-       "m", Range::closed(0, 1e4)});
-  }
-};
 
 /// One test of the verdict, for display: "overlap 0.31 >= 0.24".
 struct AcceptanceTest {

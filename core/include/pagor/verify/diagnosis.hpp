@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "pagor/pipeline.hpp"
+#include "pagor/util/fields.hpp"
 
 namespace pagor {
 
@@ -47,6 +48,22 @@ enum class DiagnosisVerdict {
   pose_wrong,         ///< pose: a level's clique was right, its pose was not
   verification_wrong  ///< verification: a candidate was right, a wrong one had the lowest D
 };
+/// Each verdict's name (JSON, tables) and sentence (for a user).
+inline constexpr EnumEntry<DiagnosisVerdict> kDiagnosisVerdicts[] = {
+    {DiagnosisVerdict::success, "success", "success: the selected pose is right"},
+    {DiagnosisVerdict::label_scheme, "label-scheme",
+     "labels: they do not fit the label scheme in use"},
+    {DiagnosisVerdict::too_few_true, "too-few-true", "front end: too few true correspondences"},
+    {DiagnosisVerdict::not_consistent, "not-consistent",
+     "graph: the true correspondences are not consistent at any epsilon"},
+    {DiagnosisVerdict::clique_missed, "clique-missed", "clique: the densest clique missed them"},
+    {DiagnosisVerdict::pose_wrong, "pose-wrong", "pose: wrong from a right clique"},
+    {DiagnosisVerdict::verification_wrong, "verification-wrong",
+     "verification picked a wrong candidate although one was right"},
+};
+inline const auto& enum_entries(DiagnosisVerdict) {
+  return kDiagnosisVerdicts;
+}
 
 /// Short name of a verdict, as in JSON and tables: `success`, `label-scheme`, `too-few-true`,
 /// `not-consistent`, `clique-missed`, `pose-wrong`, `verification-wrong`.
@@ -108,8 +125,9 @@ struct Diagnosis {
   std::optional<PoseError> selected_error;
   /// The ground truth scores worse than the selected (wrong) candidate: D itself misled.
   bool score_misled = false;
-  /// The selected pose is wrong and the acceptance's ambiguity alternative (Acceptance::alternative)
-  /// is right: the scene repeats, and the verdict found the right pose as the look-alike.
+  /// The selected pose is wrong and the acceptance's ambiguity alternative
+  /// (Acceptance::alternative) is right: the scene repeats, and the verdict found the right pose as
+  /// the look-alike.
   bool alternative_right = false;
   double time_ms = 0.0;  ///< wall time [ms]
 

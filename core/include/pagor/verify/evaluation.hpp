@@ -2,27 +2,10 @@
 /// \file evaluation.hpp
 /// Errors of an estimated pose against ground truth, and the success criterion.
 
+#include "pagor/params.hpp"
 #include "pagor/types.hpp"
-#include "pagor/util/fields.hpp"
 
 namespace pagor {
-
-/// Success criterion against ground truth.
-struct EvaluationParams {
-  // Each field's meaning, unit and valid range: fields() below (docs/config.md).
-  double max_translation_error = 2.0;
-  double max_rotation_error = 5.0;
-
-  template <class V>
-  static void fields(V&& v) {
-    v(&EvaluationParams::max_translation_error,
-      {"max_translation_error", "A pose within this translation error of the truth is right.", "m",
-       Range::above(0, 1e6)});
-    v(&EvaluationParams::max_rotation_error,
-      {"max_rotation_error", "A pose within this rotation error of the truth is right.", "deg",
-       Range::above(0, 180)});
-  }
-};
 
 /// Errors of one pose.
 struct PoseError {

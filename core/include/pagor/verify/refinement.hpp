@@ -10,62 +10,11 @@
 #include <string>
 #include <vector>
 
+#include "pagor/params.hpp"
 #include "pagor/types.hpp"
-#include "pagor/util/fields.hpp"
 #include "pagor/verify/verification.hpp"
 
 namespace pagor {
-
-/// Optional fine alignment of the selected pose on the metric clouds.
-struct RefinementParams {
-  // Each field's meaning, unit and valid range: fields() below (docs/config.md).
-  bool enabled = true;
-  int max_iterations = 20;
-  int max_points = 1000;
-  double max_distance = 1.0;
-  double min_distance = 0.3;
-  double robust_scale = 0.2;
-  double normal_radius = 1.0;
-  double max_translation = 2.0;
-  double max_rotation = 5.0;
-  bool free_roll_pitch = true;
-
-  template <class V>
-  static void fields(V&& v) {
-    v(&RefinementParams::enabled,
-      {"enabled", "Refine the selected pose by ICP (kept only when it lowers D)."});
-    v(&RefinementParams::max_iterations,
-      {"max_iterations", "ICP iterations, at most.", "", Range::closed(1, 1000)});
-    v(&RefinementParams::max_points,
-      {"max_points", "Source points used, spread evenly over the verification's cloud.", "",
-       Range::closed(10, 1e6)});
-    v(&RefinementParams::max_distance,
-      {"max_distance",
-       "Pairing distance of the first iteration; it shrinks to min_distance over the first half.",
-       "m", Range::above(0, 1000)});
-    v(&RefinementParams::min_distance,
-      {"min_distance", "Pairing distance of the later iterations.", "m", Range::above(0, 1000)});
-    v(&RefinementParams::robust_scale,
-      {"robust_scale", "Cauchy scale of the point-to-plane residuals.", "m",
-       Range::above(0, 1000)});
-    v(&RefinementParams::normal_radius,
-      {"normal_radius", "Neighbourhood of the target normals.", "m", Range::above(0, 100)});
-    v(&RefinementParams::max_translation,
-      {"max_translation", "A refinement that moves the pose farther is rejected.", "m",
-       Range::above(0, 1e4)});
-    v(&RefinementParams::max_rotation,
-      {"max_rotation", "A refinement that turns the pose more is rejected.", "deg",
-       Range::above(0, 180)});
-    v(&RefinementParams::free_roll_pitch,
-      {"free_roll_pitch",
-       "Refine roll and pitch too when the pose model holds them level (4-DoF)."});
-  }
-  template <class C>
-  static void check(const RefinementParams& p, C& c) {
-    c.require(p.max_distance >= p.min_distance, "max_distance",
-              "must be >= refinement.min_distance [m]");
-  }
-};
 
 /// What the refinement did to the selected pose.
 struct RefinementResult {

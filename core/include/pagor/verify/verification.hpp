@@ -10,45 +10,11 @@
 #include <memory>
 #include <vector>
 
+#include "pagor/params.hpp"
 #include "pagor/pose/gnc.hpp"
 #include "pagor/types.hpp"
-#include "pagor/util/fields.hpp"
 
 namespace pagor {
-
-/// How a candidate pose is scored on the dense clouds.
-enum class ScoreKind {
-  truncated,  ///< D = sum min(d, mu) (default, "distrust and verify")
-  trimmed,    ///< D = sum of d over d < mu (ablation)
-  nearest,    ///< D = sum d (ablation)
-};
-inline constexpr EnumEntry<ScoreKind> kScoreKinds[] = {
-    {ScoreKind::truncated, "truncated", "D = sum min(d, mu) (\"distrust and verify\")"},
-    {ScoreKind::trimmed, "trimmed", "D = sum of d over d < mu (ablation)"},
-    {ScoreKind::nearest, "nearest", "D = sum d (ablation)"},
-};
-inline const auto& enum_entries(ScoreKind) {
-  return kScoreKinds;
-}
-
-/// Geometric verification on the metric clouds.
-struct VerificationParams {
-  // Each field's meaning, unit and valid range: fields() below (docs/config.md).
-  double voxel_size = 0.5;
-  double mu = 1.0;
-  ScoreKind score = ScoreKind::truncated;
-
-  template <class V>
-  static void fields(V&& v) {
-    v(&VerificationParams::voxel_size,
-      {"voxel_size", "Downsampling of both clouds before scoring; 0: none.", "m",
-       Range::closed(1e-3, 100), 0.0, true});
-    v(&VerificationParams::mu,
-      {"mu", "Truncation distance of D = sum min(|Tp - q_nn|, mu).", "m", Range::above(0, 1000),
-       std::numeric_limits<double>::quiet_NaN(), true});
-    v(&VerificationParams::score, {"score", "How a candidate is scored on the dense clouds."});
-  }
-};
 
 /// The downsampled clouds, built once; scores any number of poses. Searches bounded by mu run on
 /// a hashed grid of the target (cells of the bound), unbounded ones on a kd-tree; each is built
