@@ -172,7 +172,7 @@ TEST_CASE("5: the levels' D gap and the acceptance margin are named apart, each 
   const auto gaps = d.texts("D gap to the runner-up pose", "Pyramid");
   REQUIRE(gaps.size() == 1);
   // The runner-up: the lowest D of a level whose pose differs from the selected one.
-  if (const auto m = studio::score_margin(*snap)) {
+  if (const auto m = studio::d_gap(*snap)) {
     const auto& best = snap->levels[static_cast<std::size_t>(m->best_level)];
     double runner = HUGE_VAL;
     for (const auto& l : snap->levels)

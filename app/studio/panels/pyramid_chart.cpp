@@ -72,7 +72,7 @@ bool same_pose(const Transform& a, const Transform& b) {
 }
 
 std::string level_gap_text(const Snapshot& s) {
-  const auto m = score_margin(s);
+  const auto m = d_gap(s);
   if (!m && !s.source) return "D gap to the runner-up pose: n/a (no clouds, so no D)";
   if (!m) return "D gap to the runner-up pose: n/a (fewer than two valid levels)";
   // The runner-up is the best level with another pose: levels that found the selected pose

@@ -99,8 +99,8 @@ RunChanges compare_runs(const Snapshot& before, const Snapshot& after) {
   return c;
 }
 
-std::optional<ScoreMargin> score_margin(const Snapshot& s) {
-  ScoreMargin m{HUGE_VAL, HUGE_VAL, -1, -1};
+std::optional<DGap> d_gap(const Snapshot& s) {
+  DGap m{HUGE_VAL, HUGE_VAL, -1, -1};
   for (std::size_t i = 0; i < s.levels.size(); ++i) {
     const LevelView& l = s.levels[i];
     if (!l.pose.valid || !std::isfinite(l.score_D)) continue;
@@ -126,7 +126,6 @@ RunRecord summarize(const Snapshot& s, const RunChanges& changes) {
   r.selected = s.selected;
   if (s.selected >= 0 && s.selected < r.levels)
     r.best_d = s.levels[static_cast<std::size_t>(s.selected)].score_D;
-  if (const auto m = score_margin(s)) r.margin = m->second - m->best;
   if (s.selected_error) r.success = s.selected_error->success;
   for (std::size_t i = 0; i < s.stage_ms.size(); ++i)
     if (s.stage_ran[i]) r.total_ms += s.stage_ms[i];

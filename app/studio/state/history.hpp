@@ -69,11 +69,11 @@ struct RunChanges {
 RunChanges compare_runs(const Snapshot& before, const Snapshot& after);
 
 /// The best and second-best finite D of a run; nullopt without two valid levels.
-struct ScoreMargin {
+struct DGap {
   double best = 0, second = 0;
   int best_level = -1, second_level = -1;
 };
-std::optional<ScoreMargin> score_margin(const Snapshot& s);
+std::optional<DGap> d_gap(const Snapshot& s);
 
 /// One finished run, as the history lists it.
 struct RunRecord {
@@ -81,7 +81,6 @@ struct RunRecord {
   std::string data;  ///< description of the data
   int levels = 0, selected = -1;
   double best_d = 0;             ///< D of the selected level [m]
-  std::optional<double> margin;  ///< second-best D - best D [m]
   std::optional<bool> success;   ///< against ground truth, when known
   double total_ms = 0;           ///< stages recomputed by this run [ms]
   std::string change;            ///< what changed from the run before, in words
