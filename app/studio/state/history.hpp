@@ -80,10 +80,10 @@ struct RunRecord {
   std::uint64_t request = 0;
   std::string data;  ///< description of the data
   int levels = 0, selected = -1;
-  double best_d = 0;             ///< D of the selected level [m]
-  std::optional<bool> success;   ///< against ground truth, when known
-  double total_ms = 0;           ///< stages recomputed by this run [ms]
-  std::string change;            ///< what changed from the run before, in words
+  double best_d = 0;            ///< D of the selected level [m]
+  std::optional<bool> success;  ///< against ground truth, when known
+  double total_ms = 0;          ///< stages recomputed by this run [ms]
+  std::string change;           ///< what changed from the run before, in words
 };
 
 RunRecord summarize(const Snapshot& s, const RunChanges& changes);
