@@ -75,7 +75,7 @@ void print_table(const SweepResult& r, const Config& base) {
   std::printf("\n");
 }
 
-// An enum's names as a --trim/--model/--solver list takes them: "ratio,difference".
+// An enum's names as a --trim/--model/--solver list takes them: "difference,ratio".
 template <class E>
 std::string names_of() {
   std::string out;

@@ -27,6 +27,15 @@ def _transform(value: Any) -> Optional[np.ndarray]:
 _T = TypeVar("_T")
 
 
+def _renamed_state(state: Dict[str, Any], old: str) -> Dict[str, Any]:
+    """A pickled object's state with the report under `_data` (pickles of 0.1 before it kept it
+    as `_level` or `_report`)."""
+    if "_data" not in state and old in state:
+        state = dict(state)
+        state["_data"] = state.pop(old)
+    return state
+
+
 class _Key(Generic[_T]):
     """A read-only attribute that is the report's key of the same name (None where the report
     does not hold it): the name is written once, as the attribute's."""
@@ -48,6 +57,9 @@ class _Key(Generic[_T]):
         if obj is None:
             return self
         return obj._data.get(self._key)
+
+    def __set__(self, obj: Any, value: Any) -> None:
+        raise AttributeError(f"'{self._key}' is read-only: it is the report's")
 
 
 def _indent(indent: Optional[int]) -> int:
@@ -115,6 +127,9 @@ class Level:
     def to_dict(self) -> Dict[str, Any]:
         """The report's ``levels[i]`` (the dict itself: do not change it)."""
         return self._data
+
+    def __setstate__(self, state: Dict[str, Any]) -> None:
+        self.__dict__.update(_renamed_state(state, "_level"))
 
     def __eq__(self, other: object) -> bool:
         return isinstance(other, Level) and self._data == other._data
@@ -184,7 +199,7 @@ class Result:
     ``pagor.register/1``, what ``pagor register --json`` writes); landmarks, correspondences and
     cliques are numpy arrays. Picklable.
 
-    Attributes besides the properties: `levels` (a list of Level, each with its `clique` as an
+    Attributes besides the report's: `levels` (a list of Level, each with its `clique` as an
     int64 array), `landmarks` ({'source': Landmarks, 'target': Landmarks}; empty without clouds)
     and `correspondences` (Correspondences: the rows the cliques index)."""
 
@@ -275,6 +290,9 @@ class Result:
     def to_dict(self) -> Dict[str, Any]:
         """The report as a dict (json.loads(to_json())); the Result's own, do not change it."""
         return self._data
+
+    def __setstate__(self, state: Dict[str, Any]) -> None:
+        self.__dict__.update(_renamed_state(state, "_report"))
 
     def to_json(self, indent: Optional[int] = 2) -> str:
         """The report as JSON text, exactly as ``pagor register --json`` writes it (schema

@@ -124,6 +124,7 @@ TEST_CASE("a builder reusing its storage gives the graphs of fresh builds, whate
     CAPTURE(s.m, s.threads);
     CHECK(&built == &kept);  // the same object, rebuilt
     CHECK(built.vertices == s.m);
+    CHECK(built.thresholds == p.thresholds);
     check_same_graph(built, fresh);
     if (s.m > 0) CHECK(built.edges_at_level.back() > 0);
   }

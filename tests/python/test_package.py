@@ -52,11 +52,43 @@ def test_register_signature_is_the_documented_one():
 
 
 def test_every_public_property_has_a_docstring():
+    # Properties and the report's keys (read-only data descriptors), inherited ones too.
+    counts = {}
     for cls in (pagor.Result, pagor.Level, pagor.Landmarks, pagor.Correspondences):
         assert cls.__doc__
-        for name, member in vars(cls).items():
-            if isinstance(member, property):
-                assert member.__doc__, f"{cls.__name__}.{name} has no docstring"
+        counts[cls.__name__] = 0
+        for name, member in inspect.getmembers(cls):
+            if name.startswith("_") or not inspect.isdatadescriptor(member):
+                continue
+            counts[cls.__name__] += 1
+            assert member.__doc__, f"{cls.__name__}.{name} has no docstring"
+    assert counts == {"Result": 14, "Level": 14, "Landmarks": 1, "Correspondences": 1}
+
+
+def test_a_result_pickled_before_the_report_moved_to_data_still_loads():
+    rng = np.random.default_rng(3)
+    p = rng.uniform(-20, 20, (60, 3))
+    result = pagor.register_correspondences(p, p + [1.0, 2.0, 0.0])
+    state = dict(vars(result))
+    state["_report"] = state.pop("_data")  # as 0.1 before pickled it
+    old = pagor.Result.__new__(pagor.Result)
+    old.__setstate__(state)
+    assert old == result and old.selected_level == result.selected_level
+    level_state = {"_level": result.levels[0].to_dict(), "clique": result.levels[0].clique}
+    level = pagor.Level.__new__(pagor.Level)
+    level.__setstate__(level_state)
+    assert level == result.levels[0]
+
+
+def test_report_attributes_are_read_only():
+    rng = np.random.default_rng(3)
+    p = rng.uniform(-20, 20, (60, 3))
+    result = pagor.register_correspondences(p, p + [1.0, 2.0, 0.0])
+    assert result.selected_level is not None
+    with pytest.raises(AttributeError):
+        result.selected_level = 1
+    with pytest.raises(AttributeError):
+        result.levels[0].epsilon = 1.0
 
 
 def test_the_docstrings_say_what_the_defaults_are():

@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <sstream>
 
 #include "pagor/errors.hpp"
@@ -104,6 +105,20 @@ TEST_CASE("what a file opens as: told by its extension and first lines") {
 #ifdef PAGOR_HAVE_KITTI
   CHECK(studio::classify_file(PAGOR_KITTI_DIR) == P::kitti_root);
 #endif
+  // Every purpose has its own name in the file browser (a purpose missing from the table would
+  // read "a file", as `any` does).
+  std::set<std::string> names;
+  for (int i = 0; i <= static_cast<int>(P::kitti_root); ++i)
+    names.insert(studio::purpose_name(static_cast<P>(i)));
+  CHECK(names.size() == static_cast<std::size_t>(P::kitti_root) + 1);
+  CHECK(studio::purpose_extensions(P::source_cloud) ==
+        std::vector<std::string>{".pcd", ".ply", ".bin"});
+  // A pairs file of nothing but comments, and one that is not there: said as such.
+  std::ofstream(tmp.file("comments.txt")) << "# source target\n\n  # none yet\n";
+  CHECK_THROWS_WITH(studio::read_step_pairs(tmp.file("comments.txt"), "", "00"),
+                    Catch::Contains("the pairs file has nothing but blank lines and comments"));
+  CHECK_THROWS_WITH(studio::read_step_pairs(tmp.file("absent.txt"), "", "00"),
+                    Catch::Contains("cannot open the pairs file"));
 }
 
 #ifdef PAGOR_HAVE_KITTI

@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """Checks that the sources include only what their layer may see.
 
-The core's folders are layers in the order of the pipeline (util, io, front, graph, pose, verify,
-indoor, eval); the top-level config gathers the stages' parameters, the pipeline runs them and the
+The core's folders are layers in the order of the pipeline (util and the stages' parameters of
+params.hpp, io, front, graph, pose, verify, indoor, eval); the top-level config gathers those
+parameters into one document, the pipeline runs them and the
 report writes their result. A file may include its own layer and the layers below it, never above:
 a stage does not know the configuration document, the pipeline or the sets that run it. The
 studio's folders are layers too (render, widgets, runners, state, scene, panels, then the studio).
@@ -16,6 +17,8 @@ import sys
 LAYERS = [
     ("core/include/pagor/types.hpp", 0), ("core/include/pagor/errors.hpp", 0),
     ("core/include/pagor/util/", 1), ("core/src/util/", 1),
+    # Every stage's parameters: the vocabulary of the parameter tables, nothing of the stages.
+    ("core/include/pagor/params.hpp", 1),
     ("core/include/pagor/io/", 2), ("core/src/io/", 2),
     ("core/include/pagor/front/", 3), ("core/src/front/", 3),
     ("core/include/pagor/graph/", 4), ("core/src/graph/", 4),

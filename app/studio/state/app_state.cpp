@@ -17,7 +17,7 @@ constexpr std::size_t kMaxRecent = 12;
 
 // Whether the first pair line of `path` is two frame numbers (a KITTI pairs file).
 bool is_kitti_pairs_file(const std::string& path) {
-  const std::vector<std::string> w = first_words(path);
+  const std::vector<std::string> w = first_words(path, "the pairs file");
   const auto digits = [](const std::string& s) {
     return std::all_of(s.begin(), s.end(), [](unsigned char c) { return std::isdigit(c) != 0; });
   };

@@ -79,9 +79,9 @@ PairSource& files_data(AppState& s) {
 
 }  // namespace
 
-std::vector<std::string> first_words(const std::string& path) {
+std::vector<std::string> first_words(const std::string& path, const std::string& what) {
   std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open");
+  if (!in) throw InputError(path + ": cannot open " + what);
   std::string line;
   while (std::getline(in, line)) {
     const auto hash = line.find('#');
@@ -91,7 +91,7 @@ std::vector<std::string> first_words(const std::string& path) {
     for (std::string w; s >> w;) words.push_back(w);
     if (!words.empty()) return words;
   }
-  throw InputError(path + ": the file is empty");
+  throw InputError(path + ": " + what + " has nothing but blank lines and comments");
 }
 
 bool data_ready(const PairSource& d) {

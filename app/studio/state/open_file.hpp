@@ -45,7 +45,8 @@ std::vector<std::string> purpose_extensions(FilePurpose purpose);
 const char* purpose_name(FilePurpose purpose);
 
 /// The first line of `path` that is neither blank nor a comment (`#` to the end of a line), split
-/// into words. Throws InputError when the file cannot be read or has no such line.
-std::vector<std::string> first_words(const std::string& path);
+/// into words. Throws InputError naming the file as `what` ("the pairs file") when it cannot be
+/// read or has no such line.
+std::vector<std::string> first_words(const std::string& path, const std::string& what = "the file");
 
 }  // namespace pagor::studio

@@ -108,7 +108,7 @@ struct ConfigField {
 };
 
 /// Every parameter of `config`, in document order, generated from the tables (so a new field
-/// appears here, and in the studio's editor, by being listed once beside its stage).
+/// appears here, and in the studio's editor, by being listed once in its table, params.hpp).
 std::vector<ConfigField> config_fields(const Config& config);
 
 /// The value at `path` as compact JSON. Throws ConfigError for a path that names no parameter.

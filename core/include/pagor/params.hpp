@@ -12,7 +12,6 @@
 #include <string>
 #include <vector>
 
-#include "pagor/graph/trim.hpp"
 #include "pagor/util/fields.hpp"
 
 namespace pagor {
@@ -230,6 +229,19 @@ struct CorrespondenceParams {
 };
 
 // -------------------- The pyramid of consistency graphs (graph/pyramid_graph.hpp)
+
+/// Translation-and-rotation-invariant measurement between two correspondences.
+enum class TrimKind {
+  difference,  ///< | |p_i - p_j| - |q_i - q_j| |  [m], indoor
+  ratio,       ///< max(a/b, b/a) - 1 with a, b the two lengths [unitless], outdoor
+};
+inline constexpr EnumEntry<TrimKind> kTrimKinds[] = {
+    {TrimKind::difference, "difference", "| |p_i - p_j| - |q_i - q_j| | in metres (indoor)"},
+    {TrimKind::ratio, "ratio", "max(a/b, b/a) - 1 of the two lengths, unitless (outdoor)"},
+};
+inline const auto& enum_entries(TrimKind) {
+  return kTrimKinds;
+}
 
 /// Edge weights of the consistency graph.
 enum class AffinityKind {

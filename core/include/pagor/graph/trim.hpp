@@ -7,22 +7,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "pagor/util/fields.hpp"
+#include "pagor/params.hpp"
 
 namespace pagor {
-
-/// Translation-and-rotation-invariant measurement between two correspondences.
-enum class TrimKind {
-  difference,  ///< | |p_i - p_j| - |q_i - q_j| |  [m], indoor
-  ratio,       ///< max(a/b, b/a) - 1 with a, b the two lengths [unitless], outdoor
-};
-inline constexpr EnumEntry<TrimKind> kTrimKinds[] = {
-    {TrimKind::difference, "difference", "| |p_i - p_j| - |q_i - q_j| | in metres (indoor)"},
-    {TrimKind::ratio, "ratio", "max(a/b, b/a) - 1 of the two lengths, unitless (outdoor)"},
-};
-inline const auto& enum_entries(TrimKind) {
-  return kTrimKinds;
-}
 
 /// The unit of a TRIM value and so of the thresholds: "m" for a difference, "" for a ratio.
 inline const char* trim_unit(TrimKind kind) {

@@ -1,7 +1,7 @@
 #pragma once
 /// \file fields.hpp
-/// The vocabulary of the parameter tables. Every stage's `Params` struct lists its fields once,
-/// beside the stage, as a static `fields(v)` that calls `v(&Params::member, FieldInfo{...})` for
+/// The vocabulary of the parameter tables. Every stage's `Params` struct (params.hpp) lists its
+/// fields once, as a static `fields(v)` that calls `v(&Params::member, FieldInfo{...})` for
 /// each: its JSON key, documentation, unit and valid range. The configuration's reader, writer,
 /// checks and documentation (config.hpp) and the studio's parameter editor are all generated from
 /// these lists, so a new field appears everywhere by being listed once. Enums list their names
