@@ -53,12 +53,13 @@ TEST_CASE("KITTI poses and Tr must be rigid transforms") {
       Catch::Contains("poses.txt:1: the pose needs 12 numbers"));
 }
 
-TEST_CASE("pairs files: only two whole frame numbers per line") {
+TEST_CASE("pairs files: only two whole frame numbers per line, comments anywhere") {
   test::TempDir dir;
-  write(dir.file("ok.txt"), "# comment\n0 20\n\n  5\t30  \r\n");
+  write(dir.file("ok.txt"), "# comment\n0 20\n\n  5\t30  \r\n7 9  # the loop at the bridge\n");
   const auto pairs = read_pairs_file(dir.file("ok.txt"));
-  REQUIRE(pairs.size() == 2);
+  REQUIRE(pairs.size() == 3);
   CHECK(pairs[1] == std::make_pair(5, 30));
+  CHECK(pairs[2] == std::make_pair(7, 9));
   const auto fails = [&](const std::string& text, const std::string& what) {
     write(dir.file("bad.txt"), text);
     CHECK_THROWS_WITH(read_pairs_file(dir.file("bad.txt")),

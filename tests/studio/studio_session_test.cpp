@@ -265,6 +265,8 @@ TEST_CASE("numbers as the studio prints them: no negative zero, a unit on every 
   CHECK(studio::with_unit(-0.0, "m") == "0 m");
   CHECK(studio::with_unit(-12.5, "m") == "-12.5 m");
   CHECK(studio::with_unit(0.5, "") == "0.5");
+  CHECK(studio::with_unit(3052.4, "m") == "3052 m");  // a D gap: not "3.05e+03 m"
+  CHECK(studio::with_unit(-999.94, "m") == "-1000 m");
 }
 
 TEST_CASE("the widget registry reports two widgets of one frame with the same ID") {

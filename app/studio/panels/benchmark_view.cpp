@@ -19,10 +19,10 @@
 namespace pagor::studio {
 namespace {
 
-// "acc. margin": the acceptance margin (acceptance.hpp), D below the best distinct candidate's
-// as a share of mu times the points.
+// "margin": the acceptance margin (acceptance.hpp), D below the best distinct candidate's as a
+// share of mu times the points.
 const char* const kColumns[] = {"pair",  "verdict",         "success",   "t err [m]", "r err [deg]",
-                                "level", "acc. margin [%]", "time [ms]", "cached",    "diagnosis"};
+                                "level", "margin [%]", "time [ms]", "cached",    "diagnosis"};
 constexpr int kColumnCount = 10;
 constexpr int kDiagnosisColumn = 9;  // sorted by name, like the pair
 // The choices of the "show" combo, in RowFilter's order.

@@ -186,7 +186,7 @@ int levels_table(const Snapshot& s, int shown, const RunChanges& changes) {
   const char* eps = s.config.graph.trim == TrimKind::difference ? "\xce\xb5 [m]" : "\xce\xb5";
   for (const char* h : {"level", eps, "verts", "edges", "clique", "D [m]",
                         "\xce\x94"
-                        "D"})
+                        "D [m]"})
     ImGui::TableSetupColumn(h);
   if (gt) {
     ImGui::TableSetupColumn("t err [m]");

@@ -2,6 +2,9 @@
 
 #include <imgui.h>
 
+#include <cmath>
+#include <string>
+
 #include "panels/panels.hpp"
 #include "widgets/widgets.hpp"
 
@@ -32,11 +35,14 @@ void history_panel(const ParamHistory& params, const RunHistory& runs, StudioAct
       ImGui::TableNextColumn();
       ImGui::Text("L%d", r.selected);
       ImGui::TableNextColumn();
+      // Without clouds there is no D (the selection went by the correspondences' support).
+      const std::string d =
+          std::isfinite(r.best_d) ? ui::format("D %.0f m", r.best_d) : std::string("D n/a");
       if (r.success)
-        ImGui::TextColored(*r.success ? ImVec4(0.35f, 0.9f, 0.45f, 1) : kRed, "%s D %.0f",
-                           *r.success ? "ok" : "FAIL", r.best_d);
+        ImGui::TextColored(*r.success ? ImVec4(0.35f, 0.9f, 0.45f, 1) : kRed, "%s %s",
+                           *r.success ? "ok" : "FAIL", d.c_str());
       else
-        ImGui::Text("D %.0f", r.best_d);
+        ImGui::TextUnformatted(d.c_str());
       ImGui::TableNextColumn();
       ImGui::TextUnformatted(r.change.c_str());
     }

@@ -1,7 +1,6 @@
 // The state's pairs to step through, the reference configuration and the recent files.
 
 #include <algorithm>
-#include <cctype>
 #include <filesystem>
 #include <fstream>
 
@@ -14,15 +13,6 @@ namespace pagor::studio {
 namespace {
 
 constexpr std::size_t kMaxRecent = 12;
-
-// Whether the first pair line of `path` is two frame numbers (a KITTI pairs file).
-bool is_kitti_pairs_file(const std::string& path) {
-  const std::vector<std::string> w = first_words(path, "the pairs file");
-  const auto digits = [](const std::string& s) {
-    return std::all_of(s.begin(), s.end(), [](unsigned char c) { return std::isdigit(c) != 0; });
-  };
-  return w.size() == 2 && digits(w[0]) && digits(w[1]);
-}
 
 // The same file, though written differently (relative, through a symbolic link).
 bool same_file(const std::string& a, const std::string& b) {
@@ -77,8 +67,12 @@ int shown_level(const ViewState& view, int selected, int levels) {
 
 PairSet read_step_pairs(const std::string& path, const std::string& kitti_root,
                         const std::string& sequence) {
-  return is_kitti_pairs_file(path) ? kitti_pair_set(kitti_root, sequence, path)
-                                   : read_pair_manifest(path);
+  if (!is_kitti_pairs_file(path)) return read_pair_manifest(path);
+  if (kitti_root.empty())
+    throw InputError(path +
+                     ": a KITTI pairs file (frame numbers) needs the KITTI root: choose "
+                     "KITTI in the data panel and set its root first");
+  return kitti_pair_set(kitti_root, sequence, path);
 }
 
 int index_of_pair(const PairSet& pairs, const PairSource& data) {

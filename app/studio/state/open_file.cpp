@@ -79,6 +79,14 @@ PairSource& files_data(AppState& s) {
 
 }  // namespace
 
+bool is_kitti_pairs_file(const std::string& path) {
+  const std::vector<std::string> w = first_words(path, "the pairs file");
+  const auto digits = [](const std::string& s) {
+    return std::all_of(s.begin(), s.end(), [](unsigned char c) { return std::isdigit(c) != 0; });
+  };
+  return w.size() == 2 && digits(w[0]) && digits(w[1]);
+}
+
 std::vector<std::string> first_words(const std::string& path, const std::string& what) {
   std::ifstream in(path);
   if (!in) throw InputError(path + ": cannot open " + what);
@@ -177,8 +185,8 @@ Opened open_file_into(AppState& s, const std::string& path, FilePurpose purpose)
       s.bench.path = p;
       s.bench.source = lower_extension(p) == ".jsonl" || lower_extension(p) == ".json"
                            ? BenchSource::results
-                       : first_words(p).size() == 2 ? BenchSource::kitti_pairs
-                                                    : BenchSource::manifest;
+                       : is_kitti_pairs_file(p) ? BenchSource::kitti_pairs
+                                                : BenchSource::manifest;
       if (s.bench.source == BenchSource::kitti_pairs) s.bench.kitti_root = s.data.kitti_root;
       o.bench = true, o.what = "benchmark: " + p;
       return o;

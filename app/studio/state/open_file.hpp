@@ -44,6 +44,9 @@ std::vector<std::string> purpose_extensions(FilePurpose purpose);
 /// A few words for the dialog's title ("source cloud", "configuration", ...).
 const char* purpose_name(FilePurpose purpose);
 
+/// Whether the first pair line of `path` is two frame numbers: a KITTI pairs file, not a manifest.
+bool is_kitti_pairs_file(const std::string& path);
+
 /// The first line of `path` that is neither blank nor a comment (`#` to the end of a line), split
 /// into words. Throws InputError naming the file as `what` ("the pairs file") when it cannot be
 /// read or has no such line.

@@ -5,6 +5,7 @@
 /// as the studio prints them: never "-0.00", a unit after every figure that has one.
 
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -35,11 +36,14 @@ inline std::string fixed(double v, int decimals) {
   return drop_negative_zero(buf);
 }
 
-/// A figure with its unit, to three significant digits: "1 m", "0.25 m", "-3.5 m"; no unit
-/// (empty): the number alone.
+/// A figure with its unit, to three significant digits: "1 m", "0.25 m", "-3.5 m"; from 1000 on
+/// a whole number ("3052 m", never "3.05e+03 m"); no unit (empty): the number alone.
 inline std::string with_unit(double v, const std::string& unit) {
   char buf[64];
-  std::snprintf(buf, sizeof(buf), "%.3g", v);
+  if (std::abs(v) >= 999.5 && std::abs(v) < 1e15)
+    std::snprintf(buf, sizeof(buf), "%.0f", v);
+  else
+    std::snprintf(buf, sizeof(buf), "%.3g", v);
   return drop_negative_zero(buf) + (unit.empty() ? "" : " " + unit);
 }
 

@@ -180,8 +180,8 @@ std::vector<std::pair<int, int>> read_pairs_file(const std::string& path) {
   int line_no = 0;
   while (std::getline(in, line)) {
     ++line_no;
-    const auto first = line.find_first_not_of(" \t\r");
-    if (first == std::string::npos || line[first] == '#') continue;
+    if (const auto hash = line.find('#'); hash != std::string::npos) line.resize(hash);
+    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
     const auto w = split_words(line);
     const std::string at = path + ":" + std::to_string(line_no);
     if (w.size() != 2)

@@ -50,8 +50,8 @@ class KittiSequence {
   Transform T_cam_velo_ = Transform::Identity();
 };
 
-/// Reads a pairs file: one `source target` pair of frame numbers per line; blank lines and lines
-/// starting with `#` are skipped. Throws InputError naming the file and line.
+/// Reads a pairs file: one `source target` pair of frame numbers per line; `#` starts a comment
+/// to the end of its line, and blank lines are skipped. Throws InputError naming the file and line.
 std::vector<std::pair<int, int>> read_pairs_file(const std::string& path);
 
 /// Parses 12 numbers (a 3x4 row-major matrix) into a 4x4 transform.
