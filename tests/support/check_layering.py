@@ -17,8 +17,6 @@ import sys
 LAYERS = [
     ("core/include/pagor/types.hpp", 0), ("core/include/pagor/errors.hpp", 0),
     ("core/include/pagor/util/", 1), ("core/src/util/", 1),
-    # Every stage's parameters: the vocabulary of the parameter tables, nothing of the stages.
-    ("core/include/pagor/params.hpp", 1),
     ("core/include/pagor/io/", 2), ("core/src/io/", 2),
     ("core/include/pagor/front/", 3), ("core/src/front/", 3),
     ("core/include/pagor/graph/", 4), ("core/src/graph/", 4),
@@ -34,6 +32,8 @@ LAYERS = [
     # pagor::eval: the harness and the generators, on top of the core.
     ("core/include/pagor/eval/", 12), ("core/src/eval/", 12),
     ("core/include/pagor/pagor.hpp", 13),
+    # Every stage's parameters sit with util: the tables' vocabulary, nothing of a stage.
+    ("core/include/pagor/params.hpp", 1),
     # the studio
     ("app/studio/render/", 20),
     ("app/studio/widgets/", 21),

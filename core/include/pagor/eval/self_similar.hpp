@@ -16,7 +16,6 @@
 /// (the scheme has no bench class).
 
 #include <cstdint>
-#include <iterator>
 #include <string>
 #include <vector>
 
@@ -38,9 +37,7 @@ inline constexpr EnumEntry<SelfSimilarKind> kSelfSimilarKinds[] = {
     {SelfSimilarKind::sliding_street, "sliding-street", "a street that slides along itself"},
     {SelfSimilarKind::symmetric_hall, "symmetric-hall", "a hall that is the same turned 180 deg"},
 };
-static_assert(std::size(kSelfSimilarKinds) ==
-                  static_cast<std::size_t>(SelfSimilarKind::symmetric_hall) + 1,
-              "an entry for every SelfSimilarKind");
+static_assert(covers_every_value(kSelfSimilarKinds, SelfSimilarKind::symmetric_hall));
 inline const auto& enum_entries(SelfSimilarKind) {
   return kSelfSimilarKinds;
 }

@@ -87,6 +87,16 @@ const char* enum_doc(E value) {
   return e ? e->doc : "";
 }
 
+/// Whether an enum's table has one entry per value, in order, up to `last`: for a static_assert
+/// beside the table, so that a value added to the enum without an entry does not compile.
+template <class E, std::size_t N>
+constexpr bool covers_every_value(const EnumEntry<E> (&table)[N], E last) {
+  if (N != static_cast<std::size_t>(last) + 1) return false;
+  for (std::size_t i = 0; i < N; ++i)
+    if (static_cast<std::size_t>(table[i].value) != i) return false;
+  return true;
+}
+
 /// The enum value named `name`, if any.
 template <class E>
 std::optional<E> enum_from_string(const std::string& name) {

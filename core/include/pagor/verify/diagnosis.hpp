@@ -14,7 +14,6 @@
 /// - a verdict naming the first stage at fault; before the front end, the labels: when a cloud's
 ///   labels do not fit the configured scheme (LabelReading::mismatch), that is the cause named.
 
-#include <iterator>
 #include <optional>
 #include <string>
 #include <vector>
@@ -62,9 +61,7 @@ inline constexpr EnumEntry<DiagnosisVerdict> kDiagnosisVerdicts[] = {
     {DiagnosisVerdict::verification_wrong, "verification-wrong",
      "verification picked a wrong candidate although one was right"},
 };
-static_assert(std::size(kDiagnosisVerdicts) ==
-                  static_cast<std::size_t>(DiagnosisVerdict::verification_wrong) + 1,
-              "an entry for every DiagnosisVerdict");
+static_assert(covers_every_value(kDiagnosisVerdicts, DiagnosisVerdict::verification_wrong));
 inline const auto& enum_entries(DiagnosisVerdict) {
   return kDiagnosisVerdicts;
 }
