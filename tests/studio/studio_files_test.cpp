@@ -119,6 +119,10 @@ TEST_CASE("what a file opens as: told by its extension and first lines") {
                     Catch::Contains("the pairs file has nothing but blank lines and comments"));
   CHECK_THROWS_WITH(studio::read_step_pairs(tmp.file("absent.txt"), "", "00"),
                     Catch::Contains("cannot open the pairs file"));
+  // A KITTI pairs file read without a root (the current directory's sequences/ is not there).
+  std::ofstream(tmp.file("kitti_pairs.txt")) << "0 20\n";
+  CHECK_THROWS_WITH(studio::read_step_pairs(tmp.file("kitti_pairs.txt"), "", "00"),
+                    Catch::Contains("is a KITTI pairs file: it needs the KITTI root"));
 }
 
 #ifdef PAGOR_HAVE_KITTI

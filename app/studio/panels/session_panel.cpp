@@ -36,8 +36,9 @@ void history_panel(const ParamHistory& params, const RunHistory& runs, StudioAct
       ImGui::Text("L%d", r.selected);
       ImGui::TableNextColumn();
       // Without clouds there is no D (the selection went by the correspondences' support).
-      const std::string d =
-          std::isfinite(r.best_d) ? ui::format("D %.0f m", r.best_d) : std::string("D n/a");
+      const std::string d = r.selected >= 0 && std::isfinite(r.best_d)
+                                ? ui::format("D %.0f m", r.best_d)
+                                : std::string("D n/a");
       if (r.success)
         ImGui::TextColored(*r.success ? ImVec4(0.35f, 0.9f, 0.45f, 1) : kRed, "%s %s",
                            *r.success ? "ok" : "FAIL", d.c_str());

@@ -68,11 +68,14 @@ int shown_level(const ViewState& view, int selected, int levels) {
 PairSet read_step_pairs(const std::string& path, const std::string& kitti_root,
                         const std::string& sequence) {
   if (!is_kitti_pairs_file(path)) return read_pair_manifest(path);
-  if (kitti_root.empty())
-    throw InputError(path +
-                     ": a KITTI pairs file (frame numbers) needs the KITTI root: choose "
-                     "KITTI in the data panel and set its root first");
-  return kitti_pair_set(kitti_root, sequence, path);
+  try {
+    return kitti_pair_set(kitti_root, sequence, path);  // an empty root: the current directory
+  } catch (const InputError& e) {
+    if (!kitti_root.empty()) throw;
+    throw InputError(std::string(e.what()) + " (" + path +
+                     " is a KITTI pairs file: it needs the KITTI root, set under KITTI in the "
+                     "data panel, or the studio started in that root)");
+  }
 }
 
 int index_of_pair(const PairSet& pairs, const PairSource& data) {

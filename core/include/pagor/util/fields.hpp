@@ -87,8 +87,9 @@ const char* enum_doc(E value) {
   return e ? e->doc : "";
 }
 
-/// Whether an enum's table has one entry per value, in order, up to `last`: for a static_assert
-/// beside the table, so that a value added to the enum without an entry does not compile.
+/// Whether an enum's table has one entry per value from the first to `last`, in order: for a
+/// static_assert beside the table, naming the enum's last value (a value added before it without
+/// an entry does not compile).
 template <class E, std::size_t N>
 constexpr bool covers_every_value(const EnumEntry<E> (&table)[N], E last) {
   if (N != static_cast<std::size_t>(last) + 1) return false;
