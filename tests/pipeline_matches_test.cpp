@@ -253,6 +253,49 @@ TEST_CASE("gedi-dev: a learned matcher's correspondences of real KITTI pairs, al
   }
 }
 
+// settle_selected: the selected level is settled (the levels the first pass could not prove get
+// the full search and the fallback only where selected), and a re-run of the selection alone (a
+// verification setting changed and changed back) gives what the first run gave.
+TEST_CASE("gedi-dev: the selected level is settled, the others keep the first pass's search") {
+  const CorrespondenceFile input =
+      read_correspondence_file(std::string(PAGOR_GEDI_DIR) + "/03.txt");
+  Config config = default_config();
+  config.clique.probe_nodes = 0;  // the colouring's proof only: levels are left to settle
+  Pipeline p(config);
+  p.set_matches(input.items);
+  p.set_ground_truth(read_transform_file(std::string(PAGOR_GEDI_DIR) + "/03.T.txt"));
+  p.run();
+  REQUIRE(p.selected_level() >= 0);
+  REQUIRE(p.selected_error());
+  CHECK(p.selected_error()->success);
+  int probed = 0;
+  for (const CliqueResult& c : p.cliques()) {
+    INFO("level " << c.level);
+    CHECK(is_clique(p.graph(), c.level, c.vertices));
+    if (c.level == p.selected_level()) {
+      CHECK(c.settled);
+      CHECK(c.budget != CliqueBudget::probe);
+    }
+    probed += c.budget == CliqueBudget::probe;
+    CHECK(c.settled == (c.budget != CliqueBudget::probe));
+  }
+  CHECK(probed > 0);  // the first pass left levels it could not prove
+  const std::vector<CliqueResult> first = p.cliques();
+  const auto T = p.selected_transform();
+  for (double mu : {config.verification.mu * 2, config.verification.mu}) {
+    config.verification.mu = mu;
+    p.set_config(config);
+    p.run();
+  }
+  CHECK(p.runs(Stage::clique) == 1);  // the selection alone ran again
+  REQUIRE(p.cliques().size() == first.size());
+  for (std::size_t l = 0; l < first.size(); ++l) {
+    CHECK(p.cliques()[l].vertices == first[l].vertices);
+    CHECK(p.cliques()[l].settled == first[l].settled);
+  }
+  CHECK(p.selected_transform()->isApprox(*T));
+}
+
 TEST_CASE("gedi-dev: a warm start that loses to the cold one falls back to it, and says so") {
   // Pair 03, level 2: the warm start settles on 66 where the cold one finds 68.
   const CorrespondenceFile input =
@@ -261,6 +304,7 @@ TEST_CASE("gedi-dev: a warm start that loses to the cold one falls back to it, a
   const PyramidGraph g = build_pyramid_graph(input.items, config.graph, 1);
   CliqueParams cp = config.clique;
   cp.cascade_check_nodes = 0;  // the fallback alone
+  cp.settle_selected = false;  // on every level
   const auto cascaded = solve_pyramid(g, cp);
   cp.solver = CliqueSolver::independent;
   const auto independent = solve_pyramid(g, cp);

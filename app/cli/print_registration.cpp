@@ -75,8 +75,13 @@ void print_clique_search(const Registration& r) {
   for (std::size_t l = 0; l < r.levels.size(); ++l) {
     const LevelSummary& s = r.levels[l];
     const char* budget = s.clique_budget == CliqueBudget::nodes ? "node" : "time";
-    if (s.clique_budget != CliqueBudget::none &&
-        s.clique_number_bound > static_cast<int>(s.clique.size()))
+    if (s.clique_budget == CliqueBudget::probe)  // not selected, so not searched further
+      std::printf(
+          "  level %zu: not selected, searched with clique.probe_nodes only: %zu members, "
+          "at most %d\n",
+          l, s.clique.size(), s.clique_number_bound);
+    else if (s.clique_budget != CliqueBudget::none &&
+             s.clique_number_bound > static_cast<int>(s.clique.size()))
       std::printf("  level %zu: clique search stopped by its %s budget: %zu members, at most %d\n",
                   l, budget, s.clique.size(), s.clique_number_bound);
     else if (s.clique_budget != CliqueBudget::none)  // stopped before any bound was reached

@@ -360,6 +360,7 @@ TEST_CASE("a level the bounded proof cannot settle keeps that search's clique an
     CliqueParams cp;
     cp.prove_first_min_edges = 0;
     cp.cascade_check_nodes = 30;  // too few nodes to prove the dense level
+    cp.settle_selected = false;   // every level's full cascade
     const auto warm = solve_pyramid(g, cp);
     cp.solver = CliqueSolver::independent;
     const auto cold = solve_pyramid(g, cp);
@@ -411,6 +412,7 @@ TEST_CASE("two threads give the one-thread cliques, the fallback run beside the 
     CliqueParams cp;
     cp.prove_first_min_edges = 0;
     cp.cascade_check_nodes = 30;
+    cp.settle_selected = false;  // every level's full cascade, fallback included
     const auto one = solve_pyramid(g, cp);
     const auto two = solve_pyramid(g, cp, kNoDeadline, 2);
     REQUIRE(one.size() == two.size());
@@ -428,4 +430,95 @@ TEST_CASE("two threads give the one-thread cliques, the fallback run beside the 
     }
   }
   CHECK(beside > 0);
+}
+
+// settle_selected: the first pass gives each level's searches probe_nodes and no fallback, and
+// leaves a level it cannot prove to settle_level, which finishes it as the full cascade would: a
+// clique no smaller, and never smaller than the independent solve's (the fallback ran).
+TEST_CASE(
+    "a first pass leaves unproven levels unsettled, and settling one restores the guarantee") {
+  int unsettled = 0;
+  for (std::uint64_t seed : {21u, 22u, 23u}) {
+    const PyramidGraph g = two_levels(300, 20, 0.05, 0.5, seed);
+    CliqueParams cp;
+    cp.prove_first_min_edges = 0;
+    cp.cascade_check_nodes = 3000;
+    cp.probe_nodes = 30;
+    REQUIRE(cp.settle_selected);  // the default
+    const auto first = solve_pyramid(g, cp);
+    CliqueParams independent = cp;
+    independent.solver = CliqueSolver::independent;
+    const auto cold = solve_pyramid(g, independent);
+    for (std::size_t l = 0; l < first.size(); ++l) {
+      const CliqueResult& r = first[l];
+      INFO("seed " << seed << ", level " << l << ": " << r.vertices.size() << " members");
+      CHECK(is_clique(g, static_cast<int>(l), r.vertices));
+      CHECK(r.settled == (r.proven || r.budget == CliqueBudget::time));
+      if (r.settled) {
+        CHECK(r.budget != CliqueBudget::probe);
+        continue;
+      }
+      ++unsettled;
+      CHECK(r.budget == CliqueBudget::probe);
+      const CliqueResult s = settle_level(g, r, cp);
+      CHECK(s.settled);
+      CHECK(s.budget != CliqueBudget::probe);
+      CHECK(is_clique(g, static_cast<int>(l), s.vertices));
+      CHECK(s.vertices.size() >= r.vertices.size());
+      CHECK(s.vertices.size() >= cold[l].vertices.size());
+      CHECK(s.time_ms >= r.time_ms);
+      if (s.proven) CHECK(s.clique_number_bound == static_cast<int>(s.vertices.size()));
+      const CliqueResult again = settle_level(g, s, cp);  // a settled level is left as it is
+      CHECK(again.vertices == s.vertices);
+      CHECK(again.time_ms == s.time_ms);
+    }
+  }
+  CHECK(unsettled > 0);  // the path was taken
+}
+
+// settle_selection settles the selected level, fits it again when its clique changed and selects
+// again, until the selected level is settled; each level at most once.
+TEST_CASE("settle_selection settles what the selection picks, and selects again") {
+  const PyramidGraph g = two_levels(300, 20, 0.05, 0.5, 22u);
+  CliqueParams cp;
+  cp.prove_first_min_edges = 0;
+  cp.cascade_check_nodes = 3000;
+  cp.probe_nodes = 0;  // the colouring's proof only: the dense level is left unsettled
+  std::vector<CliqueResult> cliques = solve_pyramid(g, cp);
+  REQUIRE(cliques.size() == 2);
+  REQUIRE_FALSE(cliques[1].settled);
+  const std::vector<int> before = cliques[1].vertices;
+  int selections = 0;
+  std::vector<int> refits;
+  const double ms = settle_selection(
+      g, cliques, cp, kNoDeadline,
+      [&] {
+        ++selections;
+        return 1;
+      },
+      [&](int level) { refits.push_back(level); });
+  CHECK(cliques[1].settled);
+  CHECK(ms >= 0.0);
+  CHECK(is_clique(g, 1, cliques[1].vertices));
+  CHECK(cliques[1].vertices.size() >= before.size());
+  // Refitted exactly when the clique changed; then selected again, and the loop ends there.
+  CHECK(refits == (cliques[1].vertices != before ? std::vector<int>{1} : std::vector<int>{}));
+  CHECK(selections == (refits.empty() ? 1 : 2));
+  // Nothing selected: nothing settled.
+  std::vector<CliqueResult> untouched = solve_pyramid(g, cp);
+  CHECK(settle_selection(
+            g, untouched, cp, kNoDeadline, [] { return -1; }, [](int) {}) == 0.0);
+  CHECK_FALSE(untouched[1].settled);
+}
+
+TEST_CASE("the paper's preset settles every level in the cascade") {
+  CHECK_FALSE(preset_config("paper").clique.settle_selected);
+  CHECK(default_config().clique.settle_selected);
+  const PyramidGraph g = two_levels(300, 20, 0.05, 0.5, 21u);
+  CliqueParams cp = preset_config("paper").clique;
+  cp.cascade_check_nodes = 30;
+  for (const CliqueResult& r : solve_pyramid(g, cp)) {
+    CHECK(r.settled);
+    CHECK(r.budget != CliqueBudget::probe);
+  }
 }

@@ -57,7 +57,9 @@ std::string clique_search_text(const LevelView& l) {
     out = "not proven; bound " + std::to_string(l.clique_number_bound);
   else
     out = "not proven (relaxation only)";
-  if (l.clique_budget != CliqueBudget::none)
+  if (l.clique_budget == CliqueBudget::probe)
+    out += "; not selected: searched with clique.probe_nodes only";
+  else if (l.clique_budget != CliqueBudget::none)
     out += std::string("; ") + to_string(l.clique_budget) + " budget ran out";
   return out + "; start " + to_string(l.clique_start);
 }

@@ -340,6 +340,8 @@ struct CliqueParams {
   bool cascade_fallback = true;
   long cascade_check_nodes = 200000;
   double max_step = 1e6;
+  bool settle_selected = true;
+  long probe_nodes = 20000;
 
   template <class V>
   static void fields(V&& v) {
@@ -427,6 +429,19 @@ struct CliqueParams {
     v(&CliqueParams::max_step,
       {"max_step", "The largest gradient step tried; beyond it a step only renormalises.", "",
        Range::above(0, 1e12), std::numeric_limits<double>::quiet_NaN(), true});
+    v(&CliqueParams::settle_selected,
+      {"settle_selected",
+       "Cascaded: spend the full search (cascade_check_nodes) and the cold-start fallback only "
+       "where they decide the result. A first pass gives every level's searches probe_nodes and "
+       "no fallback; the level the selection picks, if left unproven, is then finished as the "
+       "full cascade would have, and the selection re-run when its clique grows (again for a "
+       "level that then wins). Off: every level gets them (the paper preset)."});
+    v(&CliqueParams::probe_nodes,
+      {"probe_nodes",
+       "settle_selected: node budget of each bounded search in the first pass (the proof of a "
+       "level's lower bound, the search after its relaxation); a level left unproven has budget "
+       "'probe' unless it is selected and settled.",
+       "", Range::closed(0, 1e10), std::numeric_limits<double>::quiet_NaN(), true});
   }
 };
 

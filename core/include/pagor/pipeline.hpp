@@ -167,6 +167,8 @@ class Pipeline {
   void run_refinement();
   void run_correspondences();
   void run_gnc();
+  PoseEstimate pose_of(const CliqueResult& clique, const GncParams& params) const;
+  void select_and_settle();
   /// Whether the landmarks take part: clouds, and no matches or fused ones.
   bool uses_landmarks() const;
   void warn_if_numberings_differ();
@@ -188,8 +190,11 @@ class Pipeline {
   LandmarkSet source_landmarks_, target_landmarks_;
   CorrespondenceSet correspondences_;
   PyramidGraphBuilder graph_;  // keeps its storage from pair to pair
-  std::vector<CliqueResult> cliques_;
-  std::vector<PoseEstimate> poses_;
+  // The clique and GNC stages' results (first_*), and those after the selected level is settled
+  // (clique.settle_selected), which everything after the selection reads.
+  std::vector<CliqueResult> first_cliques_, cliques_;
+  std::vector<PoseEstimate> first_poses_, poses_;
+  double clique_pass_ms_ = 0.0, settle_ms_ = 0.0;
   std::optional<std::pair<GroundPlane, GroundPlane>> ground_;  // of the clouds, when needed
   std::optional<Verifier> verifier_;
   VerificationResult verification_;
@@ -202,7 +207,7 @@ class Pipeline {
   std::array<int, kStageCount> runs_{};
   std::array<double, kStageCount> times_{};
   std::chrono::steady_clock::time_point run_started_{};
-  bool pair_budget_hit_ = false;
+  bool pair_budget_hit_ = false, pass_budget_hit_ = false;
   Deadline clique_deadline() const;
 };
 

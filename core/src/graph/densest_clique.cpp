@@ -217,6 +217,54 @@ CliqueResult cold_start(const PyramidGraph& g, int level, const CliqueParams& p,
   return relax_level(g, level, random_start(g.vertices, p.seed), p, {}, 0.0, deadline);
 }
 
+// The end of a warm level the relaxation left unproven, or of any level settle_level finishes: a
+// bounded search for a larger clique (cascade_check_nodes), then, unless that proves the clique
+// maximum and with `fallback`, the level solved from the cold start, the larger clique kept.
+// `searched`, if it ran, is prove_first's search of the same budget; `early`, if valid, the cold
+// start already under way on another thread.
+void check_level(const PyramidGraph& g, int level, const CliqueParams& p, CliqueResult& r,
+                 Deadline deadline, const UnprovenSearch& searched, bool fallback,
+                 std::future<CliqueResult>* early) {
+  // A warm start can settle in a worse local optimum than a cold one (KITTI 20 -> 30, level 2:
+  // 29 against 30; gedi-dev 03, level 2: 66 against 68). A warm level therefore ends with a
+  // bounded exact search for a larger clique (cheap here: the clique found prunes every vertex
+  // whose core number is below its size; a greedy colouring may prove it maximum at once). Unless
+  // that proves the clique maximum, the level is also solved from the cold start, exactly as the
+  // independent solver does, and the larger clique is kept: the cascade never loses to it.
+  // Where prove_first's search of this level already ran out of the same budget and the
+  // relaxation found no larger clique than it did, the search is not run again from a clique no
+  // larger than its own (on the densest levels it found no proof the second time either, and was
+  // a quarter of the time): its largest clique and bound stand in. A larger clique from the
+  // relaxation prunes more: then the search runs from it, and often proves it at once.
+  bool late = false;
+  if (searched.ran && r.vertices.size() <= searched.clique.size()) {
+    if (searched.clique.size() > r.vertices.size()) r.vertices = searched.clique;
+    r.clique_number_bound = searched.bound;
+    r.proven = static_cast<int>(r.vertices.size()) >= searched.bound;
+    late = searched.late;
+  } else {
+    r.vertices = detail::larger_clique(g, level, std::move(r.vertices), p.cascade_check_nodes,
+                                       r.proven, &r.clique_number_bound, deadline, &late);
+  }
+  // 0 nodes: the colouring's proof only
+  if (!r.proven && (late || r.budget == CliqueBudget::time))
+    r.budget = CliqueBudget::time;
+  else if (!r.proven && p.cascade_check_nodes > 0)
+    r.budget = CliqueBudget::nodes;
+  if (!r.proven && fallback && r.budget != CliqueBudget::time) {
+    CliqueResult cold = early && early->valid() ? early->get() : cold_start(g, level, p, deadline);
+    if (cold.budget == CliqueBudget::time) r.budget = CliqueBudget::time;
+    r.gradient_steps += cold.gradient_steps;
+    r.penalty_updates += cold.penalty_updates;
+    if (cold.vertices.size() > r.vertices.size()) {
+      r.vertices = std::move(cold.vertices);
+      r.u = std::move(cold.u);  // the next level starts from where the cold start ended
+      r.penalty = cold.penalty;
+      r.start = CliqueStart::fallback;
+    }
+  }
+}
+
 // solve_clipper, given the level's bit rows if solve_pyramid built them. With `threads` > 1, a
 // warm level whose bounded proof failed (the fallback will most likely run) starts the fallback
 // beside the warm relaxation on a second thread; it is used only where it would have run, so the
@@ -236,46 +284,8 @@ CliqueResult solve_level(const PyramidGraph& g, int level, const std::vector<dou
   if (threads > 1 && warm && searched.ran && p.cascade_fallback)
     early = std::async(std::launch::async, [&] { return cold_start(g, level, p, deadline); });
   r = relax_level(g, level, u0, p, known_clique, d0, deadline);
-  // A warm start can settle in a worse local optimum than a cold one (KITTI 20 -> 30, level 2:
-  // 29 against 30; gedi-dev 03, level 2: 66 against 68). A warm level therefore ends with a
-  // bounded exact search for a larger clique (cheap here: the clique found prunes every vertex
-  // whose core number is below its size; a greedy colouring may prove it maximum at once). Unless
-  // that proves the clique maximum, the level is also solved from the cold start, exactly as the
-  // independent solver does, and the larger clique is kept: the cascade never loses to it.
-  // Where prove_first's search of this level already ran out of the same budget and the
-  // relaxation found no larger clique than it did, the search is not run again from a clique no
-  // larger than its own (on the densest levels it found no proof the second time either, and was
-  // a quarter of the time): its largest clique and bound stand in. A larger clique from the
-  // relaxation prunes more: then the search runs from it, and often proves it at once.
-  if (warm && !r.proven) {
-    bool late = false;
-    if (searched.ran && r.vertices.size() <= searched.clique.size()) {
-      if (searched.clique.size() > r.vertices.size()) r.vertices = std::move(searched.clique);
-      r.clique_number_bound = searched.bound;
-      r.proven = static_cast<int>(r.vertices.size()) >= searched.bound;
-      late = searched.late;
-    } else {
-      r.vertices = detail::larger_clique(g, level, std::move(r.vertices), p.cascade_check_nodes,
-                                         r.proven, &r.clique_number_bound, deadline, &late);
-    }
-    // 0 nodes: the colouring's proof only
-    if (!r.proven && (late || r.budget == CliqueBudget::time))
-      r.budget = CliqueBudget::time;
-    else if (!r.proven && p.cascade_check_nodes > 0)
-      r.budget = CliqueBudget::nodes;
-    if (!r.proven && p.cascade_fallback && r.budget != CliqueBudget::time) {
-      CliqueResult cold = early.valid() ? early.get() : cold_start(g, level, p, deadline);
-      if (cold.budget == CliqueBudget::time) r.budget = CliqueBudget::time;
-      r.gradient_steps += cold.gradient_steps;
-      r.penalty_updates += cold.penalty_updates;
-      if (cold.vertices.size() > r.vertices.size()) {
-        r.vertices = std::move(cold.vertices);
-        r.u = std::move(cold.u);  // the next level starts from where the cold start ended
-        r.penalty = cold.penalty;
-        r.start = CliqueStart::fallback;
-      }
-    }
-  }
+  if (warm && !r.proven)
+    check_level(g, level, p, r, deadline, searched, p.cascade_fallback, &early);
   if (r.proven) r.budget = CliqueBudget::none;  // proven maximum: no budget cost it anything
   r.time_ms = ms_since(t0);
   return r;
@@ -312,9 +322,43 @@ CliqueResult lower_bound_only(const PyramidGraph& g, int level, const CliquePara
 
 }  // namespace
 
+namespace {
+
+// A first pass's level that settle_level would search on: unproven, not stopped by time, and
+// either warm (the check and the fallback) or one whose bounded proof ran (a cold level's).
+void mark_unsettled(const PyramidGraph& g, const CliqueParams& p, CliqueResult& r) {
+  const bool warm = r.start != CliqueStart::cold;
+  if (r.proven || r.budget == CliqueBudget::time || !(warm || proves_first(g, r.level, p))) return;
+  r.settled = false;
+  r.budget = CliqueBudget::probe;
+}
+
+}  // namespace
+
+CliqueResult settle_level(const PyramidGraph& g, CliqueResult r, const CliqueParams& p,
+                          Deadline deadline) {
+  if (r.settled) return r;
+  const auto t0 = Clock::now();
+  r.budget = CliqueBudget::none;
+  // A warm level gets its check and fallback; a cold one the search its proof would have made.
+  const bool warm = r.start != CliqueStart::cold;
+  check_level(g, r.level, p, r, deadline, UnprovenSearch{}, warm && p.cascade_fallback, nullptr);
+  if (r.proven) r.budget = CliqueBudget::none;
+  r.settled = true;
+  r.time_ms += ms_since(t0);
+  return r;
+}
+
 std::vector<CliqueResult> solve_pyramid(const PyramidGraph& g, const CliqueParams& p,
                                         Deadline deadline, int threads) {
   const auto t0 = Clock::now();
+  // settle_selected: a first pass with probe_nodes and no fallback (settle_level does the rest).
+  const bool first_pass = p.settle_selected && p.solver == CliqueSolver::cascaded;
+  CliqueParams pass = p;
+  if (first_pass) {
+    pass.cascade_check_nodes = p.probe_nodes;
+    pass.cascade_fallback = false;
+  }
   std::vector<CliqueResult> out;
   const std::vector<double> start = random_start(g.vertices, p.seed);
   // The exact solver's budgets hold for the whole pyramid: the nodes are shared, and level l may
@@ -361,11 +405,12 @@ std::vector<CliqueResult> solve_pyramid(const PyramidGraph& g, const CliqueParam
         // Alg. 1: level l starts where level l-1 ended. Its edges are a subset of level l's, so its
         // clique is also a clique here: a lower bound for pruning.
         if (l == 0)
-          out.push_back(solve_level(g, l, start, p, {}, 0.0, deadline, bits_of(l)));
+          out.push_back(solve_level(g, l, start, pass, {}, 0.0, deadline, bits_of(l)));
         else
-          out.push_back(solve_level(g, l, out.back().u, p, out.back().vertices,
+          out.push_back(solve_level(g, l, out.back().u, pass, out.back().vertices,
                                     p.warm_start_penalty * out.back().penalty, deadline, bits_of(l),
                                     threads));
+        if (first_pass) mark_unsettled(g, p, out.back());
         break;
     }
   }

@@ -37,11 +37,16 @@ enum class CliqueBudget {
   none,   ///< no search was cut short
   nodes,  ///< a branch-and-bound node budget ran out
   time,   ///< the wall-time budget ran out
+  /// not selected: the level's search had the first pass's budget (clique.probe_nodes) and was
+  /// not settled (clique.settle_selected)
+  probe,
 };
 inline constexpr EnumEntry<CliqueBudget> kCliqueBudgets[] = {
     {CliqueBudget::none, "none", "no search was cut short"},
     {CliqueBudget::nodes, "nodes", "a node budget ran out"},
     {CliqueBudget::time, "time", "the time budget ran out"},
+    {CliqueBudget::probe, "probe",
+     "not selected: only the first pass's search (clique.probe_nodes) ran"},
 };
 inline const auto& enum_entries(CliqueBudget) {
   return kCliqueBudgets;
@@ -63,7 +68,10 @@ struct CliqueResult {
   int clique_number_bound = 0;
   CliqueBudget budget = CliqueBudget::none;  ///< which budget cut a search short
   CliqueStart start = CliqueStart::cold;     ///< how the level's search started
-  double time_ms = 0.0;                      ///< wall time [ms]
+  double time_ms = 0.0;                      ///< wall time [ms], settling included
+  /// false: a first pass (clique.settle_selected) left the level unproven within probe_nodes and
+  /// without its cold-start fallback; settle_level gives it the rest when it is selected
+  bool settled = true;
 };
 
 /// CLIPPER relaxation on level `level` from `u0` (any non-negative vector of the graph's size; it
@@ -93,13 +101,45 @@ std::vector<double> random_start(int size, std::uint64_t seed);
 /// `clique_number_bound` and the budget in `budget`.
 CliqueResult exact_max_clique(const PyramidGraph& graph, int level, const CliqueParams& params);
 
-/// One clique per level, in level order, with the solver `params.solver` selects. After
+/// One clique per level, in level order, with the solver `params.solver` selects. Cascaded with
+/// `params.settle_selected`, this is a first pass: each level's bounded searches get
+/// `params.probe_nodes`, no cold-start fallback runs, and a level left unproven is not `settled`
+/// (budget `probe`): settle_level finishes the one the selection picks. After
 /// `deadline` every search stops with the best clique it has (a level not yet started keeps its
 /// lower bound: the previous level's clique grown, or greedy cliques), and its `budget` reads
 /// `time`. With `threads` > 1 (cascaded), a level whose bounded proof fails solves its cold-start
 /// fallback beside the warm relaxation: the same cliques, sooner (unless the deadline passes).
 std::vector<CliqueResult> solve_pyramid(const PyramidGraph& graph, const CliqueParams& params,
                                         Deadline deadline = kNoDeadline, int threads = 1);
+
+/// Finishes a level solve_pyramid's first pass left unsettled, as the full cascade would have:
+/// a bounded search for a larger clique from its clique (`params.cascade_check_nodes`), then,
+/// unless that proves it maximum, the cold-start fallback of a warm level (cascade_fallback).
+/// The result is settled, with the time added; a settled level is returned as it is.
+CliqueResult settle_level(const PyramidGraph& graph, CliqueResult level, const CliqueParams& params,
+                          Deadline deadline = kNoDeadline);
+
+/// The selection with settle_selected: `select()` selects among the levels' candidates and
+/// returns the selected level (-1: none); while that level is unsettled it is settled, and when
+/// its clique changed, `refit(level)` fits its candidate again and the selection is re-run. Each
+/// level is settled at most once. Returns the time spent settling [ms].
+template <class Select, class Refit>
+double settle_selection(const PyramidGraph& graph, std::vector<CliqueResult>& cliques,
+                        const CliqueParams& params, Deadline deadline, Select&& select,
+                        Refit&& refit) {
+  double ms = 0.0;
+  for (int level = select(); level >= 0 && !cliques[static_cast<std::size_t>(level)].settled;
+       level = select()) {
+    CliqueResult& c = cliques[static_cast<std::size_t>(level)];
+    const std::vector<int> before = c.vertices;
+    const double t0 = c.time_ms;
+    c = settle_level(graph, std::move(c), params, deadline);
+    ms += c.time_ms - t0;
+    if (c.vertices == before) break;  // the same clique: the same candidate and selection
+    refit(level);
+  }
+  return ms;
+}
 
 /// Whether every pair of `vertices` is adjacent at `level`.
 bool is_clique(const PyramidGraph& graph, int level, const std::vector<int>& vertices);
