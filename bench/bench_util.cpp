@@ -154,6 +154,8 @@ SolverComparison compare_solvers(const PyramidGraph& g, const CliqueParams& a,
 }
 
 SolverComparison cascaded_vs_independent(const PyramidGraph& g, int reps, CliqueParams base) {
+  // Every level solved in full (no selection here to settle one): the cascade as Alg. 1 runs it.
+  base.settle_selected = false;
   CliqueParams independent = base;
   base.solver = CliqueSolver::cascaded;
   independent.solver = CliqueSolver::independent;

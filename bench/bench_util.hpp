@@ -44,7 +44,8 @@ struct SolverComparison {
 };
 SolverComparison compare_solvers(const PyramidGraph& g, const CliqueParams& a,
                                  const CliqueParams& b, int reps);
-/// `base` cascaded (a) against `base` independent (b).
+/// `base` cascaded (a) against `base` independent (b), every level solved in full (settle_selected
+/// off: there is no selection to settle one).
 SolverComparison cascaded_vs_independent(const PyramidGraph& g, int reps, CliqueParams base = {});
 
 /// Clique sizes per level, "17,24,29,34".

@@ -142,6 +142,7 @@ void Pipeline::run(const ProgressFn& progress, const std::atomic<bool>* cancel) 
   if (!has_input())
     throw InputError("the pipeline has no input: neither clouds nor a matcher's correspondences");
   run_started_ = std::chrono::steady_clock::now();
+  const int clique_runs = runs_[static_cast<std::size_t>(Stage::clique)];
   for (int i = 0; i < kStageCount; ++i) {
     if (!stale_[static_cast<std::size_t>(i)]) continue;
     if (cancel && cancel->load()) throw Cancelled();
@@ -151,12 +152,11 @@ void Pipeline::run(const ProgressFn& progress, const std::atomic<bool>* cancel) 
     run_stage(s);
     times_[static_cast<std::size_t>(i)] =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-    // Settling the selected level (select_and_settle) is clique work: its time is the clique
-    // stage's, whichever stage ran it.
-    if (s == Stage::clique) clique_pass_ms_ = times_[static_cast<std::size_t>(i)];
-    if (s == Stage::verification) {
+    // Settling the selected level (select_and_settle) is clique work: in a run that ran the
+    // clique stage, its time is that stage's (a re-run of the selection alone keeps it).
+    if (s == Stage::verification && runs_[static_cast<std::size_t>(Stage::clique)] > clique_runs) {
       times_[static_cast<std::size_t>(Stage::verification)] -= settle_ms_;
-      times_[static_cast<std::size_t>(Stage::clique)] = clique_pass_ms_ + settle_ms_;
+      times_[static_cast<std::size_t>(Stage::clique)] += settle_ms_;
     }
     ++runs_[static_cast<std::size_t>(i)];
     stale_[static_cast<std::size_t>(i)] = false;
@@ -218,6 +218,9 @@ void Pipeline::run_stage(Stage stage) {
           pass_budget_hit_ |= c.budget == CliqueBudget::time;
       cliques_ = first_cliques_;  // until the selection settles one
       pair_budget_hit_ = pass_budget_hit_;
+      // What the pair's budget leaves for settling the selected level (select_and_settle).
+      clique_left_ = deadline == kNoDeadline ? std::chrono::steady_clock::duration::max()
+                                             : deadline - std::chrono::steady_clock::now();
       break;
     }
     case Stage::gnc:
@@ -315,21 +318,21 @@ void Pipeline::run_gnc() {
 
 // The selection, with clique.settle_selected the selected level settled (settle_selection): it
 // starts from the clique and GNC stages' results each time, so that a re-run of this stage alone
-// (a verification setting changed) gives what a full run gives. The settling's time is the
-// clique stage's (settle_ms_).
+// (a verification setting changed) gives what a full run gives. Settling has what the pair's
+// budget left at the end of the clique stage (clique_left_). Its time, refits included and
+// selections not, is clique work (settle_ms_).
 void Pipeline::select_and_settle() {
+  using Clock = std::chrono::steady_clock;
   cliques_ = first_cliques_;
   poses_ = first_poses_;
-  const auto t0 = std::chrono::steady_clock::now();
-  double first_ms = -1.0;
+  const auto t0 = Clock::now();
+  Clock::duration selecting{0};
   const auto select = [&] {
-    const auto ts = std::chrono::steady_clock::now();
+    const auto ts = Clock::now();
     verification_ =
         verifier_ ? verify_candidates(*verifier_, poses_, config_.verification, threads_now())
                   : select_without_clouds(poses_, correspondences_.items, config_.gnc.noise_bound);
-    if (first_ms < 0)
-      first_ms =
-          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - ts).count();
+    selecting += Clock::now() - ts;
     return verification_.selected;
   };
   const GncParams params = gnc_params();
@@ -337,10 +340,12 @@ void Pipeline::select_and_settle() {
     const auto l = static_cast<std::size_t>(level);
     poses_[l] = pose_of(cliques_[l], params);
   };
-  const Deadline deadline = clique_deadline();
-  settle_selection(graph_.graph(), cliques_, config_.clique, deadline, select, refit);
-  const auto t1 = std::chrono::steady_clock::now();
-  settle_ms_ = std::chrono::duration<double, std::milli>(t1 - t0).count() - first_ms;
+  const Deadline deadline =
+      clique_left_ == Clock::duration::max() ? kNoDeadline : t0 + clique_left_;
+  settle_selection(graph_.graph(), cliques_, config_.clique, deadline, select, refit,
+                   threads_now());
+  const auto t1 = Clock::now();
+  settle_ms_ = std::chrono::duration<double, std::milli>(t1 - t0 - selecting).count();
   pair_budget_hit_ = pass_budget_hit_;
   if (deadline != kNoDeadline && t1 > deadline)
     for (const CliqueResult& c : cliques_) pair_budget_hit_ |= c.budget == CliqueBudget::time;

@@ -163,6 +163,7 @@ TEST_CASE("never smaller than CLIPPER rounded to the full support, on associatio
       for (const auto solver : {CliqueSolver::cascaded, CliqueSolver::independent}) {
         CliqueParams cp;
         cp.solver = solver;
+        cp.settle_selected = false;  // every level's full cascade
         const auto ours = solve_pyramid(g, cp);
         for (int l = 0; l < g.levels(); ++l) {
           INFO("m " << m << ", seed " << seed << ", level " << l
@@ -226,6 +227,7 @@ TEST_CASE("the cascade is never smaller than the independent solves, level by le
     CliqueParams cp;
     cp.cascade_check_nodes = check_nodes;
     cp.prove_first = prove_first;
+    cp.settle_selected = false;  // every level's full cascade
     const auto warm = solve_pyramid(g, cp);
     cp.solver = CliqueSolver::independent;
     const auto cold = solve_pyramid(g, cp);
@@ -392,6 +394,7 @@ TEST_CASE("a relaxation's larger clique is searched from, and proven, after a fa
     CliqueParams cp;
     cp.prove_first_min_edges = 0;
     cp.cascade_check_nodes = 30;
+    cp.settle_selected = false;  // the full cascade's check on every level
     const auto r = solve_pyramid(g, cp);
     INFO("seed " << seed << ": level 1 " << r[1].vertices.size() << " members, bound "
                  << r[1].clique_number_bound << (r[1].proven ? ", proven" : ""));
@@ -432,9 +435,10 @@ TEST_CASE("two threads give the one-thread cliques, the fallback run beside the 
   CHECK(beside > 0);
 }
 
-// settle_selected: the first pass gives each level's searches probe_nodes and no fallback, and
-// leaves a level it cannot prove to settle_level, which finishes it as the full cascade would: a
-// clique no smaller, and never smaller than the independent solve's (the fallback ran).
+// settle_selected: the first pass gives each level's searches probe_nodes, keeps the clique of a
+// level they cannot prove without relaxing it, and runs no fallback; settle_level finishes such a
+// level in two steps (the relaxation, then the search and the fallback), as the full cascade
+// would: a clique no smaller, and never smaller than the independent solve's.
 TEST_CASE(
     "a first pass leaves unproven levels unsettled, and settling one restores the guarantee") {
   int unsettled = 0;
@@ -448,6 +452,7 @@ TEST_CASE(
     const auto first = solve_pyramid(g, cp);
     CliqueParams independent = cp;
     independent.solver = CliqueSolver::independent;
+    independent.settle_selected = false;
     const auto cold = solve_pyramid(g, independent);
     for (std::size_t l = 0; l < first.size(); ++l) {
       const CliqueResult& r = first[l];
@@ -460,24 +465,41 @@ TEST_CASE(
       }
       ++unsettled;
       CHECK(r.budget == CliqueBudget::probe);
-      const CliqueResult s = settle_level(g, r, cp);
+      CHECK_FALSE(r.relaxed);  // its bounded proof ran and failed: the relaxation waits
+      CHECK(r.gradient_steps == 0);
+      CliqueResult s = r;
+      int steps = 0;
+      while (!s.settled && steps < 3) {
+        const CliqueResult before = s;
+        s = settle_level(g, s, cp);
+        ++steps;
+        CHECK(is_clique(g, static_cast<int>(l), s.vertices));
+        CHECK(s.vertices.size() >= before.vertices.size());  // never shrinks
+        CHECK(s.time_ms >= before.time_ms);
+        CHECK(s.relaxed);
+      }
+      CHECK(steps <= 2);
       CHECK(s.settled);
+      CHECK(s.gradient_steps > 0);  // the relaxation ran
       CHECK(s.budget != CliqueBudget::probe);
-      CHECK(is_clique(g, static_cast<int>(l), s.vertices));
-      CHECK(s.vertices.size() >= r.vertices.size());
       CHECK(s.vertices.size() >= cold[l].vertices.size());
-      CHECK(s.time_ms >= r.time_ms);
       if (s.proven) CHECK(s.clique_number_bound == static_cast<int>(s.vertices.size()));
       const CliqueResult again = settle_level(g, s, cp);  // a settled level is left as it is
       CHECK(again.vertices == s.vertices);
       CHECK(again.time_ms == s.time_ms);
+      // Two threads: the fallback beside the search, the same level.
+      CliqueResult t = r;
+      while (!t.settled) t = settle_level(g, t, cp, kNoDeadline, 2);
+      CHECK(t.vertices == s.vertices);
+      CHECK(t.proven == s.proven);
+      CHECK(t.start == s.start);
     }
   }
   CHECK(unsettled > 0);  // the path was taken
 }
 
-// settle_selection settles the selected level, fits it again when its clique changed and selects
-// again, until the selected level is settled; each level at most once.
+// settle_selection steps the selected level until it is settled, fits it again whenever its
+// clique changed and selects again after each step.
 TEST_CASE("settle_selection settles what the selection picks, and selects again") {
   const PyramidGraph g = two_levels(300, 20, 0.05, 0.5, 22u);
   CliqueParams cp;
@@ -487,7 +509,13 @@ TEST_CASE("settle_selection settles what the selection picks, and selects again"
   std::vector<CliqueResult> cliques = solve_pyramid(g, cp);
   REQUIRE(cliques.size() == 2);
   REQUIRE_FALSE(cliques[1].settled);
-  const std::vector<int> before = cliques[1].vertices;
+  // The same steps by hand: how many, and which changed the clique.
+  int steps = 0, changes = 0;
+  for (CliqueResult c = cliques[1]; !c.settled; ++steps) {
+    const std::vector<int> before = c.vertices;
+    c = settle_level(g, c, cp);
+    changes += c.vertices != before;
+  }
   int selections = 0;
   std::vector<int> refits;
   const double ms = settle_selection(
@@ -500,10 +528,9 @@ TEST_CASE("settle_selection settles what the selection picks, and selects again"
   CHECK(cliques[1].settled);
   CHECK(ms >= 0.0);
   CHECK(is_clique(g, 1, cliques[1].vertices));
-  CHECK(cliques[1].vertices.size() >= before.size());
-  // Refitted exactly when the clique changed; then selected again, and the loop ends there.
-  CHECK(refits == (cliques[1].vertices != before ? std::vector<int>{1} : std::vector<int>{}));
-  CHECK(selections == (refits.empty() ? 1 : 2));
+  CHECK(selections == steps + 1);  // once first, then after every step
+  CHECK(refits == std::vector<int>(static_cast<std::size_t>(changes), 1));
+  CHECK(cliques[0].settled);  // never selected, never touched
   // Nothing selected: nothing settled.
   std::vector<CliqueResult> untouched = solve_pyramid(g, cp);
   CHECK(settle_selection(

@@ -412,8 +412,9 @@ struct CliqueParams {
     v(&CliqueParams::pair_time_budget_ms,
       {"pair_time_budget_ms",
        "Wall time one registration may take up to the end of its clique step, from the start of "
-       "the run; the clique search gets what is left, and when it runs out each unfinished level "
-       "keeps the best clique found so far (its budget reads 'time'); 0: none.",
+       "the run; the clique search gets what is left (settling the selected level gets what the "
+       "clique stage left), and when it runs out each unfinished level keeps the best clique "
+       "found so far (its budget reads 'time'); 0: none.",
        "ms", Range::closed(1, 3.6e6), 0.0, true});
     v(&CliqueParams::cascade_fallback,
       {"cascade_fallback",
@@ -431,11 +432,13 @@ struct CliqueParams {
        Range::above(0, 1e12), std::numeric_limits<double>::quiet_NaN(), true});
     v(&CliqueParams::settle_selected,
       {"settle_selected",
-       "Cascaded: spend the full search (cascade_check_nodes) and the cold-start fallback only "
-       "where they decide the result. A first pass gives every level's searches probe_nodes and "
-       "no fallback; the level the selection picks, if left unproven, is then finished as the "
-       "full cascade would have, and the selection re-run when its clique grows (again for a "
-       "level that then wins). Off: every level gets them (the paper preset)."});
+       "Cascaded: spend the relaxation of a level its bounded proof cannot settle, the full "
+       "search (cascade_check_nodes) and the cold-start fallback only where they decide the "
+       "result. A first pass gives every level's searches probe_nodes; a level they leave "
+       "unproven keeps their clique (improved by swaps), with no relaxation and no fallback. The "
+       "level the selection picks, if unsettled, then takes the relaxation, and if still "
+       "selected the search and the fallback, as the full cascade gives a level; the selection "
+       "is re-run whenever its clique grows. Off: every level gets them (the paper preset)."});
     v(&CliqueParams::probe_nodes,
       {"probe_nodes",
        "settle_selected: node budget of each bounded search in the first pass (the proof of a "

@@ -194,7 +194,8 @@ class Pipeline {
   // (clique.settle_selected), which everything after the selection reads.
   std::vector<CliqueResult> first_cliques_, cliques_;
   std::vector<PoseEstimate> first_poses_, poses_;
-  double clique_pass_ms_ = 0.0, settle_ms_ = 0.0;
+  double settle_ms_ = 0.0;
+  std::chrono::steady_clock::duration clique_left_ = std::chrono::steady_clock::duration::max();
   std::optional<std::pair<GroundPlane, GroundPlane>> ground_;  // of the clouds, when needed
   std::optional<Verifier> verifier_;
   VerificationResult verification_;

@@ -271,11 +271,30 @@ void check_level(const PyramidGraph& g, int level, const CliqueParams& p, Clique
 // result is the same (unless the deadline passes meanwhile).
 CliqueResult solve_level(const PyramidGraph& g, int level, const std::vector<double>& u0,
                          const CliqueParams& p, const std::vector<int>& known_clique, double d0,
-                         Deadline deadline, const detail::BitGraph* bits, int threads = 1) {
+                         Deadline deadline, const detail::BitGraph* bits, int threads = 1,
+                         bool first_pass = false) {
   const auto t0 = Clock::now();
   CliqueResult r;
   UnprovenSearch searched;
   if (proven_without_relaxation(g, level, p, known_clique, d0, r, deadline, bits, searched)) {
+    r.time_ms = ms_since(t0);
+    return r;
+  }
+  if (first_pass && searched.ran && !searched.late) {
+    // settle_selected's first pass: a level its bounded proof could not settle keeps that
+    // search's clique, improved by swaps; its relaxation is left to settle_level (on the densest
+    // levels it is most of the level's time, and the level is seldom the one selected).
+    detail::Marks marks(g.vertices);
+    r.level = level;
+    r.vertices = detail::improve_by_swaps(detail::PyramidLevel{g, level},
+                                          std::move(searched.clique), marks, p.max_swaps);
+    std::sort(r.vertices.begin(), r.vertices.end());
+    r.clique_number_bound = std::max(searched.bound, static_cast<int>(r.vertices.size()));
+    r.start = known_clique.empty() ? CliqueStart::cold : CliqueStart::warm;
+    r.penalty = d0;
+    r.u = indicator(g.vertices, r.vertices);
+    r.budget = CliqueBudget::nodes;
+    r.relaxed = false;
     r.time_ms = ms_since(t0);
     return r;
   }
@@ -327,7 +346,7 @@ namespace {
 // A first pass's level that settle_level would search on: unproven, not stopped by time, and
 // either warm (the check and the fallback) or one whose bounded proof ran (a cold level's).
 void mark_unsettled(const PyramidGraph& g, const CliqueParams& p, CliqueResult& r) {
-  const bool warm = r.start != CliqueStart::cold;
+  const bool warm = p.prune && r.start != CliqueStart::cold;  // as solve_level's check
   if (r.proven || r.budget == CliqueBudget::time || !(warm || proves_first(g, r.level, p))) return;
   r.settled = false;
   r.budget = CliqueBudget::probe;
@@ -336,13 +355,44 @@ void mark_unsettled(const PyramidGraph& g, const CliqueParams& p, CliqueResult& 
 }  // namespace
 
 CliqueResult settle_level(const PyramidGraph& g, CliqueResult r, const CliqueParams& p,
-                          Deadline deadline) {
+                          Deadline deadline, int threads) {
   if (r.settled) return r;
   const auto t0 = Clock::now();
+  const bool warm = p.prune && r.start != CliqueStart::cold;  // as solve_level's
+  if (!r.relaxed) {
+    // The first step: the relaxation, warm from the level's clique (the previous level's grown)
+    // or from the cold start; the larger clique is kept. A level that then loses the selection
+    // is left here.
+    CliqueResult relaxed = warm ? relax_level(g, r.level, r.u, p, r.vertices, r.penalty, deadline)
+                                : cold_start(g, r.level, p, deadline);
+    r.relaxed = true;
+    r.gradient_steps = relaxed.gradient_steps;
+    r.penalty_updates = relaxed.penalty_updates;
+    if (relaxed.vertices.size() > r.vertices.size()) {
+      r.vertices = std::move(relaxed.vertices);
+      r.u = std::move(relaxed.u);
+      r.penalty = relaxed.penalty;
+    }
+    if (relaxed.proven && r.vertices.size() >= relaxed.vertices.size()) {
+      r.proven = true;  // the core the relaxation kept was a clique
+      r.clique_number_bound = static_cast<int>(r.vertices.size());
+    }
+    if (relaxed.budget == CliqueBudget::time) r.budget = CliqueBudget::time;
+    r.settled = r.proven || r.budget == CliqueBudget::time;
+    if (r.proven) r.budget = CliqueBudget::none;
+    r.time_ms += ms_since(t0);
+    return r;
+  }
   r.budget = CliqueBudget::none;
   // A warm level gets its check and fallback; a cold one the search its proof would have made.
-  const bool warm = r.start != CliqueStart::cold;
-  check_level(g, r.level, p, r, deadline, UnprovenSearch{}, warm && p.cascade_fallback, nullptr);
+  // With two threads the fallback starts beside the search; it is used only where it would run.
+  const bool fallback = warm && p.cascade_fallback;
+  std::future<CliqueResult> early;
+  if (threads > 1 && fallback)
+    early = std::async(std::launch::async, [&g, &p, deadline, level = r.level] {
+      return cold_start(g, level, p, deadline);
+    });
+  check_level(g, r.level, p, r, deadline, UnprovenSearch{}, fallback, &early);
   if (r.proven) r.budget = CliqueBudget::none;
   r.settled = true;
   r.time_ms += ms_since(t0);
@@ -405,11 +455,12 @@ std::vector<CliqueResult> solve_pyramid(const PyramidGraph& g, const CliqueParam
         // Alg. 1: level l starts where level l-1 ended. Its edges are a subset of level l's, so its
         // clique is also a clique here: a lower bound for pruning.
         if (l == 0)
-          out.push_back(solve_level(g, l, start, pass, {}, 0.0, deadline, bits_of(l)));
+          out.push_back(
+              solve_level(g, l, start, pass, {}, 0.0, deadline, bits_of(l), 1, first_pass));
         else
           out.push_back(solve_level(g, l, out.back().u, pass, out.back().vertices,
                                     p.warm_start_penalty * out.back().penalty, deadline, bits_of(l),
-                                    threads));
+                                    threads, first_pass));
         if (first_pass) mark_unsettled(g, p, out.back());
         break;
     }

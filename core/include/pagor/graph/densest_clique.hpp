@@ -72,6 +72,9 @@ struct CliqueResult {
   /// false: a first pass (clique.settle_selected) left the level unproven within probe_nodes and
   /// without its cold-start fallback; settle_level gives it the rest when it is selected
   bool settled = true;
+  /// false: the first pass kept its bounded search's clique without running the relaxation
+  /// (settle_level's first step runs it)
+  bool relaxed = true;
 };
 
 /// CLIPPER relaxation on level `level` from `u0` (any non-negative vector of the graph's size; it
@@ -112,30 +115,34 @@ CliqueResult exact_max_clique(const PyramidGraph& graph, int level, const Clique
 std::vector<CliqueResult> solve_pyramid(const PyramidGraph& graph, const CliqueParams& params,
                                         Deadline deadline = kNoDeadline, int threads = 1);
 
-/// Finishes a level solve_pyramid's first pass left unsettled, as the full cascade would have:
-/// a bounded search for a larger clique from its clique (`params.cascade_check_nodes`), then,
-/// unless that proves it maximum, the cold-start fallback of a warm level (cascade_fallback).
-/// The result is settled, with the time added; a settled level is returned as it is.
+/// One step towards what the full cascade gives a level solve_pyramid's first pass left
+/// unsettled: a level not yet relaxed gets its relaxation (warm from its clique, or the cold
+/// start for the first level) and stays unsettled unless that proves it; a relaxed one gets a
+/// bounded search for a larger clique from its clique (`params.cascade_check_nodes`), then,
+/// unless that proves it maximum, the cold-start fallback of a warm level (cascade_fallback),
+/// and is settled. The clique never shrinks; the step's time is added. A settled level is
+/// returned as it is. With `threads` > 1 the fallback runs beside the search (the same result).
 CliqueResult settle_level(const PyramidGraph& graph, CliqueResult level, const CliqueParams& params,
-                          Deadline deadline = kNoDeadline);
+                          Deadline deadline = kNoDeadline, int threads = 1);
 
 /// The selection with settle_selected: `select()` selects among the levels' candidates and
-/// returns the selected level (-1: none); while that level is unsettled it is settled, and when
-/// its clique changed, `refit(level)` fits its candidate again and the selection is re-run. Each
-/// level is settled at most once. Returns the time spent settling [ms].
+/// returns the selected level (-1: none); while that level is unsettled it takes a settle_level
+/// step, and when its clique changed, `refit(level)` fits its candidate again and the selection
+/// is re-run (a level that only won by its first pass's clique is then often beaten before its
+/// costly search). Each level takes two steps at most. Returns the time spent settling [ms].
 template <class Select, class Refit>
 double settle_selection(const PyramidGraph& graph, std::vector<CliqueResult>& cliques,
                         const CliqueParams& params, Deadline deadline, Select&& select,
-                        Refit&& refit) {
+                        Refit&& refit, int threads = 1) {
   double ms = 0.0;
   for (int level = select(); level >= 0 && !cliques[static_cast<std::size_t>(level)].settled;
        level = select()) {
     CliqueResult& c = cliques[static_cast<std::size_t>(level)];
     const std::vector<int> before = c.vertices;
     const double t0 = c.time_ms;
-    c = settle_level(graph, std::move(c), params, deadline);
+    c = settle_level(graph, std::move(c), params, deadline, threads);
     ms += c.time_ms - t0;
-    if (c.vertices == before) break;  // the same clique: the same candidate and selection
+    if (c.vertices == before) continue;  // the same clique: the same candidate and selection
     refit(level);
   }
   return ms;
