@@ -76,7 +76,13 @@ SolverRun run_solver(const Problem& pr, const Config& config, int reps,
     const auto l = static_cast<std::size_t>(level);
     r.poses[l] = poses_of(pr, {r.cliques[l]}, config.gnc)[0];
   };
-  r.clique += settle_selection(g, r.cliques, config.clique, kNoDeadline, select, refit);
+  const auto same_answer = [&](int level) {
+    std::vector<char> settled;
+    for (const CliqueResult& c : r.cliques) settled.push_back(c.settled);
+    return same_answer_as(r.poses, level, settled, config.acceptance.distinct()) >= 0;
+  };
+  r.clique +=
+      settle_selection(g, r.cliques, config.clique, kNoDeadline, select, refit, same_answer);
   if (r.selected >= 0)
     r.error = pose_error(r.poses[static_cast<std::size_t>(r.selected)].T_target_source, pr.T_gt,
                          config.evaluation);

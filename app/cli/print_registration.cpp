@@ -77,7 +77,8 @@ void print_clique_search(const Registration& r) {
     const char* budget = s.clique_budget == CliqueBudget::nodes ? "node" : "time";
     if (s.clique_budget == CliqueBudget::probe)  // not selected, so not searched further
       std::printf(
-          "  level %zu: not selected, searched with clique.probe_nodes only: %zu members%s\n", l,
+          "  level %zu: not settled (first pass, clique.probe_nodes; no fallback): %zu members%s\n",
+          l,
           s.clique.size(),
           s.clique_number_bound > static_cast<int>(s.clique.size())
               ? (", at most " + std::to_string(s.clique_number_bound)).c_str()

@@ -340,9 +340,16 @@ void Pipeline::select_and_settle() {
     const auto l = static_cast<std::size_t>(level);
     poses_[l] = pose_of(cliques_[l], params);
   };
+  // The same answer as a settled level's candidate (within the acceptance's distinct_*):
+  // settling the selected level then cannot change which answer the pair gets.
+  const auto same_answer = [&](int level) {
+    std::vector<char> settled;
+    for (const CliqueResult& c : cliques_) settled.push_back(c.settled);
+    return same_answer_as(poses_, level, settled, config_.acceptance.distinct()) >= 0;
+  };
   const Deadline deadline =
       clique_left_ == Clock::duration::max() ? kNoDeadline : t0 + clique_left_;
-  settle_selection(graph_.graph(), cliques_, config_.clique, deadline, select, refit,
+  settle_selection(graph_.graph(), cliques_, config_.clique, deadline, select, refit, same_answer,
                    threads_now());
   const auto t1 = Clock::now();
   settle_ms_ = std::chrono::duration<double, std::milli>(t1 - t0 - selecting).count();

@@ -105,7 +105,8 @@ TEST_CASE("warm start gives the same cliques as cold start with fewer iterations
     const PyramidGraph g = build_pyramid_graph(c, gp);
     CliqueParams cp;
     cp.prune = prune;
-    cp.prove_first = false;  // the relaxation itself
+    cp.prove_first = false;      // the relaxation itself
+    cp.settle_selected = false;  // every level's full cascade
     cp.solver = CliqueSolver::cascaded;
     const auto warm = solve_pyramid(g, cp);
     cp.solver = CliqueSolver::independent;
@@ -204,6 +205,7 @@ TEST_CASE("the cascade never returns a smaller clique than the independent solve
     const auto c = test::association(400, 40, seed);
     const PyramidGraph g = build_pyramid_graph(c, gp);
     CliqueParams cp;
+    cp.settle_selected = false;  // every level's full cascade
     const auto warm = solve_pyramid(g, cp);
     cp.solver = CliqueSolver::independent;
     const auto cold = solve_pyramid(g, cp);
@@ -524,17 +526,29 @@ TEST_CASE("settle_selection settles what the selection picks, and selects again"
         ++selections;
         return 1;
       },
-      [&](int level) { refits.push_back(level); });
+      [&](int level) { refits.push_back(level); }, [](int) { return false; });
   CHECK(cliques[1].settled);
   CHECK(ms >= 0.0);
   CHECK(is_clique(g, 1, cliques[1].vertices));
-  CHECK(selections == steps + 1);  // once first, then after every step
+  CHECK(selections == changes + 1);  // once first, then after every step that grew the clique
+  CHECK(steps >= 1);
   CHECK(refits == std::vector<int>(static_cast<std::size_t>(changes), 1));
   CHECK(cliques[0].settled);  // never selected, never touched
-  // Nothing selected: nothing settled.
+  // Nothing selected, or the selected level's answer already given by a settled one: nothing
+  // settled.
   std::vector<CliqueResult> untouched = solve_pyramid(g, cp);
+  const auto never = [](int) { return false; };
   CHECK(settle_selection(
-            g, untouched, cp, kNoDeadline, [] { return -1; }, [](int) {}) == 0.0);
+            g, untouched, cp, kNoDeadline, [] { return -1; }, [](int) {}, never) == 0.0);
+  CHECK_FALSE(untouched[1].settled);
+  int asked = 0;
+  CHECK(settle_selection(
+            g, untouched, cp, kNoDeadline, [] { return 1; }, [](int) {},
+            [&](int level) {
+              ++asked;
+              return level == 1;
+            }) == 0.0);
+  CHECK(asked == 1);
   CHECK_FALSE(untouched[1].settled);
 }
 

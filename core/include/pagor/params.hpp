@@ -436,9 +436,10 @@ struct CliqueParams {
        "search (cascade_check_nodes) and the cold-start fallback only where they decide the "
        "result. A first pass gives every level's searches probe_nodes; a level they leave "
        "unproven keeps their clique (improved by swaps), with no relaxation and no fallback. The "
-       "level the selection picks, if unsettled, then takes the relaxation, and if still "
-       "selected the search and the fallback, as the full cascade gives a level; the selection "
-       "is re-run whenever its clique grows. Off: every level gets them (the paper preset)."});
+       "level the selection picks, if unsettled and its pose not the same answer as a settled "
+       "level's (acceptance.distinct_*), then takes the relaxation, and if still selected the "
+       "search and the fallback, as the full cascade gives a level; the selection is re-run "
+       "whenever its clique grows. Off: every level gets them (the paper preset)."});
     v(&CliqueParams::probe_nodes,
       {"probe_nodes",
        "settle_selected: node budget of each bounded search in the first pass (the proof of a "

@@ -293,8 +293,10 @@ CliqueResult solve_level(const PyramidGraph& g, int level, const std::vector<dou
     r.start = known_clique.empty() ? CliqueStart::cold : CliqueStart::warm;
     r.penalty = d0;
     r.u = indicator(g.vertices, r.vertices);
-    r.budget = CliqueBudget::nodes;
-    r.relaxed = false;
+    // The swaps may reach the search's bound: then the clique is proven maximum.
+    r.proven = static_cast<int>(r.vertices.size()) >= searched.bound;
+    r.budget = r.proven ? CliqueBudget::none : CliqueBudget::nodes;
+    r.relaxed = r.proven;  // a maximum clique needs no relaxation
     r.time_ms = ms_since(t0);
     return r;
   }
@@ -361,10 +363,11 @@ CliqueResult settle_level(const PyramidGraph& g, CliqueResult r, const CliquePar
   const bool warm = p.prune && r.start != CliqueStart::cold;  // as solve_level's
   if (!r.relaxed) {
     // The first step: the relaxation, warm from the level's clique (the previous level's grown)
-    // or from the cold start; the larger clique is kept. A level that then loses the selection
-    // is left here.
-    CliqueResult relaxed = warm ? relax_level(g, r.level, r.u, p, r.vertices, r.penalty, deadline)
-                                : cold_start(g, r.level, p, deadline);
+    // or, for a cold level, from the cold start; the larger clique is kept. A level that then
+    // loses the selection is left here.
+    CliqueResult relaxed = r.start != CliqueStart::cold
+                               ? relax_level(g, r.level, r.u, p, r.vertices, r.penalty, deadline)
+                               : cold_start(g, r.level, p, deadline);
     r.relaxed = true;
     r.gradient_steps = relaxed.gradient_steps;
     r.penalty_updates = relaxed.penalty_updates;

@@ -41,4 +41,15 @@ VerificationResult select_without_clouds(const std::vector<PoseEstimate>& candid
   return r;
 }
 
+int same_answer_as(const std::vector<PoseEstimate>& candidates, int level,
+                   const std::vector<char>& among, const EvaluationParams& distinct) {
+  const PoseEstimate& e = candidates[static_cast<std::size_t>(level)];
+  if (!e.valid) return -1;
+  for (std::size_t k = 0; k < candidates.size(); ++k)
+    if (static_cast<int>(k) != level && k < among.size() && among[k] && candidates[k].valid &&
+        pose_error(e.T_target_source, candidates[k].T_target_source, distinct).success)
+      return static_cast<int>(k);
+  return -1;
+}
+
 }  // namespace pagor

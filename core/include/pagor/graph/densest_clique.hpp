@@ -37,8 +37,9 @@ enum class CliqueBudget {
   none,   ///< no search was cut short
   nodes,  ///< a branch-and-bound node budget ran out
   time,   ///< the wall-time budget ran out
-  /// not selected: the level's search had the first pass's budget (clique.probe_nodes) and was
-  /// not settled (clique.settle_selected)
+  /// not settled (clique.settle_selected): the level's search had the first pass's budget
+  /// (clique.probe_nodes); it was not selected, or its pose was the same answer as a settled
+  /// level's
   probe,
 };
 inline constexpr EnumEntry<CliqueBudget> kCliqueBudgets[] = {
@@ -46,7 +47,7 @@ inline constexpr EnumEntry<CliqueBudget> kCliqueBudgets[] = {
     {CliqueBudget::nodes, "nodes", "a node budget ran out"},
     {CliqueBudget::time, "time", "the time budget ran out"},
     {CliqueBudget::probe, "probe",
-     "not selected: only the first pass's search (clique.probe_nodes) ran"},
+     "not settled: the first pass's search (clique.probe_nodes), no fallback"},
 };
 inline const auto& enum_entries(CliqueBudget) {
   return kCliqueBudgets;
@@ -106,8 +107,9 @@ CliqueResult exact_max_clique(const PyramidGraph& graph, int level, const Clique
 
 /// One clique per level, in level order, with the solver `params.solver` selects. Cascaded with
 /// `params.settle_selected`, this is a first pass: each level's bounded searches get
-/// `params.probe_nodes`, no cold-start fallback runs, and a level left unproven is not `settled`
-/// (budget `probe`): settle_level finishes the one the selection picks. After
+/// `params.probe_nodes`, a level whose bounded proof fails keeps that search's clique without
+/// its relaxation (`relaxed` false), no cold-start fallback runs, and a level left unproven is
+/// not `settled` (budget `probe`): settle_selection finishes the one the selection picks. After
 /// `deadline` every search stops with the best clique it has (a level not yet started keeps its
 /// lower bound: the previous level's clique grown, or greedy cliques), and its `budget` reads
 /// `time`. With `threads` > 1 (cascaded), a level whose bounded proof fails solves its cold-start
@@ -117,7 +119,7 @@ std::vector<CliqueResult> solve_pyramid(const PyramidGraph& graph, const CliqueP
 
 /// One step towards what the full cascade gives a level solve_pyramid's first pass left
 /// unsettled: a level not yet relaxed gets its relaxation (warm from its clique, or the cold
-/// start for the first level) and stays unsettled unless that proves it; a relaxed one gets a
+/// start for a cold level) and stays unsettled unless that proves it; a relaxed one gets a
 /// bounded search for a larger clique from its clique (`params.cascade_check_nodes`), then,
 /// unless that proves it maximum, the cold-start fallback of a warm level (cascade_fallback),
 /// and is settled. The clique never shrinks; the step's time is added. A settled level is
@@ -126,17 +128,19 @@ CliqueResult settle_level(const PyramidGraph& graph, CliqueResult level, const C
                           Deadline deadline = kNoDeadline, int threads = 1);
 
 /// The selection with settle_selected: `select()` selects among the levels' candidates and
-/// returns the selected level (-1: none); while that level is unsettled it takes a settle_level
-/// step, and when its clique changed, `refit(level)` fits its candidate again and the selection
-/// is re-run (a level that only won by its first pass's clique is then often beaten before its
-/// costly search). Each level takes two steps at most. Returns the time spent settling [ms].
-template <class Select, class Refit>
+/// returns the selected level (-1: none). While that level is unsettled and its candidate is not
+/// the same answer as a settled level's (`same_answer(level)`: then settling it decides nothing),
+/// it takes a settle_level step, and when its clique changed, `refit(level)` fits its candidate
+/// again and the selection is re-run (a level that only won by its first pass's clique is then
+/// often beaten before its costly search). Each level takes two steps at most. Returns the time
+/// spent settling [ms].
+template <class Select, class Refit, class SameAnswer>
 double settle_selection(const PyramidGraph& graph, std::vector<CliqueResult>& cliques,
                         const CliqueParams& params, Deadline deadline, Select&& select,
-                        Refit&& refit, int threads = 1) {
+                        Refit&& refit, SameAnswer&& same_answer, int threads = 1) {
   double ms = 0.0;
-  for (int level = select(); level >= 0 && !cliques[static_cast<std::size_t>(level)].settled;
-       level = select()) {
+  int level = select();
+  while (level >= 0 && !cliques[static_cast<std::size_t>(level)].settled && !same_answer(level)) {
     CliqueResult& c = cliques[static_cast<std::size_t>(level)];
     const std::vector<int> before = c.vertices;
     const double t0 = c.time_ms;
@@ -144,6 +148,7 @@ double settle_selection(const PyramidGraph& graph, std::vector<CliqueResult>& cl
     ms += c.time_ms - t0;
     if (c.vertices == before) continue;  // the same clique: the same candidate and selection
     refit(level);
+    level = select();
   }
   return ms;
 }

@@ -12,6 +12,7 @@
 
 #include "pagor/pose/gnc.hpp"
 #include "pagor/types.hpp"
+#include "pagor/verify/evaluation.hpp"
 #include "pagor/verify/verification.hpp"
 
 namespace pagor {
@@ -24,5 +25,12 @@ namespace pagor {
 VerificationResult select_without_clouds(const std::vector<PoseEstimate>& candidates,
                                          const std::vector<Correspondence>& correspondences,
                                          double bound);
+
+/// The first valid candidate other than `level` among those `among` marks (one entry per
+/// candidate, non-zero: eligible) whose pose is the same answer as candidate `level`'s: within
+/// `distinct`'s translation and rotation (the acceptance's distinct_*); -1 when there is none or
+/// candidate `level` is invalid.
+int same_answer_as(const std::vector<PoseEstimate>& candidates, int level,
+                   const std::vector<char>& among, const EvaluationParams& distinct);
 
 }  // namespace pagor
