@@ -310,6 +310,16 @@ TEST_CASE("gedi-dev: the selected level is settled, the others keep the first pa
     p.run();
   }
   CHECK(p.runs(Stage::clique) == 1);  // the selection alone ran again
+  // What counts as the same answer decides the settling: changing it runs the selection again.
+  const int selections = p.runs(Stage::verification);
+  Config wider = config;
+  wider.acceptance.distinct_translation *= 2;
+  p.set_config(wider);
+  CHECK(p.stale(Stage::verification));
+  p.run();
+  CHECK(p.runs(Stage::verification) == selections + 1);
+  p.set_config(config);
+  p.run();
   REQUIRE(p.cliques().size() == first.size());
   for (std::size_t l = 0; l < first.size(); ++l) {
     CHECK(p.cliques()[l].vertices == first[l].vertices);

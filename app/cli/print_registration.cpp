@@ -75,9 +75,9 @@ void print_clique_search(const Registration& r) {
   for (std::size_t l = 0; l < r.levels.size(); ++l) {
     const LevelSummary& s = r.levels[l];
     const char* budget = s.clique_budget == CliqueBudget::nodes ? "node" : "time";
-    if (s.clique_budget == CliqueBudget::probe)  // not selected, so not searched further
+    if (s.clique_budget == CliqueBudget::probe)  // not settled: no full search, no fallback
       std::printf(
-          "  level %zu: not settled (first pass, clique.probe_nodes; no fallback): %zu members%s\n",
+          "  level %zu: not settled (search of clique.probe_nodes, no fallback): %zu members%s\n",
           l,
           s.clique.size(),
           s.clique_number_bound > static_cast<int>(s.clique.size())

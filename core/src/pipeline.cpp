@@ -135,6 +135,10 @@ void Pipeline::set_config(const Config& config) {
   if (config.correspondences.fuse_matches != config_.correspondences.fuse_matches &&
       !matches_.empty())
     mark_stale(Stage::landmarks);  // whether they take part
+  // What counts as the same answer decides whether the selected level is settled.
+  if (config.acceptance.distinct_translation != config_.acceptance.distinct_translation ||
+      config.acceptance.distinct_rotation != config_.acceptance.distinct_rotation)
+    mark_stale(Stage::verification);
   config_ = config;
 }
 

@@ -92,3 +92,29 @@ TEST_CASE("an SE(2) candidate is judged in the plane") {
   CHECK(r.support[1] >= 30);
   CHECK(r.selected == 1);
 }
+
+// same_answer_as: the first other eligible, valid candidate within the distinct translation and
+// rotation; never the candidate itself, an ineligible or invalid one, or any for an invalid one.
+TEST_CASE("the same answer is another eligible candidate's pose within the distinct tolerance") {
+  const Scene s = scene();
+  Transform near = s.T, moved = s.T, turned = s.T;
+  near(0, 3) += 1.0;   // 1 m: the same answer at 2 m
+  moved(0, 3) += 3.0;  // 3 m: distinct
+  turned.block<3, 3>(0, 0) =
+      Eigen::AngleAxisd(0.4 + 0.2, Eigen::Vector3d::UnitZ()).toRotationMatrix();  // 11.5 deg
+  const EvaluationParams distinct{2.0, 5.0};
+  PoseEstimate invalid;
+  invalid.T_target_source = s.T;  // the same pose, but no valid candidate
+  const std::vector<PoseEstimate> c = {candidate(moved, 4), candidate(turned, 4), invalid,
+                                       candidate(near, 4), candidate(s.T, 9)};
+  const std::vector<char> all(c.size(), 1);
+  CHECK(same_answer_as(c, 4, all, distinct) == 3);  // not itself, not the invalid one
+  CHECK(same_answer_as(c, 3, all, distinct) == 4);
+  CHECK(same_answer_as(c, 0, all, distinct) == -1);  // 3 m from every other
+  CHECK(same_answer_as(c, 1, all, distinct) == -1);  // turned away from every other
+  CHECK(same_answer_as(c, 2, all, distinct) == -1);  // an invalid candidate has no answer
+  std::vector<char> some = all;
+  some[3] = 0;  // not eligible (e.g. not settled)
+  CHECK(same_answer_as(c, 4, some, distinct) == -1);
+  CHECK(same_answer_as(c, 4, all, EvaluationParams{0.5, 5.0}) == -1);  // tighter: distinct
+}

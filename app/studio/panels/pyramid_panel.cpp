@@ -58,7 +58,7 @@ std::string clique_search_text(const LevelView& l) {
   else
     out = "not proven (relaxation only)";
   if (l.clique_budget == CliqueBudget::probe)
-    out += "; not settled: first pass only (clique.probe_nodes, no fallback)";
+    out += "; not settled: search of clique.probe_nodes, no fallback";
   else if (l.clique_budget != CliqueBudget::none)
     out += std::string("; ") + to_string(l.clique_budget) + " budget ran out";
   return out + "; start " + to_string(l.clique_start);

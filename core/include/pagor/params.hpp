@@ -437,9 +437,10 @@ struct CliqueParams {
        "result. A first pass gives every level's searches probe_nodes; a level they leave "
        "unproven keeps their clique (improved by swaps), with no relaxation and no fallback. The "
        "level the selection picks, if unsettled and its pose not the same answer as a settled "
-       "level's (acceptance.distinct_*), then takes the relaxation, and if still selected the "
-       "search and the fallback, as the full cascade gives a level; the selection is re-run "
-       "whenever its clique grows. Off: every level gets them (the paper preset)."});
+       "level's (acceptance.distinct_*: a heuristic, settling would seldom change that answer), "
+       "then takes the relaxation, and if still selected the search and the fallback, as the "
+       "full cascade gives a level; the selection is re-run whenever its clique grows. Off: every "
+       "level gets them (the paper preset)."});
     v(&CliqueParams::probe_nodes,
       {"probe_nodes",
        "settle_selected: node budget of each bounded search in the first pass (the proof of a "
@@ -675,7 +676,8 @@ struct AcceptanceParams {
     v(&AcceptanceParams::distinct_translation,
       {"distinct_translation",
        "Two poses farther apart than this are distinct answers: the margin's runner-up, the "
-       "sharpness test's shift and the ambiguity's alternatives.",
+       "sharpness test's shift, the ambiguity's alternatives, and (clique.settle_selected) "
+       "whether a settled level already gives the selected level's answer.",
        "m", Range::above(0, 1e6)});
     v(&AcceptanceParams::distinct_rotation,
       {"distinct_rotation", "Two poses turned further apart than this are distinct answers.", "deg",

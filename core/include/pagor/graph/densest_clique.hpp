@@ -38,8 +38,8 @@ enum class CliqueBudget {
   nodes,  ///< a branch-and-bound node budget ran out
   time,   ///< the wall-time budget ran out
   /// not settled (clique.settle_selected): the level's search had the first pass's budget
-  /// (clique.probe_nodes); it was not selected, or its pose was the same answer as a settled
-  /// level's
+  /// (clique.probe_nodes) and it got no full search or fallback; it was not selected (or lost
+  /// after its relaxation), or its pose was the same answer as a settled level's
   probe,
 };
 inline constexpr EnumEntry<CliqueBudget> kCliqueBudgets[] = {
@@ -47,7 +47,7 @@ inline constexpr EnumEntry<CliqueBudget> kCliqueBudgets[] = {
     {CliqueBudget::nodes, "nodes", "a node budget ran out"},
     {CliqueBudget::time, "time", "the time budget ran out"},
     {CliqueBudget::probe, "probe",
-     "not settled: the first pass's search (clique.probe_nodes), no fallback"},
+     "not settled: the search had clique.probe_nodes; no full search, no fallback"},
 };
 inline const auto& enum_entries(CliqueBudget) {
   return kCliqueBudgets;
@@ -71,7 +71,7 @@ struct CliqueResult {
   CliqueStart start = CliqueStart::cold;     ///< how the level's search started
   double time_ms = 0.0;                      ///< wall time [ms], settling included
   /// false: a first pass (clique.settle_selected) left the level unproven within probe_nodes and
-  /// without its cold-start fallback; settle_level gives it the rest when it is selected
+  /// without its cold-start fallback; settle_level gives it the rest when the selection needs it
   bool settled = true;
   /// false: the first pass kept its bounded search's clique without running the relaxation
   /// (settle_level's first step runs it)
@@ -129,7 +129,8 @@ CliqueResult settle_level(const PyramidGraph& graph, CliqueResult level, const C
 
 /// The selection with settle_selected: `select()` selects among the levels' candidates and
 /// returns the selected level (-1: none). While that level is unsettled and its candidate is not
-/// the same answer as a settled level's (`same_answer(level)`: then settling it decides nothing),
+/// the same answer as a settled level's (`same_answer(level)`: a heuristic, as settling it would
+/// seldom change that answer),
 /// it takes a settle_level step, and when its clique changed, `refit(level)` fits its candidate
 /// again and the selection is re-run (a level that only won by its first pass's clique is then
 /// often beaten before its costly search). Each level takes two steps at most. Returns the time
