@@ -41,15 +41,7 @@ struct SolverRun {
 std::vector<PoseEstimate> poses_of(const Problem& pr, const std::vector<CliqueResult>& cliques,
                                    const GncParams& gnc) {
   std::vector<PoseEstimate> out;
-  for (const CliqueResult& c : cliques) {
-    std::vector<Eigen::Vector3d> p, q;
-    for (int v : c.vertices) {
-      p.push_back(pr.items[static_cast<std::size_t>(v)].p);
-      q.push_back(pr.items[static_cast<std::size_t>(v)].q);
-    }
-    out.push_back(estimate_pose_gnc(p, q, gnc));
-    for (int& i : out.back().inliers) i = c.vertices[static_cast<std::size_t>(i)];
-  }
+  for (const CliqueResult& c : cliques) out.push_back(estimate_pose_gnc(pr.items, c.vertices, gnc));
   return out;
 }
 
@@ -74,7 +66,7 @@ SolverRun run_solver(const Problem& pr, const Config& config, int reps,
   };
   const auto refit = [&](int level) {
     const auto l = static_cast<std::size_t>(level);
-    r.poses[l] = poses_of(pr, {r.cliques[l]}, config.gnc)[0];
+    r.poses[l] = estimate_pose_gnc(pr.items, r.cliques[l].vertices, config.gnc);
   };
   const auto same_answer = [&](int level) {
     std::vector<char> settled;
@@ -259,7 +251,7 @@ void bench_dense(const Options& o) {
       "\n## 10. Dense problems, default configuration, back end only (graph + clique + GNC per "
       "level, selection without clouds), 1 thread; sizes as clique/true members, ? = not proven "
       "maximum, c = the warm start lost to the cold one, n/t = a node/time budget stopped the "
-      "search, p = not selected, searched with clique.probe_nodes only\n");
+      "search, p = not settled (a search of clique.probe_nodes, no fallback)\n");
   const std::vector<Problem> gedi = gedi_problems(o.gedi_root);
   if (gedi.empty())
     std::printf("(no gedi-dev problems under %s)\n", o.gedi_root.c_str());

@@ -300,23 +300,13 @@ GncParams Pipeline::gnc_params() const {
   return p;
 }
 
-PoseEstimate Pipeline::pose_of(const CliqueResult& c, const GncParams& params) const {
-  std::vector<Eigen::Vector3d> p, q;
-  for (int v : c.vertices) {
-    p.push_back(correspondences_.items[static_cast<std::size_t>(v)].p);
-    q.push_back(correspondences_.items[static_cast<std::size_t>(v)].q);
-  }
-  PoseEstimate e = estimate_pose_gnc(p, q, params);
-  for (int& i : e.inliers) i = c.vertices[static_cast<std::size_t>(i)];  // -> correspondence ids
-  return e;
-}
-
 void Pipeline::run_gnc() {
   if (config_.gnc.model == PoseModel::automatic && has_clouds_ && !ground_)
     ground_.emplace(ground_plane(source_), ground_plane(target_));
   const GncParams params = gnc_params();
   first_poses_.clear();
-  for (const CliqueResult& c : first_cliques_) first_poses_.push_back(pose_of(c, params));
+  for (const CliqueResult& c : first_cliques_)
+    first_poses_.push_back(estimate_pose_gnc(correspondences_.items, c.vertices, params));
   poses_ = first_poses_;  // until the selection settles a level
 }
 
@@ -342,7 +332,7 @@ void Pipeline::select_and_settle() {
   const GncParams params = gnc_params();
   const auto refit = [&](int level) {
     const auto l = static_cast<std::size_t>(level);
-    poses_[l] = pose_of(cliques_[l], params);
+    poses_[l] = estimate_pose_gnc(correspondences_.items, cliques_[l].vertices, params);
   };
   // The same answer as a settled level's candidate (within the acceptance's distinct_*):
   // settling the selected level then cannot change which answer the pair gets.

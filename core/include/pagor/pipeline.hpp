@@ -167,7 +167,6 @@ class Pipeline {
   void run_refinement();
   void run_correspondences();
   void run_gnc();
-  PoseEstimate pose_of(const CliqueResult& clique, const GncParams& params) const;
   void select_and_settle();
   /// Whether the landmarks take part: clouds, and no matches or fused ones.
   bool uses_landmarks() const;

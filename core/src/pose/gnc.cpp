@@ -85,6 +85,20 @@ PoseEstimate gnc_one_model(const std::vector<Eigen::Vector3d>& src,
 
 }  // namespace
 
+PoseEstimate estimate_pose_gnc(const std::vector<Correspondence>& correspondences,
+                               const std::vector<int>& members, const GncParams& params) {
+  std::vector<Eigen::Vector3d> p, q;
+  p.reserve(members.size());
+  q.reserve(members.size());
+  for (int v : members) {
+    p.push_back(correspondences[static_cast<std::size_t>(v)].p);
+    q.push_back(correspondences[static_cast<std::size_t>(v)].q);
+  }
+  PoseEstimate e = estimate_pose_gnc(p, q, params);
+  for (int& i : e.inliers) i = members[static_cast<std::size_t>(i)];  // -> correspondence ids
+  return e;
+}
+
 PoseEstimate estimate_pose_gnc(const std::vector<Eigen::Vector3d>& src,
                                const std::vector<Eigen::Vector3d>& dst, const GncParams& p) {
   if (p.model != PoseModel::automatic) return gnc_one_model(src, dst, p);

@@ -48,6 +48,11 @@ PoseEstimate estimate_pose_gnc(const std::vector<Eigen::Vector3d>& src,
                                const std::vector<Eigen::Vector3d>& dst,
                                const GncParams& params = {});
 
+/// estimate_pose_gnc on the correspondences `members` indexes (a level's clique): the estimate's
+/// inliers are indices into `correspondences`.
+PoseEstimate estimate_pose_gnc(const std::vector<Correspondence>& correspondences,
+                               const std::vector<int>& members, const GncParams& params = {});
+
 /// Rotation angle of a rotation matrix [deg].
 double rotation_angle_deg(const Eigen::Matrix3d& R);
 
