@@ -153,8 +153,11 @@ void print_verdict(const Registration& r) {
   std::printf("  tests: %s (aligned: within %.2f m)\n", acceptance_tests_text(r).c_str(),
               r.config.acceptance.inlier_distance);
   if (!a.alternative.description.empty())
-    std::printf("  best distinct alternative: %s, %.2f times as well supported\n",
-                a.alternative.description.c_str(), a.alternative.ratio);
+    std::printf(
+        "  best distinct alternative: %s, %.2f times as well supported (%zu points only it "
+        "aligns, %zu only the selected pose)\n",
+        a.alternative.description.c_str(), a.alternative.ratio, a.alternative.only_alternative,
+        a.alternative.only_selected);
 }
 
 void print_ground_truth(const Registration& r) {

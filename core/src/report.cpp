@@ -133,6 +133,8 @@ json acceptance_json(const Registration& r) {
   if (!a.alternative.description.empty())
     alternative = {{"description", a.alternative.description},
                    {"ratio", finite_or_null(a.alternative.ratio)},
+                   {"only_alternative", a.alternative.only_alternative},
+                   {"only_selected", a.alternative.only_selected},
                    {"T_target_source", matrix_json(a.alternative.T_target_source)}};
   return {{"accepted", a.accepted},   {"verified", a.verified},
           {"overlap", a.overlap},     {"inliers", a.inliers},

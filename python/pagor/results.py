@@ -257,7 +257,8 @@ class Result:
     @property
     def alternative(self) -> Optional[Dict[str, Any]]:
         """The best distinct pose that explains the clouds about as well as the selected one
-        (description, ratio, T_target_source as a 4 x 4 array), or None."""
+        (description, ratio, only_alternative and only_selected: the disagreeing structure
+        points behind the ratio, T_target_source as a 4 x 4 array), or None."""
         alt = self._data["acceptance"].get("alternative")
         if alt is None:
             return None

@@ -127,8 +127,11 @@ std::string acceptance_text(const Snapshot& s) {
   t += ": " + tests + ui::format(" (aligned: within %.2f m)", p.inlier_distance);
   if (!a.accepted) t += "; " + a.reason;
   if (!a.alternative.description.empty())
-    t += ui::format("; best distinct alternative: %s (%.2f times as well supported)",
-                    a.alternative.description.c_str(), a.alternative.ratio);
+    t += ui::format(
+        "; best distinct alternative: %s (%.2f times as well supported: %zu points only it "
+        "aligns, %zu only the selected pose)",
+        a.alternative.description.c_str(), a.alternative.ratio, a.alternative.only_alternative,
+        a.alternative.only_selected);
   return t;
 }
 

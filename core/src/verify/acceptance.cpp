@@ -190,11 +190,13 @@ void judge_ambiguity(Acceptance& a, const Verifier& verifier,
   t.applies = true;
   t.passed = a.ambiguity <= params.max_ambiguity;
   if (!t.passed) {
-    char buf[128];
+    char buf[192];
     std::snprintf(buf, sizeof(buf),
-                  " fits as well: it alone aligns %.2f times the points the selected pose alone "
-                  "aligns",
-                  a.ambiguity);
+                  " fits %s: it alone aligns %.2f times the points the selected pose alone "
+                  "aligns (%zu points against %zu)",
+                  // better: selected instead, this pose would not be rivalled by the selection
+                  a.ambiguity * params.max_ambiguity > 1.0 ? "better" : "as well", a.ambiguity,
+                  a.alternative.only_alternative, a.alternative.only_selected);
     a.reason = "ambiguous: " + a.alternative.description + buf;
   }
 }

@@ -13,7 +13,9 @@
 /// - the selected pose, and the same turned 180 degrees about the vertical through the centre of
 ///   what it aligns, each moved along the target structure's two horizontal principal axes by the
 ///   shifts where the clouds' occupancy agrees best (peaks of the cross-correlation of two voxel
-///   grids, which is where a repetition period shows), then moved locally to the best E.
+///   grids, which is where a repetition period shows); the two best of them moved across their
+///   axis, by up to twice the distinct translation, to where the occupancy agrees best, then
+///   locally to the best E.
 /// Every alternative is scored by E on the same points; the one with the highest E is returned.
 
 #include <string>

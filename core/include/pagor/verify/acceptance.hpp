@@ -20,8 +20,11 @@
 ///   alternatives: the other levels' candidates, the pose turned 180 degrees about the vertical
 ///   through the centre of what it aligns, and both moved along the target structure's principal
 ///   axes by the shifts where the clouds' occupancy agrees best, which is where a repetition
-///   period shows (verify/ambiguity.cpp). A corridor of pillars, a street of identical facades,
-///   a symmetric hall: a pose off by whole periods, or turned, fits as well as the right one.
+///   period shows; the two most rivalling of them are moved across their axis, by up to twice
+///   distinct_translation, to where the occupancy agrees best (a plan's principal axis need not
+///   run along its rows of columns), then to their best ratio (verify/ambiguity.cpp). A corridor of
+///   pillars, a street of identical facades, a symmetric hall: a pose off by whole periods, or
+///   turned, fits as well as the right one.
 /// The pose is accepted when every measure reaches its threshold; a pose resting on the minimal
 /// number of inliers for its model must reach the higher `minimal_support_overlap`.
 
@@ -59,6 +62,9 @@ struct AcceptanceAlternative {
   /// (points only it aligns + 10) / (points only the selected pose aligns + 10): about 1, nothing
   /// tells the two apart; over 1, the alternative fits better
   double ratio = 0.0;
+  /// the disagreeing structure points behind the ratio: those only the alternative aligns, and
+  /// those only the selected pose aligns
+  std::size_t only_alternative = 0, only_selected = 0;
 };
 
 /// The verdict and the measures behind it.
