@@ -127,7 +127,15 @@ void print_levels(const Registration& r) {
 }
 
 void print_pose_and_refinement(const Registration& r) {
-  if (r.T_target_source)
+  const AcceptanceAdoption& adopted = r.acceptance.adopted;
+  if (r.T_target_source && adopted.applied)
+    std::printf(
+        "\nselected level %d (lowest D), replaced by the verdict's alternative: %s\n"
+        "  adopted: %s fitted %.2f times as well where both poses are seen; refitted by GNC on %zu "
+        "inliers; the selected pose was not accepted (%s)\n",
+        r.selected_level, pose_text(*r.T_target_source).c_str(), adopted.from.c_str(),
+        adopted.ratio, adopted.inliers.size(), adopted.selected_reason.c_str());
+  else if (r.T_target_source)
     std::printf("\nselected level %d: %s\n", r.selected_level,
                 pose_text(*r.T_target_source).c_str());
   else

@@ -106,8 +106,9 @@ Config preset_config(const std::string& name) {
     c.gnc.model = PoseModel::se3;
     c.verification = VerificationParams{};
     c.refinement.enabled = false;
-    c.clique.prove_first = false;      // Alg. 1: the relaxation on every level
-    c.clique.settle_selected = false;  // every level's search and fallback, as before
+    c.clique.prove_first = false;            // Alg. 1: the relaxation on every level
+    c.clique.settle_selected = false;        // every level's search and fallback, as before
+    c.acceptance.adopt_alternative = false;  // the pose is the lowest D's, as published
     return c;
   }
   if (name == "indoor") return indoor_config();

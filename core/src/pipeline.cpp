@@ -387,26 +387,84 @@ void Pipeline::judge_acceptance() {
   const PoseModel model = verification_.selected >= 0
                               ? poses_[static_cast<std::size_t>(verification_.selected)].model
                               : config_.gnc.model;
-  if (!refinement_.applied) {
-    acceptance_ = judge_selection(*verifier_, poses_, verification_, config_.verification,
-                                  config_.acceptance, model, threads_now(), on_furniture);
-    return;
-  }
   // Judge the pose the user gets: the refined one, with its own D.
   std::vector<PoseEstimate> candidates = poses_;
   VerificationResult verification = verification_;
-  const auto sel = static_cast<std::size_t>(verification_.selected);
-  candidates[sel].T_target_source = refinement_.T_after;
-  verification.scores[sel] = refinement_.score_after;
-  verification.selected_distances = refinement_.distances_after;
+  if (refinement_.applied) {
+    const auto sel = static_cast<std::size_t>(verification_.selected);
+    candidates[sel].T_target_source = refinement_.T_after;
+    verification.scores[sel] = refinement_.score_after;
+    verification.selected_distances = refinement_.distances_after;
+  }
   acceptance_ = judge_selection(*verifier_, candidates, verification, config_.verification,
                                 config_.acceptance, model, threads_now(), on_furniture);
+  adopt_alternative(std::move(candidates), std::move(verification), on_furniture);
+}
+
+void Pipeline::adopt_alternative(std::vector<PoseEstimate> candidates,
+                                 VerificationResult verification,
+                                 const std::vector<char>* furniture) {
+  const AcceptanceParams& params = config_.acceptance;
+  const AcceptanceAlternative& alt = acceptance_.alternative;
+  // Overturning the selection asks the evidence to be decisive twice over: the alternative must
+  // out-fit it by the square of what the ambiguity test asks of a pose against its rival (3.3 at
+  // max_ambiguity 0.55). Car parks 1-14: a right pose rivalled by its half turn, 19 points
+  // against 0 (ratio 2.9: the as-built walls are not the plan's), was replaced by the turn at
+  // 1 / max_ambiguity; the right adoptions have ratios 3.2-46, the self-similar scenes' 5.3-8.6.
+  if (!params.adopt_alternative || acceptance_.accepted || alt.description.empty() ||
+      alt.ratio * params.max_ambiguity * params.max_ambiguity <= 1.0)
+    return;
+  // The correspondences the alternative explains (within the TLS bound, measured as GNC measures
+  // them), and the pose they give.
+  const GncParams gnc = gnc_params();
+  const bool planar = gnc.model == PoseModel::se2;
+  std::vector<int> members;
+  for (std::size_t i = 0; i < correspondences_.items.size(); ++i) {
+    const Correspondence& c = correspondences_.items[i];
+    Eigen::Vector3d r =
+        alt.T_target_source.block<3, 3>(0, 0) * c.p + alt.T_target_source.block<3, 1>(0, 3) - c.q;
+    if (planar) r.z() = 0;
+    if (r.norm() <= gnc.noise_bound) members.push_back(static_cast<int>(i));
+  }
+  PoseEstimate refit = estimate_pose_gnc(correspondences_.items, members, gnc);
+  const auto sel = static_cast<std::size_t>(verification.selected);
+  const char* failed = nullptr;
+  if (!refit.valid)
+    failed = "no pose";
+  else if (pose_error(refit.T_target_source, candidates[sel].T_target_source, params.distinct())
+               .success)
+    failed = "it fell back to the selected pose's answer";
+  Acceptance adopted;
+  if (!failed) {
+    candidates.push_back(refit);
+    std::vector<float> distances;
+    verification.scores.push_back(verifier_->score(refit.T_target_source, config_.verification.mu,
+                                                   config_.verification.score, threads_now(),
+                                                   &distances));
+    verification.selected = static_cast<int>(candidates.size()) - 1;
+    verification.selected_distances = std::move(distances);
+    verification.distance_bound = static_cast<float>(config_.verification.mu);
+    adopted = judge_selection(*verifier_, candidates, verification, config_.verification, params,
+                              refit.model, threads_now(), furniture, true);
+  }
+  if (failed || !adopted.accepted) {
+    char buf[96];
+    std::snprintf(buf, sizeof(buf), "; refitted on the %zu correspondences it explains, ",
+                  members.size());
+    acceptance_.reason +=
+        buf + std::string(failed ? failed : "it was not trusted either: " + adopted.reason);
+    return;
+  }
+  adopted.adopted = {true,      refit.T_target_source,      refit.inliers,     alt.description,
+                     alt.ratio, verification.scores.back(), acceptance_.reason};
+  acceptance_ = std::move(adopted);
 }
 
 std::optional<Transform> Pipeline::selected_transform() const {
   if (verification_.selected < 0 ||
       static_cast<std::size_t>(verification_.selected) >= poses_.size())
     return std::nullopt;
+  if (acceptance_.adopted.applied) return acceptance_.adopted.T_target_source;
   if (refinement_.applied) return refinement_.T_after;
   return poses_[static_cast<std::size_t>(verification_.selected)].T_target_source;
 }

@@ -110,6 +110,8 @@ Registration make_registration(const Pipeline& p, const RegistrationContext& con
   r.acceptance = p.acceptance();
   if (!r.acceptance.alternative.description.empty())
     r.acceptance.alternative.T_target_source = in_files(r.acceptance.alternative.T_target_source);
+  if (r.acceptance.adopted.applied)
+    r.acceptance.adopted.T_target_source = in_files(r.acceptance.adopted.T_target_source);
   r.refinement = p.refinement();
   r.pose_model_configured = p.config().gnc.model;
   r.pose_model_used = p.gnc_params().model;

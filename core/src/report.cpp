@@ -136,12 +136,20 @@ json acceptance_json(const Registration& r) {
                    {"only_alternative", a.alternative.only_alternative},
                    {"only_selected", a.alternative.only_selected},
                    {"T_target_source", matrix_json(a.alternative.T_target_source)}};
+  json adopted = nullptr;
+  if (a.adopted.applied)
+    adopted = {{"from", a.adopted.from},
+               {"ratio", finite_or_null(a.adopted.ratio)},
+               {"inliers", a.adopted.inliers.size()},
+               {"score_D", finite_or_null(a.adopted.score_D)},
+               {"selected_reason", a.adopted.selected_reason},
+               {"T_target_source", matrix_json(a.adopted.T_target_source)}};
   return {{"accepted", a.accepted},   {"verified", a.verified},
           {"overlap", a.overlap},     {"inliers", a.inliers},
           {"margin", a.margin},       {"sharpness", a.sharpness},
           {"ambiguity", a.ambiguity}, {"alternative", alternative},
-          {"tests", tests},           {"reason", a.reason},
-          {"wrong_pose_accepted", r.accepted_wrong()}};
+          {"adopted", adopted},       {"tests", tests},
+          {"reason", a.reason},       {"wrong_pose_accepted", r.accepted_wrong()}};
 }
 
 json correspondences_json(const Registration& r) {

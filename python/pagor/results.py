@@ -243,7 +243,8 @@ class Result:
     @property
     def acceptance(self) -> Dict[str, Any]:
         """The verdict's numbers: accepted, verified, overlap, inliers, margin, sharpness,
-        ambiguity, alternative, tests, reason (why it was rejected, or that there was nothing to
+        ambiguity, alternative, adopted (None, or the alternative taken in place of the selected
+        pose: from, ratio, inliers, selected_reason, T_target_source), tests, reason (why it was rejected, or that there was nothing to
         verify on), wrong_pose_accepted (accepted while the ground truth calls it wrong)."""
         return self._data["acceptance"]
 

@@ -229,7 +229,8 @@ TEST_CASE("car park verdicts: a pose two column spacings off is refuted by the t
   // along a row of columns; the plan's principal axis is turned ~4 degrees from the rows, so the
   // repetition found along it lay 1.1 m across the true pose, where nothing aligned, and the
   // wrong pose was accepted (ambiguity 0.5: 93 points against 196). Centred across the axis, the
-  // alternative is the truth and aligns 101 points the selected pose does not, against none.
+  // alternative is the truth and aligns 101 points the selected pose does not, against none: the
+  // selection is rejected, and the truth, refitted to the 4 correspondences it explains, adopted.
   test::TempDir dir;
   IndoorSceneParams scene;
   scene.seed = 7;
@@ -244,7 +245,9 @@ TEST_CASE("car park verdicts: a pose two column spacings off is refuted by the t
   }
   const PairSet set = read_pair_manifest(dir.file("pairs.txt"));
   REQUIRE(set.pairs.size() == 1u);
-  Pipeline pipeline(preset_config("indoor"));
+  Config config = preset_config("indoor");
+  config.acceptance.adopt_alternative = false;
+  Pipeline pipeline(config);
   const PairOutcome o = run_pair(pipeline, set.pairs[0]);
   const Acceptance& a = pipeline.acceptance();
   INFO(a.reason);
@@ -257,4 +260,11 @@ TEST_CASE("car park verdicts: a pose two column spacings off is refuted by the t
   CHECK(a.ambiguity > 2.0);
   CHECK(a.alternative.only_alternative > 10 * a.alternative.only_selected);
   CHECK_THAT(a.reason, Catch::Contains("fits better"));
+  // The preset adopts the alternative: refitted, it is the truth, and trusted.
+  Pipeline adopting(preset_config("indoor"));
+  const PairOutcome b = run_pair(adopting, set.pairs[0]);
+  INFO(adopting.acceptance().reason);
+  CHECK(adopting.acceptance().adopted.applied);
+  CHECK(b.success);
+  CHECK(b.accepted);
 }

@@ -203,3 +203,14 @@ def test_every_acceptance_test_is_shown_with_its_value_and_threshold(result):
     assert tests["overlap"]["value"] == pytest.approx(result.acceptance["overlap"])
     assert all(t["passed"] for t in tests.values() if t["applies"])  # the scene is accepted
     assert result.accepted and not result.wrong_pose_accepted
+
+
+def test_the_verdict_says_whether_it_adopted_an_alternative(result):
+    # The generated scene's selected pose is accepted as it is: nothing adopted, and the best
+    # alternative (if any) names the points behind its ratio.
+    assert "adopted" in result.acceptance and result.acceptance["adopted"] is None
+    assert pagor.default_config()["acceptance"]["adopt_alternative"] is True
+    alt = result.alternative
+    assert alt is not None  # the generated scene has a distinct rival, clearly weaker
+    assert alt["only_selected"] > alt["only_alternative"] >= 0
+    assert alt["ratio"] <= pagor.default_config()["acceptance"]["max_ambiguity"]

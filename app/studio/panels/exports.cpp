@@ -100,9 +100,11 @@ bool result_button(const char* label, const char* tip, const std::string& stale_
 
 void result_exports(const Snapshot& s, const std::string& stale_reason, const Exports& to) {
   const bool selected = s.selected >= 0 && s.selected < static_cast<int>(s.levels.size());
-  // The selected pose as the CLI reports it: refined when refinement applied.
+  // The selected pose as the CLI reports it: the verdict's adopted alternative when it took one,
+  // else refined when refinement applied.
   const bool refined = s.refinement.ran && s.refinement.applied;
-  const Transform T = !selected ? Transform::Identity()
+  const Transform T = !selected                      ? Transform::Identity()
+                      : s.acceptance.adopted.applied ? s.acceptance.adopted.T_target_source
                       : refined
                           ? s.refinement.T_after
                           : s.levels[static_cast<std::size_t>(s.selected)].pose.T_target_source;

@@ -54,6 +54,10 @@ int label_stride(int n, float slot) {
 std::string selected_text(const Snapshot& s) {
   const PoseError& e = *s.selected_error;
   std::string t = ui::format("selected: %s (L%d), ", e.success ? "SUCCESS" : "FAILURE", s.selected);
+  if (s.acceptance.adopted.applied)
+    return ui::format("selected: %s (the verdict's alternative, in place of L%d's pose), ",
+                      e.success ? "SUCCESS" : "FAILURE", s.selected) +
+           ui::format("%.2f m / %.2f\xc2\xb0", e.translation, e.rotation_deg);
   if (!s.refinement.applied)
     return t + ui::format("%.2f m / %.2f\xc2\xb0 (not refined)", e.translation, e.rotation_deg);
   t += ui::format("refined %.2f m / %.2f\xc2\xb0", e.translation, e.rotation_deg);
@@ -126,6 +130,12 @@ std::string acceptance_text(const Snapshot& s) {
   }
   t += ": " + tests + ui::format(" (aligned: within %.2f m)", p.inlier_distance);
   if (!a.accepted) t += "; " + a.reason;
+  if (a.adopted.applied)
+    t += ui::format(
+        "; adopted in place of L%d's pose: %s, which fitted %.2f times as well where both are "
+        "seen, refitted on %zu GNC inliers (L%d's pose: %s)",
+        s.selected, a.adopted.from.c_str(), a.adopted.ratio, a.adopted.inliers.size(), s.selected,
+        a.adopted.selected_reason.c_str());
   if (!a.alternative.description.empty())
     t += ui::format(
         "; best distinct alternative: %s (%.2f times as well supported: %zu points only it "

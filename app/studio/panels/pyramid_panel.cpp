@@ -139,8 +139,27 @@ bool level_row(const Snapshot& s, int i, int shown, const RunChanges& changes) {
   return clicked;
 }
 
+// A pose row's cells after D: ΔD (empty), the errors (with a ground truth), translation, yaw.
+void pose_cells(const Snapshot& s, const std::optional<PoseError>& e, const Transform& T) {
+  ImGui::TableNextColumn();  // ΔD
+  if (s.ground_truth.has_value()) {
+    ImGui::TableNextColumn();
+    if (e) ui::figure(ui::format("%.2f", e->translation));
+    ImGui::TableNextColumn();
+    if (e) ui::figure(ui::format("%.2f", e->rotation_deg));
+    ImGui::TableNextColumn();
+    if (e) ui::figure(e->success ? "yes" : "no", e->success ? kGood : kBad);
+  }
+  ImGui::TableNextColumn();
+  ui::figure(ui::format("%7s %6s %6s", fixed(T(0, 3), 2).c_str(), fixed(T(1, 3), 2).c_str(),
+                        fixed(T(2, 3), 2).c_str()));
+  ImGui::TableNextColumn();
+  ui::figure(fixed(yaw_pitch_roll_deg(T.block<3, 3>(0, 0)).x(), 2));
+}
+
 // Under the selected level's row, when refinement moved its pose: the refined pose, its D and
-// errors (what the verdict, copy and exports give), labelled; the row above is the candidate.
+// errors (what the verdict, copy and exports give unless the verdict adopted an alternative),
+// labelled; the row above is the candidate.
 void refined_row(const Snapshot& s) {
   const RefinementResult& r = s.refinement;
   if (!r.applied || s.selected < 0) return;
@@ -154,23 +173,31 @@ void refined_row(const Snapshot& s) {
         "copy and exports give. The row above is the candidate before refinement.");
   for (int c = 0; c < 5; ++c) ImGui::TableNextColumn();  // eps, verts, edges, clique -> D
   ui::figure(ui::format("%.1f", r.score_after));
-  ImGui::TableNextColumn();  // ΔD
-  if (s.ground_truth.has_value()) {
-    ImGui::TableNextColumn();
-    if (s.selected_error) ui::figure(ui::format("%.2f", s.selected_error->translation));
-    ImGui::TableNextColumn();
-    if (s.selected_error) ui::figure(ui::format("%.2f", s.selected_error->rotation_deg));
-    ImGui::TableNextColumn();
-    if (s.selected_error)
-      ui::figure(s.selected_error->success ? "yes" : "no",
-                 s.selected_error->success ? kGood : kBad);
-  }
+  // The selected pose's errors are the adopted alternative's when the verdict took one.
+  std::optional<PoseError> e = s.selected_error;
+  if (s.acceptance.adopted.applied && s.ground_truth)
+    e = pose_error(r.T_after, *s.ground_truth, s.config.evaluation);
+  pose_cells(s, e, r.T_after);
+}
+
+// Under the selected level's rows, when the verdict took its better-fitting alternative in place
+// of the selected pose (acceptance.adopt_alternative): that pose, its D and errors.
+void adopted_row(const Snapshot& s) {
+  const AcceptanceAdoption& a = s.acceptance.adopted;
+  if (!a.applied || s.selected < 0) return;
+  ImGui::TableNextRow();
+  ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg1, IM_COL32(40, 90, 60, 140));
   ImGui::TableNextColumn();
-  const Transform& T = r.T_after;
-  ui::figure(ui::format("%7s %6s %6s", fixed(T(0, 3), 2).c_str(), fixed(T(1, 3), 2).c_str(),
-                        fixed(T(2, 3), 2).c_str()));
-  ImGui::TableNextColumn();
-  ui::figure(fixed(yaw_pitch_roll_deg(T.block<3, 3>(0, 0)).x(), 2));
+  ui::figure("  adopted", kRefined);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(
+        "The verdict's alternative taken in place of the selected pose: %s fitted %.2f times as "
+        "well where both poses are seen, and refitted by GNC on %zu correspondences the verdict "
+        "accepted it. It is the pose the copy and exports give.",
+        a.from.c_str(), a.ratio, a.inliers.size());
+  for (int c = 0; c < 5; ++c) ImGui::TableNextColumn();  // eps, verts, edges, clique -> D
+  ui::figure(ui::format("%.1f", a.score_D));
+  pose_cells(s, s.selected_error, a.T_target_source);
 }
 
 // One row per level; returns the level clicked, or -1.
@@ -180,7 +207,8 @@ int levels_table(const Snapshot& s, int shown, const RunChanges& changes) {
   const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_Borders |
                                 ImGuiTableFlags_ScrollX | ImGuiTableFlags_SizingFixedFit;
   const int columns = gt ? 12 : 9;
-  const float rows = static_cast<float>(s.levels.size()) + (s.refinement.applied ? 1.0f : 0.0f);
+  const float rows = static_cast<float>(s.levels.size()) + (s.refinement.applied ? 1.0f : 0.0f) +
+                     (s.acceptance.adopted.applied ? 1.0f : 0.0f);
   const float table_h = ImGui::GetTextLineHeightWithSpacing() * (rows + 2.4f);
   if (!ImGui::BeginTable("pyramid", columns, flags, ImVec2(0, table_h))) return -1;
   ImGui::TableSetupScrollFreeze(1, 1);
@@ -200,7 +228,10 @@ int levels_table(const Snapshot& s, int shown, const RunChanges& changes) {
   ImGui::TableHeadersRow();
   for (int i = 0; i < static_cast<int>(s.levels.size()); ++i) {
     if (level_row(s, i, shown, changes)) clicked = i;
-    if (i == s.selected) refined_row(s);
+    if (i == s.selected) {
+      refined_row(s);
+      adopted_row(s);
+    }
   }
   ImGui::EndTable();
   return clicked;

@@ -257,6 +257,9 @@ std::shared_ptr<Snapshot> Worker::make_snapshot(std::uint64_t request) const {
           to_cloud_frames(l.pose.T_target_source, p.source().origin, p.target().origin);
   s->selected = r.selected_level;
   s->acceptance = r.acceptance;
+  if (s->acceptance.adopted.applied)  // drawn with the clouds, in their own frames
+    s->acceptance.adopted.T_target_source = to_cloud_frames(s->acceptance.adopted.T_target_source,
+                                                            p.source().origin, p.target().origin);
   s->refinement = r.refinement;
   s->unrefined_error = r.unrefined_error;
   s->upper_bound = r.any_level_succeeds;

@@ -147,6 +147,7 @@ Transform shown_source_pose(const ViewState& view, const Snapshot& s) {
       break;
     }
     case PoseShown::refined:
+      if (s.acceptance.adopted.applied) return s.acceptance.adopted.T_target_source;
       if (s.refinement.ran)
         return s.refinement.applied ? s.refinement.T_after : s.refinement.T_before;
       if (s.selected >= 0)

@@ -634,6 +634,7 @@ struct AcceptanceParams {
   double min_sharpness = 0.1;
   double max_ambiguity = 0.55;
   double ambiguity_range = 40.0;
+  bool adopt_alternative = true;
   double distinct_translation = 2.0;
   double distinct_rotation = 5.0;
 
@@ -685,6 +686,15 @@ struct AcceptanceParams {
     v(&AcceptanceParams::ambiguity_range,
       {"ambiguity_range", "The furthest shift searched for a repetition along each principal axis.",
        "m", Range::closed(0, 1e4)});
+    v(&AcceptanceParams::adopt_alternative,
+      {"adopt_alternative",
+       "Where the ambiguity's best alternative fits decisively better than the selected pose "
+       "(its ratio above 1 / max_ambiguity^2: twice over what would let it stand against the "
+       "selection), refit it by GNC to the correspondences it explains and judge it as the "
+       "selection; it becomes the pose when that verdict accepts it. D counts a point the target "
+       "never saw as unexplained, so a pose that slides a corridor's whole view onto the "
+       "target's beats the true one, which leaves part of the source beyond the target's range "
+       "and aligns the objects that fix it. Off in the paper preset."});
   }
 };
 

@@ -140,7 +140,8 @@ class Pipeline {
 
   /// Selected level, or -1 when no candidate is valid.
   int selected_level() const { return verification_.selected; }
-  /// The selected pose, if any: the refined one when refinement lowered D.
+  /// The selected pose, if any: the verdict's adopted alternative when it took one
+  /// (AcceptanceParams::adopt_alternative), else the refined one when refinement lowered D.
   std::optional<Transform> selected_transform() const;
   /// Errors of the selected pose (needs ground truth and a valid selection).
   std::optional<PoseError> selected_error() const;
@@ -173,6 +174,11 @@ class Pipeline {
   void warn_if_numberings_differ();
   void warn_if_numbering_unsure();
   void judge_acceptance();
+  // Takes the ambiguity's alternative in place of the selection where it fits decisively better and
+  // the verdict accepts it refitted (AcceptanceParams::adopt_alternative); `candidates` and
+  // `verification` are those the verdict judged.
+  void adopt_alternative(std::vector<PoseEstimate> candidates, VerificationResult verification,
+                         const std::vector<char>* furniture);
   /// Calls f(cloud, landmarks) for the source and the target, in parallel with threads > 1.
   template <class F>
   void both_clouds(const F& f);

@@ -101,7 +101,7 @@ AcceptanceTest make_test(const char* name, double value, double threshold, bool 
 
 // The tests but the ambiguity, in the order the reason is chosen; the reason names the first that
 // failed.
-void add_tests(Acceptance& a, const AcceptanceParams& params, PoseModel model) {
+void add_tests(Acceptance& a, const AcceptanceParams& params, PoseModel model, bool adopting) {
   a.tests.push_back(make_test("overlap", a.overlap, params.min_overlap, false,
                               "fraction of structure points aligned under the pose"));
   a.tests.push_back(make_test("inliers", a.inliers, params.min_inliers, false,
@@ -111,6 +111,13 @@ void add_tests(Acceptance& a, const AcceptanceParams& params, PoseModel model) {
                               "criterion's translation"));
   a.tests.push_back(make_test("margin", a.margin, params.min_margin, false,
                               "D margin to the best distinct candidate, fraction of mu * points"));
+  if (adopting) {  // D preferred the pose it out-fitted; the ambiguity test judges them instead
+    a.tests.back().applies = false;
+    a.tests.back().passed = true;
+    a.tests.back().description +=
+        " (not taken for an adopted alternative: the ambiguity test compares it with every "
+        "candidate on the points both poses put where the target looked)";
+  }
   AcceptanceTest minimal = make_test("minimal support", a.overlap, params.minimal_support_overlap,
                                      false, "overlap asked of a pose on the minimal inliers");
   minimal.applies = a.inliers <= minimal_sample_size(model);
@@ -207,7 +214,7 @@ Acceptance judge_selection(const Verifier& verifier, const std::vector<PoseEstim
                            const VerificationResult& verification,
                            const VerificationParams& verification_params,
                            const AcceptanceParams& params, PoseModel model, int threads,
-                           const std::vector<char>* furniture) {
+                           const std::vector<char>* furniture, bool adopting) {
   const EvaluationParams distinct = params.distinct();  // what counts as another answer
   Acceptance a;
   if (verification.selected < 0) {
@@ -231,7 +238,7 @@ Acceptance judge_selection(const Verifier& verifier, const std::vector<PoseEstim
   a.inliers = static_cast<int>(candidates[sel].inliers.size());
   const double full = verification_params.mu * static_cast<double>(d.size());
   a.margin = margin_of(candidates, verification, sel, full, distinct);
-  add_tests(a, params, model);
+  add_tests(a, params, model, adopting);
   // The ambiguity is searched only for a pose every other test trusts (it costs a few dozen
   // searches of the points).
   if (a.reason.empty() && params.max_ambiguity < kAmbiguityOff)

@@ -189,7 +189,12 @@ void judge(const DiagnosisInput& in, const DiagnosisParams& params, Diagnosis& d
     const auto& c = at(sel).error;  // the candidate before refinement
     d.explanation = format("level %d selected and right (%.2f m, %.2f deg)", sel, e.translation,
                            e.rotation_deg);
-    if (c && !c->success)
+    if (in.acceptance && in.acceptance->adopted.applied)
+      d.explanation = format(
+          "level %d selected; the verdict's alternative, adopted in its place, is right (%.2f m, "
+          "%.2f deg)",
+          sel, e.translation, e.rotation_deg);
+    else if (c && !c->success)
       d.explanation += format(" after refinement; its candidate was off by %.2f m, %.2f deg",
                               c->translation, c->rotation_deg);
     return;

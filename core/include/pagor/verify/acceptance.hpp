@@ -67,6 +67,19 @@ struct AcceptanceAlternative {
   std::size_t only_alternative = 0, only_selected = 0;
 };
 
+/// The ambiguity's alternative taken in place of the selected pose (AcceptanceParams::
+/// adopt_alternative): it fitted decisively better, was refitted by GNC to the correspondences it
+/// explains, and the verdict on it as the selection accepted it.
+struct AcceptanceAdoption {
+  bool applied = false;
+  Transform T_target_source = Transform::Identity();  ///< the pose taken: the refit
+  std::vector<int> inliers;     ///< the refit's GNC inliers (indices into the correspondences)
+  std::string from;             ///< the alternative it came from, as described
+  double ratio = 0.0;           ///< that alternative's ratio against the selected pose
+  double score_D = 0.0;         ///< the refit's D [m]
+  std::string selected_reason;  ///< why the selected pose itself was not accepted
+};
+
 /// The verdict and the measures behind it.
 struct Acceptance {
   bool accepted = false;  ///< trust the selected pose
@@ -87,6 +100,8 @@ struct Acceptance {
   /// every test with its value and threshold, in the order the reason is chosen: overlap, inliers,
   /// sharpness, margin, minimal support, ambiguity; empty when nothing was judged
   std::vector<AcceptanceTest> tests;
+  /// applied: the measures above are the adopted pose's, judged as the selection
+  AcceptanceAdoption adopted;
   /// which measure failed, e.g. "overlap 0.08 < 0.25", or "ambiguous: a pose moved 18.0 m (x
   /// +18.0, y +0.1) fits as well: it alone aligns 0.97 times the points the selected pose alone
   /// aligns"; empty if accepted
@@ -97,11 +112,14 @@ struct Acceptance {
 /// `threads` > 1 splits the searches of the points over threads (same verdict). `furniture`, if
 /// given, marks the verifier's source points on furniture (what stands lower than the walls: a
 /// parked car, a person); against a floor plan the ambiguity test counts them for no pose, and
-/// against a pose that puts them on the plan's walls or columns.
+/// against a pose that puts them on the plan's walls or columns. `adopting`: the selection is an
+/// alternative being adopted (AcceptanceAdoption) that fitted decisively better than the candidates
+/// of lower D where the clouds overlap; the D margin is not taken (the ambiguity test judges it
+/// against every candidate on the points both see).
 Acceptance judge_selection(const Verifier& verifier, const std::vector<PoseEstimate>& candidates,
                            const VerificationResult& verification,
                            const VerificationParams& verification_params,
                            const AcceptanceParams& params, PoseModel model, int threads = 1,
-                           const std::vector<char>* furniture = nullptr);
+                           const std::vector<char>* furniture = nullptr, bool adopting = false);
 
 }  // namespace pagor
