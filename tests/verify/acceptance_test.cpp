@@ -474,3 +474,33 @@ TEST_CASE("an alternative not trusted once refitted leaves the selection as it w
   const Transform level = p.poses()[static_cast<std::size_t>(p.selected_level())].T_target_source;
   CHECK(p.selected_transform()->isApprox(p.refinement().applied ? p.refinement().T_after : level));
 }
+
+TEST_CASE("a pose that fails only the D margin still has its ambiguity searched for an adoption") {
+  // Corridor with objects, seed 1 (labelled): the selected pose, a period off, fails the D margin;
+  // the rival an adoption would take is searched all the same and shown, while the reason stays
+  // the margin's. With adoption off nothing is searched past the first failed test.
+  SelfSimilarParams sp;
+  sp.kind = SelfSimilarKind::corridor;
+  sp.seed = 1;
+  sp.distinct_objects = true;
+  const SelfSimilarScene s = make_self_similar_scene(sp);
+  Pipeline p;
+  p.set_input(s.source, s.target, builtin_label_scheme(kSelfSimilarLabelScheme));
+  p.run();
+  const Acceptance& a = p.acceptance();
+  INFO(a.reason);
+  CHECK_FALSE(a.accepted);
+  CHECK_THAT(a.reason, Catch::StartsWith("D margin"));
+  REQUIRE(a.tests.size() == 6u);
+  CHECK_FALSE(a.tests[3].passed);
+  CHECK(a.tests[5].applies);
+  CHECK(a.tests[5].value == a.ambiguity);
+  CHECK_FALSE(a.alternative.description.empty());
+  Config off = default_config();
+  off.acceptance.adopt_alternative = false;
+  p.set_config(off);
+  p.run();
+  CHECK_THAT(p.acceptance().reason, Catch::StartsWith("D margin"));
+  CHECK_FALSE(p.acceptance().tests[5].applies);
+  CHECK(p.acceptance().alternative.description.empty());
+}

@@ -196,7 +196,7 @@ void judge_ambiguity(Acceptance& a, const Verifier& verifier,
   t.value = a.ambiguity;
   t.applies = true;
   t.passed = a.ambiguity <= params.max_ambiguity;
-  if (!t.passed) {
+  if (!t.passed && a.reason.empty()) {  // an earlier test's reason stands
     char buf[192];
     std::snprintf(buf, sizeof(buf),
                   " fits %s: it alone aligns %.2f times the points the selected pose alone "
@@ -239,9 +239,17 @@ Acceptance judge_selection(const Verifier& verifier, const std::vector<PoseEstim
   const double full = verification_params.mu * static_cast<double>(d.size());
   a.margin = margin_of(candidates, verification, sel, full, distinct);
   add_tests(a, params, model, adopting);
-  // The ambiguity is searched only for a pose every other test trusts (it costs a few dozen
-  // searches of the points).
-  if (a.reason.empty() && params.max_ambiguity < kAmbiguityOff)
+  // The ambiguity is searched for a pose every other test trusts (it costs a few dozen searches
+  // of the points), and, for the alternative an adoption would take, for one that failed only
+  // the D margin or the sharpness: a pose that slides a corridor's whole view onto the target's
+  // has the lower D and often no margin, and the true pose, a period on, is its rival.
+  bool seek = a.reason.empty();
+  if (params.adopt_alternative && !adopting && !seek) {
+    seek = true;
+    for (const AcceptanceTest& t : a.tests)
+      if (t.applies && !t.passed && t.name != "margin" && t.name != "sharpness") seek = false;
+  }
+  if (seek && params.max_ambiguity < kAmbiguityOff)
     judge_ambiguity(a, verifier, candidates, verification, counts, furniture,
                     verification_params.mu, distinct, params, threads);
   a.accepted = a.reason.empty();
