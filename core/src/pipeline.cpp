@@ -411,8 +411,10 @@ void Pipeline::adopt_alternative(std::vector<PoseEstimate> candidates,
   // max_ambiguity 0.55). Car parks 1-14: a right pose rivalled by its half turn, 19 points
   // against 0 (ratio 2.9: the as-built walls are not the plan's), was replaced by the turn at
   // 1 / max_ambiguity; the right adoptions have ratios 3.2-46, the self-similar scenes' 5.3-8.6.
+  const double decisive =
+      std::max(1.0, 1.0 / (params.max_ambiguity * params.max_ambiguity));  // never below even
   if (!params.adopt_alternative || acceptance_.accepted || alt.description.empty() ||
-      alt.ratio * params.max_ambiguity * params.max_ambiguity <= 1.0)
+      !(alt.ratio > decisive))
     return;
   // The correspondences the alternative explains (within the TLS bound, measured as GNC measures
   // them), and the pose they give.
@@ -431,6 +433,8 @@ void Pipeline::adopt_alternative(std::vector<PoseEstimate> candidates,
   const char* failed = nullptr;
   if (!refit.valid)
     failed = "no pose";
+  else if (!pose_error(refit.T_target_source, alt.T_target_source, params.distinct()).success)
+    failed = "it moved away from the alternative";
   else if (pose_error(refit.T_target_source, candidates[sel].T_target_source, params.distinct())
                .success)
     failed = "it fell back to the selected pose's answer";

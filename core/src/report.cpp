@@ -140,7 +140,7 @@ json acceptance_json(const Registration& r) {
   if (a.adopted.applied)
     adopted = {{"from", a.adopted.from},
                {"ratio", finite_or_null(a.adopted.ratio)},
-               {"inliers", a.adopted.inliers.size()},
+               {"inlier_count", a.adopted.inliers.size()},
                {"score_D", finite_or_null(a.adopted.score_D)},
                {"selected_reason", a.adopted.selected_reason},
                {"T_target_source", matrix_json(a.adopted.T_target_source)}};

@@ -244,7 +244,7 @@ class Result:
     def acceptance(self) -> Dict[str, Any]:
         """The verdict's numbers: accepted, verified, overlap, inliers, margin, sharpness,
         ambiguity, alternative, adopted (None, or the alternative taken in place of the selected
-        pose: from, ratio, inliers, selected_reason, T_target_source), tests, reason (why it was rejected, or that there was nothing to
+        pose: from, ratio, inlier_count, score_D, selected_reason, T_target_source), tests, reason (why it was rejected, or that there was nothing to
         verify on), wrong_pose_accepted (accepted while the ground truth calls it wrong)."""
         return self._data["acceptance"]
 

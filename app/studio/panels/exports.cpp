@@ -39,10 +39,10 @@ std::string pose_matrix_text(const Transform& T) {
   return out;
 }
 
-std::string pose_json(const Transform& T, int level, bool refined) {
-  return nlohmann::json{{"T_target_source", matrix_json(T)}, {"level", level}, {"refined", refined}}
-             .dump(2) +
-         "\n";
+std::string pose_json(const Transform& T, int level, bool refined, const std::string& adopted) {
+  nlohmann::json j{{"T_target_source", matrix_json(T)}, {"level", level}, {"refined", refined}};
+  if (!adopted.empty()) j["adopted_from"] = adopted;  // the verdict's alternative, not the level's
+  return j.dump(2) + "\n";
 }
 
 std::string levels_csv(const Snapshot& s) {
@@ -110,13 +110,15 @@ void result_exports(const Snapshot& s, const std::string& stale_reason, const Ex
                           : s.levels[static_cast<std::size_t>(s.selected)].pose.T_target_source;
   ImGui::BeginDisabled(!selected);
   if (result_button("copy pose 4x4",
-                    "The selected pose T_target_source (refined when refinement applied) as 4 "
-                    "rows of 4 numbers.",
+                    "The selected pose T_target_source (the verdict's adopted alternative when it "
+                    "took one, else refined when refinement applied) as 4 rows of 4 numbers.",
                     stale_reason))
     to.actions.copy_text(pose_matrix_text(T), "the pose as a 4x4 matrix");
   ImGui::SameLine();
   if (result_button("copy pose JSON", "The selected pose as JSON, with its level.", stale_reason))
-    to.actions.copy_text(pose_json(T, s.selected, refined), "the pose as JSON");
+    to.actions.copy_text(pose_json(T, s.selected, refined && !s.acceptance.adopted.applied,
+                                   s.acceptance.adopted.applied ? s.acceptance.adopted.from : ""),
+                         "the pose as JSON");
   ImGui::EndDisabled();
   ImGui::SameLine();
   if (result_button("copy result JSON",

@@ -22,8 +22,9 @@ void write_export(const Exports& to, const std::string& name, const std::string&
 
 /// A transform as four lines of four numbers (row-major), each exact to the double.
 std::string pose_matrix_text(const Transform& T);
-/// {"T_target_source": [[...] x4], "level": L, "refined": bool} as JSON.
-std::string pose_json(const Transform& T, int level, bool refined);
+/// {"T_target_source": [[...] x4], "level": L, "refined": bool} as JSON, with "adopted_from" when
+/// `adopted` names the verdict's alternative the pose is (acceptance.adopted) instead of L's.
+std::string pose_json(const Transform& T, int level, bool refined, const std::string& adopted = "");
 /// One line per level: epsilon, vertices, edges, clique size, D, errors and success (empty
 /// without ground truth), translation and yaw; a header line first.
 std::string levels_csv(const Snapshot& s);

@@ -266,7 +266,8 @@ void view_panel(ViewState& v, CameraControl camera, bool& show_help, bool has_pl
   ImGui::SameLine();
   ui::radio("refined", &v.pose, PoseShown::refined,
             "Place the source under the selected pose after refinement (the candidate itself "
-            "where refinement is off or did not lower D). Toggle with 'candidate' to compare.");
+            "where refinement is off or did not lower D; the verdict's adopted alternative when "
+            "it took one). Toggle with 'candidate' to compare.");
   ui::radio("ground truth", &v.pose, PoseShown::ground_truth,
             "Place the source under the ground-truth pose (when known).");
   ImGui::SameLine();

@@ -35,10 +35,14 @@ void refinement_lines(const Snapshot& s) {
   ui::figure(ui::format("refinement: D %.0f -> %.0f m (%s), moved %.2f m / %.2f\xc2\xb0",
                         r.score_before, r.score_after, change.c_str(), r.correction_translation,
                         r.correction_rotation));
-  if (s.unrefined_error && s.selected_error)
+  // After refinement: the selected pose's errors, unless the verdict adopted an alternative.
+  std::optional<PoseError> after = s.selected_error;
+  if (s.acceptance.adopted.applied && s.ground_truth)
+    after = pose_error(r.T_after, *s.ground_truth, s.config.evaluation);
+  if (s.unrefined_error && after)
     ui::figure(ui::format("  errors before %.2f m / %.2f\xc2\xb0, after %.2f m / %.2f\xc2\xb0",
                           s.unrefined_error->translation, s.unrefined_error->rotation_deg,
-                          s.selected_error->translation, s.selected_error->rotation_deg));
+                          after->translation, after->rotation_deg));
 }
 
 // The labels under the bars: every level's when they fit, else every k-th (never overlapping).

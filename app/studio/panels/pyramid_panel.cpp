@@ -192,8 +192,8 @@ void adopted_row(const Snapshot& s) {
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip(
         "The verdict's alternative taken in place of the selected pose: %s fitted %.2f times as "
-        "well where both poses are seen, and refitted by GNC on %zu correspondences the verdict "
-        "accepted it. It is the pose the copy and exports give.",
+        "well where both poses are seen; refitted by GNC on %zu correspondences, it was accepted. "
+        "It is the pose the copy and exports give.",
         a.from.c_str(), a.ratio, a.inliers.size());
   for (int c = 0; c < 5; ++c) ImGui::TableNextColumn();  // eps, verts, edges, clique -> D
   ui::figure(ui::format("%.1f", a.score_D));

@@ -689,8 +689,10 @@ struct AcceptanceParams {
     v(&AcceptanceParams::adopt_alternative,
       {"adopt_alternative",
        "Where the ambiguity's best alternative fits decisively better than the selected pose "
-       "(its ratio above 1 / max_ambiguity^2: twice over what would let it stand against the "
-       "selection), refit it by GNC to the correspondences it explains and judge it as the "
+       "(its ratio above 1 / max_ambiguity squared, and above 1: what would let it stand against "
+       "the "
+       "selection, squared), refit it by GNC to the correspondences it explains and judge it as "
+       "the "
        "selection; it becomes the pose when that verdict accepts it. D counts a point the target "
        "never saw as unexplained, so a pose that slides a corridor's whole view onto the "
        "target's beats the true one, which leaves part of the source beyond the target's range "

@@ -84,8 +84,9 @@ inline bool wrong_pose_accepted(bool accepted, const std::optional<PoseError>& e
 /// The result of one registration.
 struct Registration {
   std::string source_name, target_name;  ///< what the inputs are (files, descriptions)
-  /// The selected pose (refined when refinement lowered D), in the frames of the points as given;
-  /// nullopt when no level has a valid candidate.
+  /// The selected pose (the verdict's adopted alternative when it took one, acceptance.adopted;
+  /// else refined when refinement lowered D), in the frames of the points as given; nullopt when
+  /// no level has a valid candidate.
   std::optional<Transform> T_target_source;
   int selected_level = -1;  ///< index into `levels`; -1 when none
   SelectedBy selected_by = SelectedBy::score_D;
@@ -102,7 +103,8 @@ struct Registration {
   std::optional<Transform> T_target_source_gt;  ///< in the frames of the points as given
   std::optional<PoseError> error;               ///< of the selected pose
   std::optional<PoseError> unrefined_error;     ///< of the selected candidate before refinement
-  bool any_level_succeeds = false;  ///< some level's candidate (or the refined pose) is right
+  /// some level's candidate, or the selected pose (refined, or adopted), is right
+  bool any_level_succeeds = false;
   std::optional<Diagnosis> diagnosis;  ///< the stage at fault (diagnosis.hpp)
 
   // ---- the front end ----

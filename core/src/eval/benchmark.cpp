@@ -89,8 +89,9 @@ PairOutcome pair_outcome(const Registration& r, const PairEntry& entry) {
   o.upper_bound = r.any_level_succeeds;
   o.accepted = r.acceptance.accepted;
   o.margin = r.acceptance.margin;
-  o.score = o.selected_level >= 0 ? r.levels[static_cast<std::size_t>(o.selected_level)].score_D
-                                  : std::numeric_limits<double>::quiet_NaN();
+  o.score = r.acceptance.adopted.applied ? r.acceptance.adopted.score_D
+            : o.selected_level >= 0 ? r.levels[static_cast<std::size_t>(o.selected_level)].score_D
+                                    : std::numeric_limits<double>::quiet_NaN();
   for (const LevelSummary& l : r.levels) {
     if (o.has_ground_truth) o.level_success.push_back(l.error && l.error->success);
     o.level_epsilons.push_back(l.epsilon);

@@ -202,8 +202,8 @@ void judge_ambiguity(Acceptance& a, const Verifier& verifier,
                   " fits %s: it alone aligns %.2f times the points the selected pose alone "
                   "aligns (%zu points against %zu)",
                   // better: selected instead, this pose would not be rivalled by the selection
-                  a.ambiguity * params.max_ambiguity > 1.0 ? "better" : "as well", a.ambiguity,
-                  a.alternative.only_alternative, a.alternative.only_selected);
+                  a.ambiguity > std::max(1.0, 1.0 / params.max_ambiguity) ? "better" : "as well",
+                  a.ambiguity, a.alternative.only_alternative, a.alternative.only_selected);
     a.reason = "ambiguous: " + a.alternative.description + buf;
   }
 }

@@ -11,11 +11,12 @@
 /// 1: the alternative is the better pose. Alternatives:
 /// - the other levels' candidates that are a different answer;
 /// - the selected pose, and the same turned 180 degrees about the vertical through the centre of
-///   what it aligns, each moved along the target structure's two horizontal principal axes by the
-///   shifts where the clouds' occupancy agrees best (peaks of the cross-correlation of two voxel
-///   grids, which is where a repetition period shows); the two best of them moved across their
-///   axis, by up to twice the distinct translation, to where the occupancy agrees best, then
-///   locally to the best E.
+///   what it aligns, each moved along the target structure's two horizontal axes (a scan's
+///   principal axes; a plan's the directions its walls run along) by the shifts where the clouds'
+///   occupancy agrees best (peaks of the cross-correlation of two voxel grids, which is where a
+///   repetition period shows); each moved across its axis, by up to twice the distinct
+///   translation, to where the occupancy agrees best; the two best of them then locally to the
+///   best E.
 /// Every alternative is scored by E on the same points; the one with the highest E is returned.
 
 #include <string>

@@ -199,6 +199,16 @@ void judge(const DiagnosisInput& in, const DiagnosisParams& params, Diagnosis& d
                               c->translation, c->rotation_deg);
     return;
   }
+  if (in.acceptance && in.acceptance->adopted.applied) {  // the verdict's own choice is wrong
+    d.verdict = V::verification_wrong;
+    d.at_fault_level = best_right >= 0 ? best_right : sel;
+    const auto& e = *d.selected_error;
+    d.explanation = format(
+        "the verdict adopted %s in place of level %d's pose, and it is wrong (%.2f m, %.2f deg)",
+        in.acceptance->adopted.from.c_str(), sel, e.translation, e.rotation_deg);
+    if (best_right >= 0) d.explanation += format("; level %d's candidate was right", best_right);
+    return;
+  }
   if (judge_labels(in, d)) return;
   if (best_right >= 0) {
     d.verdict = V::verification_wrong;

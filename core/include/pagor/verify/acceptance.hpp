@@ -18,12 +18,12 @@
 ///   which the two disagree (one aligns within inlier_distance, the other not within twice it),
 ///   (those only the alternative aligns + 10) / (those only the selected pose aligns + 10). The
 ///   alternatives: the other levels' candidates, the pose turned 180 degrees about the vertical
-///   through the centre of what it aligns, and both moved along the target structure's principal
-///   axes by the shifts where the clouds' occupancy agrees best, which is where a repetition
-///   period shows; the two most rivalling of them are moved across their axis, by up to twice
-///   distinct_translation, to where the occupancy agrees best (a plan's principal axis need not
-///   run along its rows of columns), then to their best ratio (verify/ambiguity.cpp). A corridor of
-///   pillars, a street of identical facades, a symmetric hall: a pose off by whole periods, or
+///   through the centre of what it aligns, and both moved along the target structure's axes (a
+///   scan's principal axes; a plan's the directions its walls run along) by the shifts where the
+///   clouds' occupancy agrees best, which is where a repetition period shows; each such shift is
+///   moved across its axis, by up to twice distinct_translation, to where the occupancy agrees
+///   best, and the two most rivalling then to their best ratio (verify/ambiguity.cpp). A corridor
+///   of pillars, a street of identical facades, a symmetric hall: a pose off by whole periods, or
 ///   turned, fits as well as the right one.
 /// The pose is accepted when every measure reaches its threshold; a pose resting on the minimal
 /// number of inliers for its model must reach the higher `minimal_support_overlap`.
@@ -47,7 +47,8 @@ struct AcceptanceTest {
   bool at_most = false;    ///< passes when value <= threshold (ambiguity), else value >= threshold
   bool passed = false;     ///< whether the test passed (also true when it does not apply)
   /// false: not taken (minimal support when the inliers are more than the minimum; ambiguity when
-  /// an earlier test failed or max_ambiguity turns it off)
+  /// an earlier test other than the margin or the sharpness failed, or with adoption off any
+  /// earlier test, or max_ambiguity turns it off; the margin for an adopted alternative)
   bool applies = true;
   std::string unit;         ///< "" for fractions and counts
   std::string description;  ///< what the measure is, one line
