@@ -58,20 +58,12 @@ std::vector<cli::Option> studio_options() {
 AppState state_from_args(const cli::Args& args) {
   AppState s;
   if (args.has("session")) load_session(args.get("session"), s);
-  if (const auto chosen = cli::pair_source_from_args(args)) {
+  const auto chosen = cli::pair_source_from_args(args);
+  const bool named = chosen.has_value();  // a pair named on the command line
+  if (chosen) {
     s.data = *chosen;
     s.have_data = true;
     s.base_dir.clear();  // paths given on the command line are relative to the working directory
-  }
-  // The configuration as pagor register chooses it (a floor-plan target without --config or
-  // --preset: the indoor preset); a session keeps its own unless one is given.
-  if (args.has("config") || args.has("preset") || (!args.has("session") && s.have_data)) {
-    cli::ChosenConfig c =
-        cli::config_for_targets(args, s.have_data && s.data.kind == PairSource::Kind::files
-                                          ? std::vector<std::string>{s.data.target}
-                                          : std::vector<std::string>{});
-    s.config = std::move(c.config);
-    s.preset = std::move(c.preset);
   }
   // The benchmark view's KITTI pairs run on the KITTI root the user named, not on the default.
   if (args.has("kitti-root")) s.bench.kitti_root = absolute_path(args.get("kitti-root"));
@@ -92,6 +84,23 @@ AppState state_from_args(const cli::Args& args) {
     s.pairs = read_step_pairs(s.pairs_file, resolve_path(s, s.data.kitti_root), s.data.sequence);
     s.pair_index = index_of_pair(s.pairs, resolved_data(s));
     if (!s.have_data) step_pair_index(s, 1);  // no pair named: the first of the file
+  }
+  // The configuration as pagor register chooses it (floor-plan targets without --config or
+  // --preset: the indoor preset; the pair given, else the pairs file's), after the pairs file is
+  // read: a car park's manifest opened alone ran its plans under the default classes and stopped
+  // on "label scheme 'indoor' has no class 'car'". A session keeps its own unless one is given.
+  if (args.has("config") || args.has("preset") || (!args.has("session") && s.have_data)) {
+    std::vector<std::string> targets;
+    if (named || s.pairs.pairs.empty()) {
+      if (s.have_data && s.data.kind == PairSource::Kind::files && !s.data.target.empty())
+        targets.push_back(s.data.target);
+    } else {
+      for (const PairEntry& e : s.pairs.pairs)  // as pagor bench chooses for the file
+        if (e.source.kind == PairSource::Kind::files) targets.push_back(e.source.target);
+    }
+    cli::ChosenConfig c = cli::config_for_targets(args, targets);
+    s.config = std::move(c.config);
+    s.preset = std::move(c.preset);
   }
   if (!s.have_data && !args.has("session")) {
     // Nothing asked for: the shared KITTI pair 20 -> 30 when it is there, else the synthetic scene.
