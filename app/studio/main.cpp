@@ -96,7 +96,7 @@ AppState state_from_args(const cli::Args& args) {
         targets.push_back(s.data.target);
     } else {
       for (const PairEntry& e : s.pairs.pairs)  // as pagor bench chooses for the file
-        if (e.source.kind == PairSource::Kind::files) targets.push_back(e.source.target);
+        targets.push_back(e.source.kind == PairSource::Kind::files ? e.source.target : "");
     }
     cli::ChosenConfig c = cli::config_for_targets(args, targets);
     s.config = std::move(c.config);

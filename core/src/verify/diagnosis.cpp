@@ -199,17 +199,18 @@ void judge(const DiagnosisInput& in, const DiagnosisParams& params, Diagnosis& d
                               c->translation, c->rotation_deg);
     return;
   }
-  if (in.acceptance && in.acceptance->adopted.applied) {  // the verdict's own choice is wrong
+  if (judge_labels(in, d)) return;
+  if (in.acceptance && in.acceptance->adopted.applied && d.selected_error && best_right >= 0) {
+    // The verdict replaced the selection by its alternative, and a level's candidate was right.
     d.verdict = V::verification_wrong;
-    d.at_fault_level = best_right >= 0 ? best_right : sel;
+    d.at_fault_level = best_right;
     const auto& e = *d.selected_error;
     d.explanation = format(
-        "the verdict adopted %s in place of level %d's pose, and it is wrong (%.2f m, %.2f deg)",
-        in.acceptance->adopted.from.c_str(), sel, e.translation, e.rotation_deg);
-    if (best_right >= 0) d.explanation += format("; level %d's candidate was right", best_right);
+        "the verdict adopted %s in place of level %d's pose, and it is wrong (%.2f m, %.2f deg); "
+        "level %d's candidate was right",
+        in.acceptance->adopted.from.c_str(), sel, e.translation, e.rotation_deg, best_right);
     return;
   }
-  if (judge_labels(in, d)) return;
   if (best_right >= 0) {
     d.verdict = V::verification_wrong;
     d.at_fault_level = best_right;
@@ -312,6 +313,10 @@ Diagnosis diagnose(const DiagnosisInput& in, const Transform& T_gt, const Diagno
     d.score_misled = !(d.selected_error && d.selected_error->success) && d.gt_score > sel.score;
   }
   judge(in, params, d);
+  if (in.acceptance && in.acceptance->adopted.applied && d.selected_error &&
+      !d.selected_error->success && d.explanation.find("the verdict adopted") == std::string::npos)
+    d.explanation += "; the verdict adopted " + in.acceptance->adopted.from +
+                     " in place of the selected pose, also wrong";
   if (in.acceptance && !in.acceptance->alternative.description.empty() &&
       !(d.selected_error && d.selected_error->success) &&
       pose_error(in.acceptance->alternative.T_target_source, T_gt, in.config->evaluation).success) {
