@@ -14,9 +14,9 @@
 ///   what it aligns, each moved along the target structure's two horizontal axes (a scan's
 ///   principal axes; a plan's the directions its walls run along) by the shifts where the clouds'
 ///   occupancy agrees best (peaks of the cross-correlation of two voxel grids, which is where a
-///   repetition period shows); each moved across its axis, by up to twice the distinct
-///   translation, to where the occupancy agrees best; the two best of them then locally to the
-///   best E.
+///   repetition period shows); also tried moved across its axis, by up to twice the distinct
+///   translation, to where the occupancy agrees best (against a plan every peak, a scan the two
+///   best); the two best of them then locally to the best E.
 /// Every alternative is scored by E on the same points; the one with the highest E is returned.
 
 #include <string>

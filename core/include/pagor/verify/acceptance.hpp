@@ -20,9 +20,10 @@
 ///   alternatives: the other levels' candidates, the pose turned 180 degrees about the vertical
 ///   through the centre of what it aligns, and both moved along the target structure's axes (a
 ///   scan's principal axes; a plan's the directions its walls run along) by the shifts where the
-///   clouds' occupancy agrees best, which is where a repetition period shows; each such shift is
-///   moved across its axis, by up to twice distinct_translation, to where the occupancy agrees
-///   best, and the two most rivalling then to their best ratio (verify/ambiguity.cpp). A corridor
+///   clouds' occupancy agrees best, which is where a repetition period shows; such a shift is
+///   also tried moved across its axis, by up to twice distinct_translation, to where the occupancy
+///   agrees best (against a plan every one, a scan the two most rivalling), and the two most
+///   rivalling then moved to their best ratio (verify/ambiguity.cpp). A corridor
 ///   of pillars, a street of identical facades, a symmetric hall: a pose off by whole periods, or
 ///   turned, fits as well as the right one.
 /// The pose is accepted when every measure reaches its threshold; a pose resting on the minimal
