@@ -396,14 +396,65 @@ void Pipeline::judge_acceptance() {
     verification.scores[sel] = refinement_.score_after;
     verification.selected_distances = refinement_.distances_after;
   }
-  acceptance_ = judge_selection(*verifier_, candidates, verification, config_.verification,
-                                config_.acceptance, model, threads_now(), on_furniture);
-  adopt_alternative(std::move(candidates), std::move(verification), on_furniture);
+  const std::vector<NamedPose> anchored =
+      verification.selected >= 0
+          ? anchored_alternatives(
+                candidates[static_cast<std::size_t>(verification.selected)].T_target_source)
+          : std::vector<NamedPose>{};
+  acceptance_ =
+      judge_selection(*verifier_, candidates, verification, config_.verification,
+                      config_.acceptance, model, threads_now(), on_furniture, false, anchored);
+  adopt_alternative(std::move(candidates), std::move(verification), on_furniture, anchored);
+}
+
+std::vector<NamedPose> Pipeline::anchored_alternatives(const Transform& selected) const {
+  std::vector<NamedPose> out;
+  const PyramidGraph& g = graph_.graph();
+  const std::vector<Correspondence>& items = correspondences_.items;
+  if (!uses_landmarks() || g.vertices != static_cast<int>(items.size())) return out;
+  // The anchors: the one correspondence of a clustered class with one landmark on each side.
+  const auto& sc = source_landmarks_.classes;
+  const auto& tc = target_landmarks_.classes;
+  std::vector<int> anchors;
+  std::string names;
+  for (std::size_t k = 0; k < sc.size() && k < tc.size(); ++k) {
+    if (sc[k].method != LandmarkMethod::cluster || sc[k].landmarks != 1 || tc[k].landmarks != 1)
+      continue;
+    int found = -1, seen = 0;
+    for (std::size_t i = 0; i < items.size(); ++i)
+      if (items[i].origin == CorrespondenceOrigin::landmark &&
+          items[i].class_index == static_cast<int>(k))
+        found = static_cast<int>(i), ++seen;
+    if (seen != 1) continue;
+    anchors.push_back(found);
+    names += (names.empty() ? "" : ", ") + sc[k].name;
+  }
+  if (anchors.empty()) return out;
+  const GncParams gnc = gnc_params();
+  const EvaluationParams distinct = config_.acceptance.distinct();
+  std::vector<Transform> kept;
+  for (int l = 0; l < g.levels(); ++l) {
+    const std::vector<int> members = clique_through(g, l, anchors, config_.clique.probe_nodes);
+    const PoseEstimate pose = estimate_pose_gnc(items, members, gnc);
+    if (!pose.valid) continue;
+    const bool again = std::any_of(kept.begin(), kept.end(), [&](const Transform& T) {
+      return pose_error(pose.T_target_source, T, distinct).success;
+    });
+    if (again) continue;
+    kept.push_back(pose.T_target_source);
+    const PoseError e = pose_error(pose.T_target_source, selected, distinct);
+    char buf[160];
+    std::snprintf(buf, sizeof(buf), "; %zu correspondences at level %d; %.1f m, %.0f deg away)",
+                  members.size(), l, e.translation, e.rotation_deg);
+    out.push_back({pose.T_target_source, "the pose its unique landmarks fix (" + names + buf});
+  }
+  return out;
 }
 
 void Pipeline::adopt_alternative(std::vector<PoseEstimate> candidates,
                                  VerificationResult verification,
-                                 const std::vector<char>* furniture) {
+                                 const std::vector<char>* furniture,
+                                 const std::vector<NamedPose>& anchored) {
   const AcceptanceParams& params = config_.acceptance;
   const AcceptanceAlternative& alt = acceptance_.alternative;
   // Overturning the selection asks the evidence to be decisive twice over: the alternative must
@@ -449,7 +500,7 @@ void Pipeline::adopt_alternative(std::vector<PoseEstimate> candidates,
     verification.selected_distances = std::move(distances);
     verification.distance_bound = static_cast<float>(config_.verification.mu);
     adopted = judge_selection(*verifier_, candidates, verification, config_.verification, params,
-                              refit.model, threads_now(), furniture, true);
+                              refit.model, threads_now(), furniture, true, anchored);
   }
   if (failed || !adopted.accepted) {
     char buf[96];

@@ -563,3 +563,28 @@ TEST_CASE("the paper's preset settles every level in the cascade") {
     CHECK(r.budget != CliqueBudget::probe);
   }
 }
+
+TEST_CASE("a clique through anchors: the largest that holds them, not the graph's largest") {
+  // Two cliques, {0..5} and the larger {6..14}, and vertex 15 adjacent to 0..3 only.
+  std::vector<std::vector<int>> adj(16);
+  const auto join = [&](int a, int b) {
+    adj[static_cast<std::size_t>(a)].push_back(b);
+    adj[static_cast<std::size_t>(b)].push_back(a);
+  };
+  for (int a = 0; a < 6; ++a)
+    for (int b = a + 1; b < 6; ++b) join(a, b);
+  for (int a = 6; a < 15; ++a)
+    for (int b = a + 1; b < 15; ++b) join(a, b);
+  for (int a = 0; a < 4; ++a) join(a, 15);
+  const PyramidGraph g = test::graph_from_lists(adj);
+  const std::vector<int> small{0, 1, 2, 3, 4, 5};
+  CHECK(clique_through(g, 0, {3}, 1000) == small);
+  CHECK(clique_through(g, 0, {5, 2}, 1000) == small);
+  CHECK(clique_through(g, 0, {15}, 1000) == std::vector<int>{0, 1, 2, 3, 15});
+  // Anchors that are not adjacent: the largest subset that is a clique (here one of them, the
+  // first), ids outside the graph ignored.
+  CHECK(clique_through(g, 0, {3, 8, 99, -1}, 1000) == small);
+  CHECK(clique_through(g, 0, {8, 3}, 1000).size() == 9u);
+  CHECK(clique_through(g, 0, {99}, 1000).empty());
+  CHECK(is_clique(g, 0, clique_through(g, 0, {15, 5}, 1000)));
+}

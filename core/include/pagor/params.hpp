@@ -671,8 +671,9 @@ struct AcceptanceParams {
     v(&AcceptanceParams::max_ambiguity,
       {"max_ambiguity",
        "The largest ratio of points only a distinct alternative pose aligns (another level's, the "
-       "pose turned 180 degrees, moved by a repetition of the scene) to points only the selected "
-       "pose aligns, 10 added to each; 10 or more: off.",
+       "pose turned 180 degrees, moved by a repetition of the scene, the pose a class seen once "
+       "on each side fixes) to points only the selected pose aligns, 10 added to each; 10 or "
+       "more: off.",
        "", Range::closed(0, 1e6)});
     v(&AcceptanceParams::distinct_translation,
       {"distinct_translation",

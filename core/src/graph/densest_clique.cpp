@@ -402,6 +402,61 @@ CliqueResult settle_level(const PyramidGraph& g, CliqueResult r, const CliquePar
   return r;
 }
 
+std::vector<int> clique_through(const PyramidGraph& g, int level, const std::vector<int>& anchors,
+                                long max_nodes) {
+  std::vector<int> valid;
+  for (int a : anchors)
+    if (a >= 0 && a < g.vertices && std::find(valid.begin(), valid.end(), a) == valid.end())
+      valid.push_back(a);
+  if (valid.empty()) return {};
+  // The largest subset of the anchors that is a clique: every subset of a few, else greedily in
+  // their order.
+  std::vector<int> chosen;
+  const auto subset_clique = [&](const std::vector<int>& s) {
+    for (std::size_t i = 0; i < s.size(); ++i)
+      for (std::size_t j = i + 1; j < s.size(); ++j)
+        if (!g.adjacent(s[i], s[j], level)) return false;
+    return true;
+  };
+  if (valid.size() <= 12) {
+    const unsigned all = 1u << valid.size();
+    for (unsigned mask = 1; mask < all; ++mask) {
+      if (__builtin_popcount(mask) <= static_cast<int>(chosen.size())) continue;
+      std::vector<int> s;
+      for (std::size_t i = 0; i < valid.size(); ++i)
+        if (mask & (1u << i)) s.push_back(valid[i]);
+      if (subset_clique(s)) chosen = std::move(s);
+    }
+  } else {
+    for (int a : valid) {
+      chosen.push_back(a);
+      if (!subset_clique(chosen)) chosen.pop_back();
+    }
+  }
+  // Their common neighbours at this level, and a maximum clique among them.
+  std::vector<int> count(static_cast<std::size_t>(g.vertices), 0);
+  const detail::PyramidLevel view{g, level};
+  for (int a : chosen)
+    view.for_each_neighbor(a, [&](int w) { ++count[static_cast<std::size_t>(w)]; });
+  std::vector<int> common;
+  for (int v = 0; v < g.vertices; ++v)
+    if (count[static_cast<std::size_t>(v)] == static_cast<int>(chosen.size())) common.push_back(v);
+  std::vector<int> out = chosen;
+  if (!common.empty()) {
+    std::vector<int> local(static_cast<std::size_t>(g.vertices), -1);
+    const detail::BitGraph sub = detail::induce_bits(g, level, common, local);
+    detail::SearchBudget budget;
+    budget.max_nodes = max_nodes > 0 ? max_nodes : -1;
+    bool complete = true;
+    int bound = 0;
+    std::vector<int> found = detail::max_clique_bits(sub, 0, budget, complete, bound);
+    if (found.empty()) found = detail::greedy_clique_bits(sub, 8);  // the budget ran out at once
+    for (int k : found) out.push_back(common[static_cast<std::size_t>(k)]);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
 std::vector<CliqueResult> solve_pyramid(const PyramidGraph& g, const CliqueParams& p,
                                         Deadline deadline, int threads) {
   const auto t0 = Clock::now();

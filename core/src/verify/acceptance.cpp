@@ -149,8 +149,8 @@ std::string candidate_name(std::size_t level, const Transform& T, const Transfor
 void judge_ambiguity(Acceptance& a, const Verifier& verifier,
                      const std::vector<PoseEstimate>& candidates, const VerificationResult& v,
                      const std::vector<char>& counts, const std::vector<char>* furniture, double mu,
-                     const EvaluationParams& distinct, const AcceptanceParams& params,
-                     int threads) {
+                     const EvaluationParams& distinct, const AcceptanceParams& params, int threads,
+                     const std::vector<NamedPose>& more) {
   const auto sel = static_cast<std::size_t>(v.selected);
   AmbiguityInput in;
   in.verifier = &verifier;
@@ -190,6 +190,10 @@ void judge_ambiguity(Acceptance& a, const Verifier& verifier,
       others.push_back(candidates[i].T_target_source);
       names.push_back(candidate_name(i, others.back(), in.T_selected, distinct));
     }
+  for (const NamedPose& m : more) {
+    others.push_back(m.T_target_source);
+    names.push_back(m.description);
+  }
   a.alternative = find_best_alternative(in, others, names);
   a.ambiguity = a.alternative.ratio;
   AcceptanceTest& t = a.tests.back();
@@ -214,7 +218,8 @@ Acceptance judge_selection(const Verifier& verifier, const std::vector<PoseEstim
                            const VerificationResult& verification,
                            const VerificationParams& verification_params,
                            const AcceptanceParams& params, PoseModel model, int threads,
-                           const std::vector<char>* furniture, bool adopting) {
+                           const std::vector<char>* furniture, bool adopting,
+                           const std::vector<NamedPose>& more_alternatives) {
   const EvaluationParams distinct = params.distinct();  // what counts as another answer
   Acceptance a;
   if (verification.selected < 0) {
@@ -251,7 +256,7 @@ Acceptance judge_selection(const Verifier& verifier, const std::vector<PoseEstim
   }
   if (seek && params.max_ambiguity < kAmbiguityOff)
     judge_ambiguity(a, verifier, candidates, verification, counts, furniture,
-                    verification_params.mu, distinct, params, threads);
+                    verification_params.mu, distinct, params, threads, more_alternatives);
   a.accepted = a.reason.empty();
   return a;
 }

@@ -157,4 +157,13 @@ double settle_selection(const PyramidGraph& graph, std::vector<CliqueResult>& cl
 /// Whether every pair of `vertices` is adjacent at `level`.
 bool is_clique(const PyramidGraph& graph, int level, const std::vector<int>& vertices);
 
+/// A largest clique of `level` through `anchors`: the largest subset of them that is a clique
+/// there (the first such in their order), with a maximum clique of that subset's common
+/// neighbours, the search bounded by `max_nodes` (then its best clique). Sorted; empty when no
+/// anchor is a vertex of the graph. A correspondence seen once on each side (a car, a sign) fixes
+/// which repetition of a corridor or a street a pose takes, where the densest clique can sit on a
+/// whole period's worth of identical pillars instead (Pipeline::anchored_alternatives).
+std::vector<int> clique_through(const PyramidGraph& graph, int level,
+                                const std::vector<int>& anchors, long max_nodes);
+
 }  // namespace pagor

@@ -23,7 +23,9 @@
 ///   clouds' occupancy agrees best, which is where a repetition period shows; such a shift is
 ///   also tried moved across its axis, by up to twice distinct_translation, to where the occupancy
 ///   agrees best (against a plan every one, a scan the two most rivalling), and the two most
-///   rivalling then moved to their best ratio (verify/ambiguity.cpp). A corridor
+///   rivalling then moved to their best ratio (verify/ambiguity.cpp); and, from the pipeline, the
+///   pose the pair's unique landmarks fix (a class with one landmark on each side: its
+///   correspondence and the largest clique through it, Pipeline::anchored_alternatives). A corridor
 ///   of pillars, a street of identical facades, a symmetric hall: a pose off by whole periods, or
 ///   turned, fits as well as the right one.
 /// The pose is accepted when every measure reaches its threshold; a pose resting on the minimal
@@ -67,6 +69,13 @@ struct AcceptanceAlternative {
   /// the disagreeing structure points behind the ratio: those only the alternative aligns, and
   /// those only the selected pose aligns
   std::size_t only_alternative = 0, only_selected = 0;
+};
+
+/// A pose the ambiguity test weighs beside the other levels' candidates and the repetitions it
+/// finds, with what it is in words (Pipeline: the pose the pair's unique landmarks fix).
+struct NamedPose {
+  Transform T_target_source = Transform::Identity();
+  std::string description;  ///< "the pose its unique landmarks fix (car, traffic-sign; ...)"
 };
 
 /// The ambiguity's alternative taken in place of the selected pose (AcceptanceParams::
@@ -117,11 +126,13 @@ struct Acceptance {
 /// against a pose that puts them on the plan's walls or columns. `adopting`: the selection is an
 /// alternative being adopted (AcceptanceAdoption) that fitted decisively better than the candidates
 /// of lower D where the clouds overlap; the D margin is not taken (the ambiguity test judges it
-/// against every candidate on the points both see).
+/// against every candidate on the points both see). `more_alternatives`: poses the ambiguity test
+/// also weighs (those within the distinct distance of the selection are not distinct).
 Acceptance judge_selection(const Verifier& verifier, const std::vector<PoseEstimate>& candidates,
                            const VerificationResult& verification,
                            const VerificationParams& verification_params,
                            const AcceptanceParams& params, PoseModel model, int threads = 1,
-                           const std::vector<char>* furniture = nullptr, bool adopting = false);
+                           const std::vector<char>* furniture = nullptr, bool adopting = false,
+                           const std::vector<NamedPose>& more_alternatives = {});
 
 }  // namespace pagor
