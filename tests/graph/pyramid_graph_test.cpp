@@ -176,6 +176,39 @@ TEST_CASE("large and far-flung graphs (tiled placement, the exact path) equal th
   }
 }
 
+TEST_CASE("the edges' TRIM values are kept for the gaussian affinity alone, as the definition") {
+  // A builder alternating the affinities (its scratch keeps or drops the values), on 1 and 3
+  // threads: under the binary affinity no value is kept, under the gaussian every edge's is its
+  // TRIM in single precision, in both rows.
+  const auto c = random_correspondences(1500, 31);
+  PyramidGraphBuilder builder;
+  for (const AffinityKind affinity :
+       {AffinityKind::gaussian, AffinityKind::binary, AffinityKind::gaussian}) {
+    for (const int threads : {1, 3}) {
+      GraphParams p;
+      p.affinity = affinity;
+      const PyramidGraph& g = builder.build(c, p, threads);
+      CAPTURE(to_string(affinity), threads);
+      REQUIRE(g.edges_at_level.back() > 0);
+      if (affinity == AffinityKind::binary) {
+        CHECK(g.trim.empty());
+        continue;
+      }
+      REQUIRE(g.trim.size() == g.neighbors.size());
+      for (int v = 0; v < g.vertices; ++v)
+        for (auto e = static_cast<std::size_t>(g.offsets[static_cast<std::size_t>(v)]);
+             e < static_cast<std::size_t>(g.offsets[static_cast<std::size_t>(v) + 1]); ++e) {
+          const auto& a = c[static_cast<std::size_t>(v)];
+          const auto& b = c[static_cast<std::size_t>(g.neighbors[e])];
+          const float want =
+              static_cast<float>(trim_value(p.trim, (a.p - b.p).norm(), (a.q - b.q).norm()));
+          if (g.trim[e] != want) FAIL("edge " << v << ", " << g.neighbors[e] << ": " << g.trim[e]);
+        }
+      check_same_graph(g, build_pyramid_graph(c, p, 1));
+    }
+  }
+}
+
 TEST_CASE("gaussian affinities fall with the TRIM and vanish above the level") {
   std::vector<Correspondence> c(3);
   c[0] = {0, 0, 0, {0, 0, 0}, {0, 0, 0}, 1};

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 #include <thread>
 #include <utility>
 
@@ -20,24 +22,38 @@
 namespace pagor {
 namespace {
 
-// Edge (i, j), i < j, kept in row i's run of its pass: row i is known from where the run starts.
-struct Edge {
-  int j;
-  float trim;
-  std::uint8_t level;
-};
+// Edge (i, j), i < j, kept in row i's run of its pass (row i is known from where the run starts):
+// j in the low 24 bits, the edge's lowest level in the high 8. Four bytes an edge, and its TRIM
+// value beside it only where the affinity needs it: a dense build's scratch is megabytes, and on
+// its first build in a process each page of it is a fault (dear in a virtual machine).
+using Edge = std::uint32_t;
+constexpr int kEdgeLevelShift = 24;
+constexpr Edge kEdgeVertexMask = (Edge(1) << kEdgeLevelShift) - 1;
+inline Edge edge(int j, int level) {
+  return static_cast<Edge>(j) | static_cast<Edge>(level) << kEdgeLevelShift;
+}
+inline int edge_vertex(Edge e) {
+  return static_cast<int>(e & kEdgeVertexMask);
+}
+inline std::uint8_t edge_level(Edge e) {
+  return static_cast<std::uint8_t>(e >> kEdgeLevelShift);
+}
 
 // One thread's share of the edge pass: the edges (i, j), i < j, of rows [first, first + rows), in
 // (i, j) order, where each row's run starts, and how many edges each vertex gets as the higher end.
 struct EdgeRows {
   detail::UninitVector<Edge> edges;
+  detail::UninitVector<float> trims;  // each edge's TRIM value; empty unless `with_trims`
+  bool with_trims = false;
   std::vector<std::size_t> starts;  // row first + r's edges are [starts[r], starts[r + 1])
   std::vector<int> lower;           // per vertex v: edges (i, v), i < v, in these rows
   int first = 0;
 
   /// Empty, for rows from `first_row` on of a graph of m vertices (storage kept).
-  void reset(int m, int first_row) {
+  void reset(int m, int first_row, bool trims_too) {
     edges.clear();
+    trims.clear();
+    with_trims = trims_too;
     starts.clear();
     lower.assign(static_cast<std::size_t>(m), 0);
     first = first_row;
@@ -96,7 +112,8 @@ inline void exact_pair(const Packed& c, const GraphParams& params, int i, int j,
   const double tv = trim_value(params.trim, std::sqrt(a2), std::sqrt(b2));
   if (!(tv <= eps.back())) return;
   const auto level = std::lower_bound(eps.begin(), eps.end(), tv) - eps.begin();
-  out.edges.push_back({j, static_cast<float>(tv), static_cast<std::uint8_t>(level)});
+  out.edges.push_back(edge(j, static_cast<int>(level)));
+  if (out.with_trims) out.trims.push_back(static_cast<float>(tv));
   ++out.lower[sj];
 }
 
@@ -203,17 +220,21 @@ PAGOR_AVX2_CLONES void exact_block(const Packed& c, const GraphParams& params, i
   int* const lower = rows.lower.data();
   const std::size_t base = out.size();
   out.resize(base + static_cast<std::size_t>(k));
+  if (rows.with_trims) rows.trims.resize(base + static_cast<std::size_t>(k));
   Edge* e = out.data() + base;
+  float* const tr = rows.with_trims ? rows.trims.data() + base : nullptr;
   int kept = 0;
   for (int t = 0; t < k; ++t) {
     if (!ok[t]) continue;
     const int j = keep[t];
     const auto sj = static_cast<std::size_t>(j);
     if (s == c.source[sj] || tg == c.target[sj]) continue;  // one landmark, two roles
-    e[kept++] = {j, static_cast<float>(tv[t]), lvl[t]};
+    if (tr) tr[kept] = static_cast<float>(tv[t]);
+    e[kept++] = edge(j, lvl[t]);
     ++lower[sj];
   }
   out.resize(base + static_cast<std::size_t>(kept));
+  if (tr) rows.trims.resize(base + static_cast<std::size_t>(kept));
 }
 
 // Appends the edges (i, j), i < j, for i in [begin, end), in increasing (i, j) order, to `out`
@@ -313,6 +334,12 @@ void build_into(const std::vector<Correspondence>& c, const GraphParams& params,
   g.sigma_ratio = params.sigma_ratio;
   g.edges_at_level.assign(params.thresholds.size(), 0);
   g.offsets.assign(c.size() + 1, 0);
+  // An edge keeps its other end in 24 bits; a graph of more vertices would have ~1.4e14 pairs.
+  if (c.size() > kEdgeVertexMask)
+    throw std::length_error("a consistency graph of " + std::to_string(c.size()) +
+                            " correspondences: at most 16,777,215");
+  // The edges' TRIM values only where the affinity weighs them.
+  const bool with_trims = params.affinity != AffinityKind::binary;
 
   // Rows are split so that each thread gets about the same number of pairs.
   const int m = g.vertices;
@@ -331,13 +358,13 @@ void build_into(const std::vector<Correspondence>& c, const GraphParams& params,
   std::vector<EdgeRows>& parts = scratch.parts;
   parts.resize(static_cast<std::size_t>(threads));
   for (int t = 0; t < threads; ++t)
-    parts[static_cast<std::size_t>(t)].reset(m, bounds[static_cast<std::size_t>(t)]);
+    parts[static_cast<std::size_t>(t)].reset(m, bounds[static_cast<std::size_t>(t)], with_trims);
   const Packed packed(c);
   // Room for the edges, estimated on a sample of rows (growing the lists copies them; small
   // graphs grow cheaply, and the sample would cost more than it saves).
   if (m >= 512) {
     EdgeRows& sample = scratch.sample;
-    sample.reset(m, 0);
+    sample.reset(m, 0, false);
     const int step = std::max(1, m / 32);
     double sampled_pairs = 0;
     for (int i = 0; i < m; i += step) {
@@ -379,7 +406,10 @@ void build_into(const std::vector<Correspondence>& c, const GraphParams& params,
   };
   room(g.neighbors);
   room(g.level);
-  room(g.trim);
+  if (with_trims)
+    room(g.trim);
+  else
+    g.trim.clear();
   std::vector<std::int64_t>& fill = scratch.fill;
   fill.assign(g.offsets.begin(), g.offsets.end() - 1);
   // Row i's run is copied after its lower neighbours, and each of its edges (i, j) is placed in row
@@ -393,7 +423,7 @@ void build_into(const std::vector<Correspondence>& c, const GraphParams& params,
   std::int64_t* const next = fill.data();
   int* const neighbors = g.neighbors.data();
   std::uint8_t* const levels = g.level.data();
-  float* const trims = g.trim.data();
+  float* const trims = with_trims ? g.trim.data() : nullptr;
   const std::int64_t* const offsets = g.offsets.data();
   std::size_t cursor[kRows];
   for (const EdgeRows& part : parts) {
@@ -407,9 +437,9 @@ void build_into(const std::vector<Correspondence>& c, const GraphParams& params,
         const std::size_t n = part.starts[r + 1] - part.starts[r];
         const auto higher = static_cast<std::size_t>(offsets[i + 1]) - n;
         for (std::size_t t = 0; t < n; ++t) {
-          neighbors[higher + t] = run[t].j;
-          levels[higher + t] = run[t].level;
-          trims[higher + t] = run[t].trim;
+          neighbors[higher + t] = edge_vertex(run[t]);
+          levels[higher + t] = edge_level(run[t]);
+          if (trims) trims[higher + t] = part.trims[part.starts[r] + t];
         }
         count_levels(levels + higher, n, g.edges_at_level);
         cursor[r - r0] = part.starts[r];
@@ -420,11 +450,11 @@ void build_into(const std::vector<Correspondence>& c, const GraphParams& params,
           const int i = part.first + static_cast<int>(r);
           std::size_t e = cursor[r - r0];
           const std::size_t end = part.starts[r + 1];
-          for (; e < end && edges[e].j < tile_end; ++e) {
-            const auto k = static_cast<std::size_t>(next[edges[e].j]++);
+          for (; e < end && edge_vertex(edges[e]) < tile_end; ++e) {
+            const auto k = static_cast<std::size_t>(next[edge_vertex(edges[e])]++);
             neighbors[k] = i;
-            levels[k] = edges[e].level;
-            trims[k] = edges[e].trim;
+            levels[k] = edge_level(edges[e]);
+            if (trims) trims[k] = part.trims[e];
           }
           cursor[r - r0] = e;
         }

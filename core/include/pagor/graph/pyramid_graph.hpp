@@ -23,10 +23,12 @@ struct PyramidGraph {
   AffinityKind affinity = AffinityKind::binary;
   double sigma_ratio = 0.5;  ///< gaussian: sigma = sigma_ratio * epsilon_l
 
-  std::vector<std::int64_t> offsets;        ///< vertex v's edges are [offsets[v], offsets[v+1])
-  std::vector<int> neighbors;               ///< other end of each directed edge
-  std::vector<std::uint8_t> level;          ///< lowest level at which the edge exists
-  std::vector<float> trim;                  ///< TRIM value of the edge
+  std::vector<std::int64_t> offsets;  ///< vertex v's edges are [offsets[v], offsets[v+1])
+  std::vector<int> neighbors;         ///< other end of each directed edge
+  std::vector<std::uint8_t> level;    ///< lowest level at which the edge exists
+  /// TRIM value of each edge, for the gaussian affinity's weights; empty under the binary
+  /// affinity, which needs none (a dense graph's megabytes)
+  std::vector<float> trim;
   std::vector<std::size_t> edges_at_level;  ///< undirected edges present at each level
   double time_ms = 0.0;                     ///< construction wall time [ms]
 
