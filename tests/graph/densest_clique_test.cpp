@@ -588,3 +588,24 @@ TEST_CASE("a clique through anchors: the largest that holds them, not the graph'
   CHECK(clique_through(g, 0, {99}, 1000).empty());
   CHECK(is_clique(g, 0, clique_through(g, 0, {15, 5}, 1000)));
 }
+
+TEST_CASE("above a level its probe could not settle, a level gets the colouring's proof alone") {
+  // Level 0 dense (half of all pairs), too hard for a probe of 1,000 nodes; level 1 adds a
+  // planted clique of 40 that such a probe finds there (and proves) when it runs. The first pass
+  // leaves level 0 unsettled and gives level 1 no search: it keeps level 0's clique grown,
+  // unsettled too; settling it finds the planted clique.
+  const PyramidGraph g = two_levels(300, 40, 0.5, 0.6, 5, 1);
+  CliqueParams cp;
+  cp.prove_first_min_edges = 0;
+  cp.probe_nodes = 1000;
+  const auto first = solve_pyramid(g, cp);
+  REQUIRE(first.size() == 2u);
+  CHECK(first[0].budget == CliqueBudget::probe);
+  CHECK(first[1].budget == CliqueBudget::probe);
+  CHECK(first[1].vertices.size() < 40u);
+  CHECK(is_clique(g, 1, first[1].vertices));
+  CliqueResult s = first[1];
+  while (!s.settled) s = settle_level(g, s, cp);
+  CHECK(s.vertices.size() >= 40u);
+  CHECK(is_clique(g, 1, s.vertices));
+}
