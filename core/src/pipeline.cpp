@@ -396,18 +396,19 @@ void Pipeline::judge_acceptance() {
     verification.scores[sel] = refinement_.score_after;
     verification.selected_distances = refinement_.distances_after;
   }
-  const std::vector<NamedPose> anchored =
-      verification.selected >= 0
-          ? anchored_alternatives(
-                candidates[static_cast<std::size_t>(verification.selected)].T_target_source)
-          : std::vector<NamedPose>{};
+  // The unique landmarks' poses, searched once and only if an ambiguity test asks for them.
+  std::optional<std::vector<NamedPose>> found;
+  const std::function<std::vector<NamedPose>()> anchored = [&] {
+    if (!found) found = anchored_alternatives();
+    return *found;
+  };
   acceptance_ =
       judge_selection(*verifier_, candidates, verification, config_.verification,
                       config_.acceptance, model, threads_now(), on_furniture, false, anchored);
   adopt_alternative(std::move(candidates), std::move(verification), on_furniture, anchored);
 }
 
-std::vector<NamedPose> Pipeline::anchored_alternatives(const Transform& selected) const {
+std::vector<NamedPose> Pipeline::anchored_alternatives() const {
   std::vector<NamedPose> out;
   const PyramidGraph& g = graph_.graph();
   const std::vector<Correspondence>& items = correspondences_.items;
@@ -416,7 +417,6 @@ std::vector<NamedPose> Pipeline::anchored_alternatives(const Transform& selected
   const auto& sc = source_landmarks_.classes;
   const auto& tc = target_landmarks_.classes;
   std::vector<int> anchors;
-  std::string names;
   for (std::size_t k = 0; k < sc.size() && k < tc.size(); ++k) {
     if (sc[k].method != LandmarkMethod::cluster || sc[k].landmarks != 1 || tc[k].landmarks != 1)
       continue;
@@ -427,7 +427,6 @@ std::vector<NamedPose> Pipeline::anchored_alternatives(const Transform& selected
         found = static_cast<int>(i), ++seen;
     if (seen != 1) continue;
     anchors.push_back(found);
-    names += (names.empty() ? "" : ", ") + sc[k].name;
   }
   if (anchors.empty()) return out;
   const GncParams gnc = gnc_params();
@@ -442,11 +441,22 @@ std::vector<NamedPose> Pipeline::anchored_alternatives(const Transform& selected
     });
     if (again) continue;
     kept.push_back(pose.T_target_source);
-    const PoseError e = pose_error(pose.T_target_source, selected, distinct);
-    char buf[160];
-    std::snprintf(buf, sizeof(buf), "; %zu correspondences at level %d; %.1f m, %.0f deg away)",
-                  members.size(), l, e.translation, e.rotation_deg);
-    out.push_back({pose.T_target_source, "the pose its unique landmarks fix (" + names + buf});
+    // The classes of the anchors the clique holds (a subset when they disagree), three named.
+    std::string names;
+    int named = 0, more = 0;
+    for (int a : anchors) {
+      if (!std::binary_search(members.begin(), members.end(), a)) continue;
+      if (named == 3) {
+        ++more;
+        continue;
+      }
+      names += (named++ ? ", " : "") +
+               correspondence_class_name(items[static_cast<std::size_t>(a)], source_landmarks_);
+    }
+    if (more) names += " and " + std::to_string(more) + " more";
+    out.push_back({pose.T_target_source, "the pose its unique landmarks fix",
+                   names + "; " + std::to_string(members.size()) + " correspondences at level " +
+                       std::to_string(l)});
   }
   return out;
 }
@@ -454,7 +464,7 @@ std::vector<NamedPose> Pipeline::anchored_alternatives(const Transform& selected
 void Pipeline::adopt_alternative(std::vector<PoseEstimate> candidates,
                                  VerificationResult verification,
                                  const std::vector<char>* furniture,
-                                 const std::vector<NamedPose>& anchored) {
+                                 const std::function<std::vector<NamedPose>()>& anchored) {
   const AcceptanceParams& params = config_.acceptance;
   const AcceptanceAlternative& alt = acceptance_.alternative;
   // Overturning the selection asks the evidence to be decisive twice over: the alternative must

@@ -587,6 +587,27 @@ TEST_CASE("a clique through anchors: the largest that holds them, not the graph'
   CHECK(clique_through(g, 0, {8, 3}, 1000).size() == 9u);
   CHECK(clique_through(g, 0, {99}, 1000).empty());
   CHECK(is_clique(g, 0, clique_through(g, 0, {15, 5}, 1000)));
+  // No search (0 nodes): the greedy clique among the common neighbours, still through the anchor.
+  const std::vector<int> greedy = clique_through(g, 0, {3}, 0);
+  CHECK(is_clique(g, 0, greedy));
+  CHECK(std::binary_search(greedy.begin(), greedy.end(), 3));
+  // More than 12 anchors: kept in their order while they stay a clique.
+  CHECK(clique_through(g, 0, {6, 7, 8, 9, 10, 11, 12, 13, 14, 0, 1, 2, 3}, 1000).size() == 9u);
+}
+
+TEST_CASE("a clique through anchors on a level above the first, within a small budget") {
+  // Level 1 holds a planted clique of 40 (from level 1 on) among 300 vertices; through one of its
+  // members the search finds it, also with a budget too small for the whole graph's proof, and
+  // never returns less than a clique through the anchor.
+  const PyramidGraph g = two_levels(300, 40, 0.05, 0.3, 7, 1);
+  for (const long budget : {0L, 50L, 100000L}) {
+    const std::vector<int> c = clique_through(g, 1, {5}, budget);
+    CAPTURE(budget, c.size());
+    CHECK(is_clique(g, 1, c));
+    CHECK(std::binary_search(c.begin(), c.end(), 5));
+    if (budget == 100000) CHECK(c.size() >= 40u);
+  }
+  CHECK(clique_through(g, 0, {5}, 100000).size() < 40u);  // level 0 has no such clique
 }
 
 TEST_CASE("above a level its probe could not settle, a level gets the colouring's proof alone") {

@@ -474,6 +474,80 @@ TEST_CASE("an alternative not trusted once refitted leaves the selection as it w
   CHECK(p.selected_transform()->isApprox(p.refinement().applied ? p.refinement().T_after : level));
 }
 
+TEST_CASE("a right pose that fails only the D margin keeps the margin's reason, searched") {
+  // Facades with a car and a sign, seed 4 (labelled): the selected pose is right and fails only
+  // the D margin (level 2's pose, turned, scores close). Its ambiguity is searched all the same,
+  // for an adoption; no alternative fits decisively better, so nothing is adopted and the reason
+  // stays the margin's.
+  Pipeline p;
+  run_scene(p, SelfSimilarKind::facades, 4, true);
+  const Acceptance& a = p.acceptance();
+  INFO(a.reason);
+  CHECK(p.selected_error()->success);
+  CHECK_FALSE(a.accepted);
+  CHECK_FALSE(a.adopted.applied);
+  CHECK_THAT(a.reason, Catch::StartsWith("D margin"));
+  REQUIRE(a.tests.size() == 6u);
+  CHECK(a.tests[5].applies);
+  CHECK(a.tests[5].value == a.ambiguity);
+  CHECK(a.ambiguity * AcceptanceParams{}.max_ambiguity < 1.0);  // not decisive
+  CHECK_FALSE(a.alternative.description.empty());
+}
+
+TEST_CASE("poses the caller adds are weighed as alternatives, named with their distance") {
+  // A corridor with objects at its true pose: a caller's pose a period on rivals it as the
+  // scene's own repetitions do, and is named with how far it is; one within the distinct
+  // distance is the same answer and is not weighed. The caller's function runs only when the
+  // ambiguity test does.
+  const SelfSimilarScene s = self_similar(SelfSimilarKind::corridor, false);
+  const Transform truth = s.T_target_source;
+  const Config c = default_config();
+  const Verifier verifier(s.source, s.target, c.verification.voxel_size);
+  std::vector<PoseEstimate> candidates(1);
+  candidates[0].valid = true;
+  candidates[0].T_target_source = truth;
+  candidates[0].inliers = {0, 1, 2, 3, 4, 5};
+  VerificationResult v;
+  v.selected = 0;
+  v.scores = {
+      verifier.score(truth, c.verification.mu, ScoreKind::truncated, 1, &v.selected_distances)};
+  v.distance_bound = static_cast<float>(c.verification.mu);
+  AcceptanceParams params = ambiguity_only();
+  params.ambiguity_range = 0;  // no repetition searched: the caller's poses alone
+  int calls = 0;
+  Transform near = truth;
+  near(0, 3) += 0.3;
+  const auto only_near = [&] {
+    ++calls;
+    return std::vector<NamedPose>{{near, "a pose nearby", "test"}};
+  };
+  const Acceptance same = judge_selection(verifier, candidates, v, c.verification, params,
+                                          PoseModel::se3, 1, nullptr, false, only_near);
+  CHECK(calls == 1);
+  CHECK(same.alternative.description.find("a pose nearby") == std::string::npos);
+  // A period along the corridor (its pillars every 3-8 m: the scene's own shift that rivals most).
+  const Acceptance searched = judge_pose(s, truth, ambiguity_only());
+  REQUIRE_FALSE(searched.alternative.description.empty());
+  const Transform rival = searched.alternative.T_target_source;
+  const Acceptance a = judge_selection(
+      verifier, candidates, v, c.verification, params, PoseModel::se3, 1, nullptr, false, [&] {
+        return std::vector<NamedPose>{{rival, "the rival", "from the caller"}};
+      });
+  INFO(a.reason);
+  CHECK_THAT(a.alternative.description, Catch::StartsWith("the rival (from the caller; "));
+  CHECK_THAT(a.alternative.description, Catch::EndsWith(" deg away)"));
+  CHECK(a.ambiguity == Approx(searched.ambiguity));
+  CHECK_FALSE(a.accepted);
+  // Not called where the ambiguity test does not run (an earlier test failed, adoption off).
+  AcceptanceParams blunt = params;
+  blunt.min_inliers = 100;
+  blunt.adopt_alternative = false;
+  calls = 0;
+  judge_selection(verifier, candidates, v, c.verification, blunt, PoseModel::se3, 1, nullptr, false,
+                  only_near);
+  CHECK(calls == 0);
+}
+
 TEST_CASE("a pose that fails only the D margin still has its ambiguity searched for an adoption") {
   // Corridor with a car, a sign and a bench, seed 1 (labelled): the selected pose, two periods
   // off, fails only the D margin. The rival an adoption would take is searched all the same: the

@@ -434,9 +434,10 @@ struct CliqueParams {
       {"settle_selected",
        "Cascaded: spend the relaxation of a level its bounded proof cannot settle, the full "
        "search (cascade_check_nodes) and the cold-start fallback only where they decide the "
-       "result. A first pass gives every level's searches probe_nodes; a level they leave "
-       "unproven keeps their clique (improved by swaps), with no relaxation and no fallback, and "
-       "the levels above it (denser graphs holding its) get the colouring's proof alone. The "
+       "result. A first pass gives each level's bounded searches probe_nodes, up to the first "
+       "level they leave unproven: that level keeps their clique (improved by swaps), with no "
+       "relaxation and no fallback, and the levels above it (denser graphs holding its) get the "
+       "colouring's proof alone. The "
        "level the selection picks, if unsettled and its pose not the same answer as a settled "
        "level's (acceptance.distinct_*: a heuristic, settling would seldom change that answer), "
        "then takes the relaxation, and if still selected the search and the fallback, as the "
@@ -445,8 +446,10 @@ struct CliqueParams {
     v(&CliqueParams::probe_nodes,
       {"probe_nodes",
        "settle_selected: node budget of each bounded search in the first pass (the proof of a "
-       "level's lower bound), up to the first level it leaves unproven; a level left unproven has "
-       "budget 'probe' unless it is selected and settled.",
+       "level's lower bound, the search after its relaxation), up to the first level left "
+       "unproven; a level left unproven has budget 'probe' unless it is selected and settled. "
+       "Also the budget of the search for the largest clique through the pair's unique "
+       "landmarks (an alternative the verdict weighs).",
        "", Range::closed(0, 1e10), std::numeric_limits<double>::quiet_NaN(), true});
   }
 };

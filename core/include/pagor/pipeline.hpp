@@ -175,15 +175,14 @@ class Pipeline {
   void warn_if_numbering_unsure();
   void judge_acceptance();
   // The poses the pair's unique landmarks fix (a class with one landmark on each side), one per
-  // distinct answer the levels' graphs give, for the ambiguity test to weigh; `selected`: the
-  // pose judged, to say how far each is from it.
-  std::vector<NamedPose> anchored_alternatives(const Transform& selected) const;
+  // distinct answer the levels' graphs give, for the ambiguity test to weigh.
+  std::vector<NamedPose> anchored_alternatives() const;
   // Takes the ambiguity's alternative in place of the selection where it fits decisively better and
   // the verdict accepts it refitted (AcceptanceParams::adopt_alternative); `candidates` and
   // `verification` are those the verdict judged.
   void adopt_alternative(std::vector<PoseEstimate> candidates, VerificationResult verification,
                          const std::vector<char>* furniture,
-                         const std::vector<NamedPose>& anchored);
+                         const std::function<std::vector<NamedPose>()>& anchored);
   /// Calls f(cloud, landmarks) for the source and the target, in parallel with threads > 1.
   template <class F>
   void both_clouds(const F& f);

@@ -441,16 +441,32 @@ std::vector<int> clique_through(const PyramidGraph& g, int level, const std::vec
   std::vector<int> common;
   for (int v = 0; v < g.vertices; ++v)
     if (count[static_cast<std::size_t>(v)] == static_cast<int>(chosen.size())) common.push_back(v);
+  if (common.size() > static_cast<std::size_t>(detail::kMaxLevelBits)) {
+    // Bit rows for at most kMaxLevelBits of them (megabytes otherwise): those with most
+    // neighbours at this level, where a large clique through the anchors lies.
+    const std::vector<int> deg = detail::level_degrees(g, level);
+    std::stable_sort(common.begin(), common.end(), [&](int a, int b) {
+      return deg[static_cast<std::size_t>(a)] > deg[static_cast<std::size_t>(b)];
+    });
+    common.resize(static_cast<std::size_t>(detail::kMaxLevelBits));
+    std::sort(common.begin(), common.end());
+  }
   std::vector<int> out = chosen;
   if (!common.empty()) {
     std::vector<int> local(static_cast<std::size_t>(g.vertices), -1);
     const detail::BitGraph sub = detail::induce_bits(g, level, common, local);
-    detail::SearchBudget budget;
-    budget.max_nodes = max_nodes > 0 ? max_nodes : -1;
-    bool complete = true;
-    int bound = 0;
-    std::vector<int> found = detail::max_clique_bits(sub, 0, budget, complete, bound);
-    if (found.empty()) found = detail::greedy_clique_bits(sub, 8);  // the budget ran out at once
+    std::vector<int> found = detail::greedy_clique_bits(sub, 8);
+    if (max_nodes > 0) {
+      detail::SearchBudget budget;
+      budget.max_nodes = max_nodes;
+      bool complete = true;
+      int bound = 0;
+      // The search's clique where it finds one at least as large as the greedy one within its
+      // budget (a maximum clique when it completes).
+      std::vector<int> searched = detail::max_clique_bits(
+          sub, std::max(0, static_cast<int>(found.size()) - 1), budget, complete, bound);
+      if (searched.size() >= found.size()) found = std::move(searched);
+    }
     for (int k : found) out.push_back(common[static_cast<std::size_t>(k)]);
   }
   std::sort(out.begin(), out.end());

@@ -150,7 +150,7 @@ void judge_ambiguity(Acceptance& a, const Verifier& verifier,
                      const std::vector<PoseEstimate>& candidates, const VerificationResult& v,
                      const std::vector<char>& counts, const std::vector<char>* furniture, double mu,
                      const EvaluationParams& distinct, const AcceptanceParams& params, int threads,
-                     const std::vector<NamedPose>& more) {
+                     const std::function<std::vector<NamedPose>()>& more) {
   const auto sel = static_cast<std::size_t>(v.selected);
   AmbiguityInput in;
   in.verifier = &verifier;
@@ -190,10 +190,14 @@ void judge_ambiguity(Acceptance& a, const Verifier& verifier,
       others.push_back(candidates[i].T_target_source);
       names.push_back(candidate_name(i, others.back(), in.T_selected, distinct));
     }
-  for (const NamedPose& m : more) {
-    others.push_back(m.T_target_source);
-    names.push_back(m.description);
-  }
+  if (more)
+    for (const NamedPose& m : more()) {
+      others.push_back(m.T_target_source);
+      const PoseError e = pose_error(m.T_target_source, in.T_selected, distinct);
+      char buf[64];
+      std::snprintf(buf, sizeof(buf), "%.1f m, %.0f deg away)", e.translation, e.rotation_deg);
+      names.push_back(m.name + " (" + (m.detail.empty() ? "" : m.detail + "; ") + buf);
+    }
   a.alternative = find_best_alternative(in, others, names);
   a.ambiguity = a.alternative.ratio;
   AcceptanceTest& t = a.tests.back();
@@ -219,7 +223,7 @@ Acceptance judge_selection(const Verifier& verifier, const std::vector<PoseEstim
                            const VerificationParams& verification_params,
                            const AcceptanceParams& params, PoseModel model, int threads,
                            const std::vector<char>* furniture, bool adopting,
-                           const std::vector<NamedPose>& more_alternatives) {
+                           const std::function<std::vector<NamedPose>()>& more_alternatives) {
   const EvaluationParams distinct = params.distinct();  // what counts as another answer
   Acceptance a;
   if (verification.selected < 0) {

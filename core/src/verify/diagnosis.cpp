@@ -149,9 +149,12 @@ void diagnose_levels(const DiagnosisInput& in, const Transform& T_gt, const Diag
 
 template <class... Args>
 std::string format(const char* fmt, Args... args) {
-  char buf[240];
-  std::snprintf(buf, sizeof(buf), fmt, args...);
-  return buf;
+  // Measured first: an alternative's description (the classes that fix it) has no set length.
+  const int n = std::max(std::snprintf(nullptr, 0, fmt, args...), 0);
+  std::string out(static_cast<std::size_t>(n) + 1, '\0');
+  std::snprintf(out.data(), out.size(), fmt, args...);
+  out.resize(static_cast<std::size_t>(n));
+  return out;
 }
 
 // Labels that do not fit the scheme in use come before every stage: the landmarks were made of

@@ -38,8 +38,9 @@ enum class CliqueBudget {
   nodes,  ///< a branch-and-bound node budget ran out
   time,   ///< the wall-time budget ran out
   /// not settled (clique.settle_selected): the level's search had the first pass's budget
-  /// (clique.probe_nodes) and it got no full search or fallback; it was not selected (or lost
-  /// after its relaxation), or its pose was the same answer as a settled level's
+  /// (clique.probe_nodes; none, the colouring's proof alone, above a level left unsettled) and it
+  /// got no full search or fallback; it was not selected (or lost after its relaxation), or its
+  /// pose was the same answer as a settled level's
   probe,
 };
 inline constexpr EnumEntry<CliqueBudget> kCliqueBudgets[] = {
@@ -47,7 +48,8 @@ inline constexpr EnumEntry<CliqueBudget> kCliqueBudgets[] = {
     {CliqueBudget::nodes, "nodes", "a node budget ran out"},
     {CliqueBudget::time, "time", "the time budget ran out"},
     {CliqueBudget::probe, "probe",
-     "not settled: the search had clique.probe_nodes; no full search, no fallback"},
+     "not settled: the first pass's search only (clique.probe_nodes); no full search, no "
+     "fallback"},
 };
 inline const auto& enum_entries(CliqueBudget) {
   return kCliqueBudgets;
@@ -107,7 +109,8 @@ CliqueResult exact_max_clique(const PyramidGraph& graph, int level, const Clique
 
 /// One clique per level, in level order, with the solver `params.solver` selects. Cascaded with
 /// `params.settle_selected`, this is a first pass: each level's bounded searches get
-/// `params.probe_nodes`, a level whose bounded proof fails keeps that search's clique without
+/// `params.probe_nodes` up to the first level they leave unproven, and the levels above it the
+/// colouring's proof alone; a level whose bounded proof fails keeps that search's clique without
 /// its relaxation (`relaxed` false), no cold-start fallback runs, and a level left unproven is
 /// not `settled` (budget `probe`): settle_selection finishes the one the selection picks. After
 /// `deadline` every search stops with the best clique it has (a level not yet started keeps its
@@ -159,10 +162,12 @@ bool is_clique(const PyramidGraph& graph, int level, const std::vector<int>& ver
 
 /// A largest clique of `level` through `anchors`: the largest subset of them that is a clique
 /// there (the first such in their order), with a maximum clique of that subset's common
-/// neighbours, the search bounded by `max_nodes` (then its best clique). Sorted; empty when no
-/// anchor is a vertex of the graph. A correspondence seen once on each side (a car, a sign) fixes
-/// which repetition of a corridor or a street a pose takes, where the densest clique can sit on a
-/// whole period's worth of identical pillars instead (Pipeline::anchored_alternatives).
+/// neighbours, searched within `max_nodes` (when it runs out, the larger of its best clique and a
+/// greedy one; 0: the greedy one alone) among the 8,192 of them with most neighbours there.
+/// Sorted; empty when no anchor is a vertex of the graph. A correspondence seen once on each side
+/// (a car, a sign) fixes which repetition of a corridor or a street a pose takes, where the densest
+/// clique can sit on a whole period's worth of identical pillars instead
+/// (Pipeline::anchored_alternatives).
 std::vector<int> clique_through(const PyramidGraph& graph, int level,
                                 const std::vector<int>& anchors, long max_nodes);
 

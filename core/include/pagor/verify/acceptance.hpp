@@ -31,6 +31,7 @@
 /// The pose is accepted when every measure reaches its threshold; a pose resting on the minimal
 /// number of inliers for its model must reach the higher `minimal_support_overlap`.
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -72,10 +73,12 @@ struct AcceptanceAlternative {
 };
 
 /// A pose the ambiguity test weighs beside the other levels' candidates and the repetitions it
-/// finds, with what it is in words (Pipeline: the pose the pair's unique landmarks fix).
+/// finds, with what it is in words (Pipeline: the pose the pair's unique landmarks fix). Named as
+/// "NAME (DETAIL; 25.7 m, 0 deg away)", the distance from the pose judged.
 struct NamedPose {
   Transform T_target_source = Transform::Identity();
-  std::string description;  ///< "the pose its unique landmarks fix (car, traffic-sign; ...)"
+  std::string name;    ///< "the pose its unique landmarks fix"
+  std::string detail;  ///< "car, traffic-sign; 20 correspondences at level 0"
 };
 
 /// The ambiguity's alternative taken in place of the selected pose (AcceptanceParams::
@@ -126,13 +129,14 @@ struct Acceptance {
 /// against a pose that puts them on the plan's walls or columns. `adopting`: the selection is an
 /// alternative being adopted (AcceptanceAdoption) that fitted decisively better than the candidates
 /// of lower D where the clouds overlap; the D margin is not taken (the ambiguity test judges it
-/// against every candidate on the points both see). `more_alternatives`: poses the ambiguity test
-/// also weighs (those within the distinct distance of the selection are not distinct).
+/// against every candidate on the points both see). `more_alternatives`, if given, is called when
+/// the ambiguity test runs (only then: it may cost a search) for more poses it weighs (those
+/// within the distinct distance of the selection are not distinct).
 Acceptance judge_selection(const Verifier& verifier, const std::vector<PoseEstimate>& candidates,
                            const VerificationResult& verification,
                            const VerificationParams& verification_params,
                            const AcceptanceParams& params, PoseModel model, int threads = 1,
                            const std::vector<char>* furniture = nullptr, bool adopting = false,
-                           const std::vector<NamedPose>& more_alternatives = {});
+                           const std::function<std::vector<NamedPose>()>& more_alternatives = {});
 
 }  // namespace pagor
