@@ -284,34 +284,45 @@ void profile_peaks(const std::vector<Eigen::Vector3i>& cells, const Transform& T
     // Each cell adds its row of the target's occupancy to the shifts that keep it on the grid.
     std::vector<int> agree(static_cast<std::size_t>(2 * K + 1), 0);
     std::vector<int> comparable(static_cast<std::size_t>(2 * K + 2), 0);  // as differences
+    std::size_t on_rows = 0;  // cells some shift along the axis brings onto the target's grid
     for (const Eigen::Vector3i& cell : cells) {
       const char* row = occ.row(axis, cell);
       const int x = cell[axis], lo = std::max(-K, -x), hi = std::min(K, occ.size(axis) - 1 - x);
       if (!row || lo > hi) continue;
+      ++on_rows;
       int* out = agree.data() + K;
       for (int k = lo; k <= hi; ++k) out[k] += row[x + k];
       ++comparable[static_cast<std::size_t>(lo + K)];
       --comparable[static_cast<std::size_t>(hi + K + 1)];
     }
     std::vector<double> raw(static_cast<std::size_t>(2 * K + 1), 0.0), rate = raw;
-    for (int k = -K, open = 0; k <= K; ++k) {
-      const auto at = static_cast<std::size_t>(k + K);
-      open += comparable[at];
-      raw[at] = agree[at];
-      // Shifts that leave less than half of the cells comparable tell little.
-      rate[at] = open >= 0.5 * static_cast<double>(cells.size()) ? agree[at] / double(open) : 0.0;
-    }
-    for (int k = -K; k <= K; ++k) {
-      const double v = rate[static_cast<std::size_t>(k + K)];
-      bool peak = v > 0;
-      for (int j = std::max(-K, k - w); peak && j <= std::min(K, k + w); ++j) {
-        const double u = rate[static_cast<std::size_t>(j + K)];
-        peak = j < k ? u < v : u <= v;
+    // Shifts that leave less than half of the cells comparable tell little. Where that leaves no
+    // peak, the half is taken of the cells some shift along this axis brings onto the target's
+    // grid at all: under a pose that puts most of the source beside the target (a wrong one, a
+    // street's width off), no shift left half of all cells comparable, and the pose met no rival.
+    const auto find = [&](double least) {
+      const std::size_t before = peaks.size();
+      for (int k = -K, open = 0; k <= K; ++k) {
+        const auto at = static_cast<std::size_t>(k + K);
+        open += comparable[at];
+        raw[at] = agree[at];
+        rate[at] = open >= least ? agree[at] / double(open) : 0.0;
       }
-      if (!peak) continue;
-      const Eigen::Vector2d shift = occ.frame().axes.col(axis) * (k * occ.cell());
-      peaks.push_back({moved(T, shift), raw[static_cast<std::size_t>(k + K)], turned, axis, k});
-    }
+      for (int k = -K; k <= K; ++k) {
+        const double v = rate[static_cast<std::size_t>(k + K)];
+        bool peak = v > 0;
+        for (int j = std::max(-K, k - w); peak && j <= std::min(K, k + w); ++j) {
+          const double u = rate[static_cast<std::size_t>(j + K)];
+          peak = j < k ? u < v : u <= v;
+        }
+        if (!peak) continue;
+        const Eigen::Vector2d shift = occ.frame().axes.col(axis) * (k * occ.cell());
+        peaks.push_back({moved(T, shift), raw[static_cast<std::size_t>(k + K)], turned, axis, k});
+      }
+      return peaks.size() > before;
+    };
+    if (!find(0.5 * static_cast<double>(cells.size())) && on_rows < cells.size())
+      find(0.5 * static_cast<double>(on_rows));
   }
 }
 
