@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 
 #include "pagor/errors.hpp"
 #include "pagor/indoor/floor_plan.hpp"
@@ -480,14 +481,11 @@ void Pipeline::adopt_alternative(std::vector<PoseEstimate> candidates,
   // The correspondences the alternative explains (within the TLS bound, measured as GNC measures
   // them), and the pose they give.
   const GncParams gnc = gnc_params();
-  const bool planar = gnc.model == PoseModel::se2;
   std::vector<int> members;
   for (std::size_t i = 0; i < correspondences_.items.size(); ++i) {
     const Correspondence& c = correspondences_.items[i];
-    Eigen::Vector3d r =
-        alt.T_target_source.block<3, 3>(0, 0) * c.p + alt.T_target_source.block<3, 1>(0, 3) - c.q;
-    if (planar) r.z() = 0;
-    if (r.norm() <= gnc.noise_bound) members.push_back(static_cast<int>(i));
+    if (std::sqrt(squared_residual(alt.T_target_source, c.p, c.q, gnc.model)) <= gnc.noise_bound)
+      members.push_back(static_cast<int>(i));
   }
   PoseEstimate refit = estimate_pose_gnc(correspondences_.items, members, gnc);
   const auto sel = static_cast<std::size_t>(verification.selected);

@@ -35,10 +35,7 @@ void refinement_lines(const Snapshot& s) {
   ui::figure(ui::format("refinement: D %.0f -> %.0f m (%s), moved %.2f m / %.2f\xc2\xb0",
                         r.score_before, r.score_after, change.c_str(), r.correction_translation,
                         r.correction_rotation));
-  // After refinement: the selected pose's errors, unless the verdict adopted an alternative.
-  std::optional<PoseError> after = s.selected_error;
-  if (s.acceptance.adopted.applied && s.ground_truth)
-    after = pose_error(r.T_after, *s.ground_truth, s.config.evaluation);
+  const std::optional<PoseError> after = refined_error(s);
   if (s.unrefined_error && after)
     ui::figure(ui::format("  errors before %.2f m / %.2f\xc2\xb0, after %.2f m / %.2f\xc2\xb0",
                           s.unrefined_error->translation, s.unrefined_error->rotation_deg,
@@ -54,6 +51,12 @@ int label_stride(int n, float slot) {
 }
 
 }  // namespace
+
+std::optional<PoseError> refined_error(const Snapshot& s) {
+  if (!s.acceptance.adopted.applied) return s.selected_error;
+  if (!s.ground_truth || !s.refinement.applied) return std::nullopt;
+  return pose_error(s.refinement.T_after, *s.ground_truth, s.config.evaluation);
+}
 
 std::string selected_text(const Snapshot& s) {
   const PoseError& e = *s.selected_error;
@@ -90,7 +93,8 @@ std::string level_gap_text(const Snapshot& s) {
   int runner = -1;
   for (std::size_t i = 0; i < s.levels.size(); ++i) {
     const LevelView& l = s.levels[i];
-    if (static_cast<int>(i) == m->best_level || !l.pose.valid || !std::isfinite(l.score_D)) continue;
+    if (static_cast<int>(i) == m->best_level || !l.pose.valid || !std::isfinite(l.score_D))
+      continue;
     if (same_pose(l.pose.T_target_source, best))
       same += (same.empty() ? "L" : ", L") + std::to_string(i);
     else if (runner < 0 || l.score_D < s.levels[static_cast<std::size_t>(runner)].score_D)

@@ -28,6 +28,9 @@ std::string level_gap_text(const Snapshot& s);
 /// before refinement, each labelled ("selected: SUCCESS (L2), refined 0.31 m / 0.80° (candidate
 /// before refinement 0.52 m / 1.10°)"). Needs `s.selected_error`.
 std::string selected_text(const Snapshot& s);
+/// The refined pose's errors against the ground truth: the selected pose's, unless the verdict
+/// adopted an alternative in its place (then the refinement's own). Empty without a ground truth.
+std::optional<PoseError> refined_error(const Snapshot& s);
 /// The acceptance verdict with the acceptance margin (acceptance.hpp: D below the best distinct
 /// candidate's, as a share of mu times the points) and its threshold.
 std::string acceptance_text(const Snapshot& s);

@@ -173,11 +173,7 @@ void refined_row(const Snapshot& s) {
         "copy and exports give. The row above is the candidate before refinement.");
   for (int c = 0; c < 5; ++c) ImGui::TableNextColumn();  // eps, verts, edges, clique -> D
   ui::figure(ui::format("%.1f", r.score_after));
-  // The selected pose's errors are the adopted alternative's when the verdict took one.
-  std::optional<PoseError> e = s.selected_error;
-  if (s.acceptance.adopted.applied && s.ground_truth)
-    e = pose_error(r.T_after, *s.ground_truth, s.config.evaluation);
-  pose_cells(s, e, r.T_after);
+  pose_cells(s, refined_error(s), r.T_after);
 }
 
 // Under the selected level's rows, when the verdict took its better-fitting alternative in place
@@ -251,8 +247,8 @@ void level_details(const Snapshot& s, int shown) {
       const Eigen::Vector3d a = yaw_pitch_roll_deg(T.block<3, 3>(0, 0));
       ui::figure("t = (" + fixed(T(0, 3), 2) + ", " + fixed(T(1, 3), 2) + ", " + fixed(T(2, 3), 2) +
                  ") m");
-      ui::figure("yaw " + fixed(a.x(), 2) + "\xc2\xb0 pitch " + fixed(a.y(), 2) +
-                 "\xc2\xb0 roll " + fixed(a.z(), 2) + "\xc2\xb0");
+      ui::figure("yaw " + fixed(a.x(), 2) + "\xc2\xb0 pitch " + fixed(a.y(), 2) + "\xc2\xb0 roll " +
+                 fixed(a.z(), 2) + "\xc2\xb0");
       ImGui::Text("%zu GNC inliers, %d iterations", l.pose.inliers.size(), l.pose.iterations);
     } else {
       ImGui::TextColored(kBad, "no pose: %s", l.pose.failure.c_str());

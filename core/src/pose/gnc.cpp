@@ -13,14 +13,14 @@ constexpr double kPi = 3.14159265358979323846;
 // Relative size of the second principal extent below which a point set counts as collinear.
 constexpr double kCollinearRatio = 1e-3;
 
-double residual_sq(const Transform& T, const Eigen::Vector3d& p, const Eigen::Vector3d& q,
-                   PoseModel model) {
+}  // namespace
+
+double squared_residual(const Transform& T, const Eigen::Vector3d& p, const Eigen::Vector3d& q,
+                        PoseModel model) {
   Eigen::Vector3d r = T.block<3, 3>(0, 0) * p + T.block<3, 1>(0, 3) - q;
   if (model == PoseModel::se2) r.z() = 0;
   return r.squaredNorm();
 }
-
-}  // namespace
 
 double rotation_angle_deg(const Eigen::Matrix3d& R) {
   const double c = std::clamp((R.trace() - 1.0) / 2.0, -1.0, 1.0);
@@ -148,7 +148,7 @@ PoseEstimate gnc_one_model(const std::vector<Eigen::Vector3d>& src,
   auto residuals = [&] {
     double worst = 0;
     for (std::size_t i = 0; i < n; ++i)
-      worst = std::max(worst, r2[i] = residual_sq(T, src[i], dst[i], p.model));
+      worst = std::max(worst, r2[i] = squared_residual(T, src[i], dst[i], p.model));
     return worst;
   };
   const double r2_max = residuals();

@@ -15,14 +15,10 @@ VerificationResult select_without_clouds(const std::vector<PoseEstimate>& candid
   for (std::size_t l = 0; l < candidates.size(); ++l) {
     const PoseEstimate& e = candidates[l];
     if (!e.valid) continue;
-    const Eigen::Matrix3d R = e.T_target_source.block<3, 3>(0, 0);
-    const Eigen::Vector3d t = e.T_target_source.block<3, 1>(0, 3);
     double S = 0;
     int within = 0;
     for (const Correspondence& c : correspondences) {
-      Eigen::Vector3d d = R * c.p + t - c.q;
-      if (e.model == PoseModel::se2) d.z() = 0;
-      const double residual = d.norm();
+      const double residual = std::sqrt(squared_residual(e.T_target_source, c.p, c.q, e.model));
       S += std::min(residual, bound);
       within += residual <= bound;
     }

@@ -53,6 +53,11 @@ PoseEstimate estimate_pose_gnc(const std::vector<Eigen::Vector3d>& src,
 PoseEstimate estimate_pose_gnc(const std::vector<Correspondence>& correspondences,
                                const std::vector<int>& members, const GncParams& params = {});
 
+/// The squared residual of correspondence (p, q) under T, as GNC measures it: |T p - q|^2, in the
+/// x-y plane alone in SE(2) [m^2].
+double squared_residual(const Transform& T, const Eigen::Vector3d& p, const Eigen::Vector3d& q,
+                        PoseModel model);
+
 /// Rotation angle of a rotation matrix [deg].
 double rotation_angle_deg(const Eigen::Matrix3d& R);
 
