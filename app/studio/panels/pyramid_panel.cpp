@@ -29,7 +29,7 @@ void change_line(const RunChanges& changes, const std::string& stale_reason) {
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.75f, 0.25f, 1.0f));
     ImGui::TextUnformatted(text.c_str());
     ImGui::PopStyleColor();
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text.c_str());
+    ui::hover_tooltip(text);
   } else if (!changes.selected_changed()) {
     ImGui::TextUnformatted("");
   } else {
@@ -167,10 +167,9 @@ void refined_row(const Snapshot& s) {
   ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg1, IM_COL32(40, 70, 110, 140));
   ImGui::TableNextColumn();
   ui::figure("  refined", kRefined);
-  if (ImGui::IsItemHovered())
-    ImGui::SetTooltip(
-        "The selected level's pose after refinement (ICP on the clouds): the pose the verdict, "
-        "copy and exports give. The row above is the candidate before refinement.");
+  ui::hover_tooltip(
+      "The selected level's pose after refinement (ICP on the clouds): the pose the verdict, "
+      "copy and exports give. The row above is the candidate before refinement.");
   for (int c = 0; c < 5; ++c) ImGui::TableNextColumn();  // eps, verts, edges, clique -> D
   ui::figure(ui::format("%.1f", r.score_after));
   pose_cells(s, refined_error(s), r.T_after);
@@ -185,12 +184,11 @@ void adopted_row(const Snapshot& s) {
   ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg1, IM_COL32(40, 90, 60, 140));
   ImGui::TableNextColumn();
   ui::figure("  adopted", kRefined);
-  if (ImGui::IsItemHovered())
-    ImGui::SetTooltip(
-        "The verdict's alternative taken in place of the selected pose: %s fitted %.2f times as "
-        "well where both poses are seen; refitted by GNC on %zu correspondences, it was accepted. "
-        "It is the pose the copy and exports give.",
-        a.from.c_str(), a.ratio, a.inliers.size());
+  ui::hover_tooltip("The verdict's alternative taken in place of the selected pose: " + a.from +
+                    ui::format(" fitted %.2f times as well where both poses are seen; refitted "
+                               "by GNC on %zu correspondences, it was accepted. It is the pose "
+                               "the copy and exports give.",
+                               a.ratio, a.inliers.size()));
   for (int c = 0; c < 5; ++c) ImGui::TableNextColumn();  // eps, verts, edges, clique -> D
   ui::figure(ui::format("%.1f", a.score_D));
   pose_cells(s, s.selected_error, a.T_target_source);

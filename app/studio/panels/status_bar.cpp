@@ -104,7 +104,7 @@ void status_bar(const WorkerStatus& status, const Snapshot* snapshot, const Mess
     const bool ok = d.verdict == DiagnosisVerdict::success;
     if (ui::figure(std::string("| diagnosis: ") + verdict_name(d.verdict) + ": " + d.explanation,
                    ok ? ImVec4(0.45f, 0.85f, 0.45f, 1.0f) : kErrorColor))
-      ImGui::SetTooltip("%s\n%s", verdict_sentence(d.verdict), d.explanation.c_str());
+      ui::hover_tooltip(std::string(verdict_sentence(d.verdict)) + "\n" + d.explanation);
   }
 }
 

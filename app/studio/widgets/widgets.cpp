@@ -151,8 +151,9 @@ WidgetRecord& WidgetRegistry::add(WidgetKind kind, const char* label, ImGuiID id
   return items_.back();
 }
 
-void tooltip(const char* tip) {
-  registry().mark_last_explained();
+namespace {
+
+void show_tooltip(const char* tip) {
   // A disabled item explains itself too: why it is disabled is what the user asks then.
   if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
     // Opaque and legible also over a disabled item or a dimmed (stale) panel.
@@ -164,6 +165,17 @@ void tooltip(const char* tip) {
     ImGui::EndTooltip();
     ImGui::PopStyleVar();
   }
+}
+
+}  // namespace
+
+void tooltip(const char* tip) {
+  registry().mark_last_explained();
+  show_tooltip(tip);
+}
+
+void hover_tooltip(const std::string& tip) {
+  show_tooltip(tip.c_str());
 }
 
 bool button(const char* label, ImVec2 size, const char* tip) {

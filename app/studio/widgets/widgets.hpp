@@ -88,6 +88,9 @@ WidgetRegistry& registry();
 
 /// Shows `tip` as a tooltip while the last item is hovered and marks the last widget as explained.
 void tooltip(const char* tip);
+/// Shows `tip` while the last item (text, a table cell: no widget) is hovered, wrapped at 28 font
+/// sizes as every tooltip is: a long line (an alternative's description) ran off the window.
+void hover_tooltip(const std::string& tip);
 
 // Wrappers: same meaning as ImGui's, plus registration. Ranges are always enforced (a value typed
 // with Ctrl+click is clamped to [lo, hi]). A number typed into a slider's Ctrl+click field or a
