@@ -591,6 +591,25 @@ TEST_CASE("a clique through anchors: the largest that holds them, not the graph'
   const std::vector<int> greedy = clique_through(g, 0, {3}, 0);
   CHECK(is_clique(g, 0, greedy));
   CHECK(std::binary_search(greedy.begin(), greedy.end(), 3));
+  {
+    // A trap for the greedy clique: the anchor 0's neighbours are a complete bipartite graph on
+    // 1..10 and 11..20 (degree 10, cliques of 2) and a clique on 21..26 (degree 5). Greedy from the
+    // highest degrees finds 2 of them; the search, within its budget, the 6; at 0 nodes only the
+    // greedy clique is taken.
+    std::vector<std::vector<int>> t(27);
+    const auto link = [&](int a, int b) {
+      t[static_cast<std::size_t>(a)].push_back(b);
+      t[static_cast<std::size_t>(b)].push_back(a);
+    };
+    for (int v = 1; v <= 26; ++v) link(0, v);
+    for (int a = 1; a <= 10; ++a)
+      for (int b = 11; b <= 20; ++b) link(a, b);
+    for (int a = 21; a <= 26; ++a)
+      for (int b = a + 1; b <= 26; ++b) link(a, b);
+    const PyramidGraph trap = test::graph_from_lists(t);
+    CHECK(clique_through(trap, 0, {0}, 0).size() == 3u);
+    CHECK(clique_through(trap, 0, {0}, 1000) == std::vector<int>{0, 21, 22, 23, 24, 25, 26});
+  }
   // More than 12 anchors: kept in their order while they stay a clique.
   CHECK(clique_through(g, 0, {6, 7, 8, 9, 10, 11, 12, 13, 14, 0, 1, 2, 3}, 1000).size() == 9u);
 }

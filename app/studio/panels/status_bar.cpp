@@ -102,9 +102,9 @@ void status_bar(const WorkerStatus& status, const Snapshot* snapshot, const Mess
     const Diagnosis& d = *snapshot->diagnosis;
     ImGui::SameLine();
     const bool ok = d.verdict == DiagnosisVerdict::success;
-    if (ui::figure(std::string("| diagnosis: ") + verdict_name(d.verdict) + ": " + d.explanation,
-                   ok ? ImVec4(0.45f, 0.85f, 0.45f, 1.0f) : kErrorColor))
-      ui::hover_tooltip(std::string(verdict_sentence(d.verdict)) + "\n" + d.explanation);
+    ui::figure(std::string("| diagnosis: ") + verdict_name(d.verdict) + ": " + d.explanation,
+               ok ? ImVec4(0.45f, 0.85f, 0.45f, 1.0f) : kErrorColor);
+    ui::hover_tooltip(std::string(verdict_sentence(d.verdict)) + "\n" + d.explanation);
   }
 }
 

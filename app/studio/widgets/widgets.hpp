@@ -89,7 +89,7 @@ WidgetRegistry& registry();
 /// Shows `tip` as a tooltip while the last item is hovered and marks the last widget as explained.
 void tooltip(const char* tip);
 /// Shows `tip` while the last item (text, a table cell: no widget) is hovered, wrapped at 28 font
-/// sizes as every tooltip is: a long line (an alternative's description) ran off the window.
+/// sizes as tooltip()'s are: a long line (an alternative's description) ran off the window.
 void hover_tooltip(const std::string& tip);
 
 // Wrappers: same meaning as ImGui's, plus registration. Ranges are always enforced (a value typed

@@ -306,7 +306,7 @@ void profile_peaks(const std::vector<Eigen::Vector3i>& cells, const Transform& T
         const auto at = static_cast<std::size_t>(k + K);
         open += comparable[at];
         raw[at] = agree[at];
-        rate[at] = open >= least ? agree[at] / double(open) : 0.0;
+        rate[at] = open > 0 && open >= least ? agree[at] / double(open) : 0.0;
       }
       for (int k = -K; k <= K; ++k) {
         const double v = rate[static_cast<std::size_t>(k + K)];
@@ -321,7 +321,7 @@ void profile_peaks(const std::vector<Eigen::Vector3i>& cells, const Transform& T
       }
       return peaks.size() > before;
     };
-    if (!find(0.5 * static_cast<double>(cells.size())) && on_rows < cells.size())
+    if (!find(0.5 * static_cast<double>(cells.size())) && on_rows > 0 && on_rows < cells.size())
       find(0.5 * static_cast<double>(on_rows));
   }
 }
