@@ -138,10 +138,7 @@ std::vector<std::string> all_keys(const PairSet& set, const Config& config, cons
 
 int run_bench(const Args& args) {
   const PairSet set = pair_set_from_args(args, "bench");
-  std::vector<std::string> targets;
-  for (const PairEntry& e : set.pairs)
-    targets.push_back(e.source.kind == PairSource::Kind::files ? e.source.target : "");
-  const Config config = config_for_targets(args, targets).config;
+  const Config config = config_for_targets(args, pair_targets(set)).config;
   if (args.has("compare-thresholds")) return run_threshold_comparison(args, config, set);
   if (args.has("resume") && !args.has("out")) throw UsageError("--resume goes with --out FILE");
   const int jobs = jobs_from_args(args);

@@ -81,4 +81,11 @@ PairSet pair_set_from_args(const Args& args, const std::string& command) {
   return kitti_pair_set(args.get("kitti-root"), sequence_from_args(args), args.get("pairs"));
 }
 
+std::vector<std::string> pair_targets(const PairSet& set) {
+  std::vector<std::string> targets;
+  for (const PairEntry& e : set.pairs)
+    targets.push_back(e.source.kind == PairSource::Kind::files ? e.source.target : "");
+  return targets;
+}
+
 }  // namespace pagor::cli

@@ -33,4 +33,8 @@ std::vector<Option> pair_set_options();
 /// `command` runs. Throws UsageError for both or neither.
 PairSet pair_set_from_args(const Args& args, const std::string& command);
 
+/// Each pair's target file, "" for a pair that is not files (a KITTI frame): what
+/// config_for_targets (config_args.hpp) chooses a set's preset from.
+std::vector<std::string> pair_targets(const PairSet& set);
+
 }  // namespace pagor::cli

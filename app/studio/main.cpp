@@ -95,8 +95,7 @@ AppState state_from_args(const cli::Args& args) {
       if (s.have_data && s.data.kind == PairSource::Kind::files && !s.data.target.empty())
         targets.push_back(s.data.target);
     } else {
-      for (const PairEntry& e : s.pairs.pairs)  // as pagor bench chooses for the file
-        targets.push_back(e.source.kind == PairSource::Kind::files ? e.source.target : "");
+      targets = cli::pair_targets(s.pairs);  // as pagor bench chooses for the file
     }
     cli::ChosenConfig c = cli::config_for_targets(args, targets);
     s.config = std::move(c.config);

@@ -153,10 +153,10 @@ TEST_CASE("a pose that aligns only the ground of a sloped street is not trusted"
 
 namespace {
 
-// Judges `T` as the only candidate of a self-similar scene, with the given thresholds and D's
-// truncation `mu` (< 0: the default configuration's).
+// Judges `T` as the only candidate of a self-similar scene, with the given thresholds, D's
+// truncation `mu` (< 0: the default configuration's) and the caller's alternatives `more`.
 Acceptance judge_pose(const SelfSimilarScene& s, const Transform& T, const AcceptanceParams& params,
-                      double mu = -1) {
+                      double mu = -1, const std::function<std::vector<NamedPose>()>& more = {}) {
   const Config c = default_config();
   VerificationParams verification = c.verification;
   if (mu >= 0) verification.mu = mu;
@@ -169,7 +169,8 @@ Acceptance judge_pose(const SelfSimilarScene& s, const Transform& T, const Accep
   v.selected = 0;
   v.scores = {verifier.score(T, verification.mu, ScoreKind::truncated, 1, &v.selected_distances)};
   v.distance_bound = static_cast<float>(verification.mu);
-  return judge_selection(verifier, candidates, v, verification, params, PoseModel::se3);
+  return judge_selection(verifier, candidates, v, verification, params, PoseModel::se3, 1, nullptr,
+                         false, more);
 }
 
 SelfSimilarScene self_similar(SelfSimilarKind kind, bool objects) {
@@ -495,23 +496,12 @@ TEST_CASE("a right pose that fails only the D margin keeps the margin's reason, 
 }
 
 TEST_CASE("poses the caller adds are weighed as alternatives, named with their distance") {
-  // A corridor with objects at its true pose: a caller's pose a period on rivals it as the
+  // A corridor at its true pose: a caller's pose a period on rivals it as the
   // scene's own repetitions do, and is named with how far it is; one within the distinct
   // distance is the same answer and is not weighed. The caller's function runs only when the
   // ambiguity test does.
   const SelfSimilarScene s = self_similar(SelfSimilarKind::corridor, false);
   const Transform truth = s.T_target_source;
-  const Config c = default_config();
-  const Verifier verifier(s.source, s.target, c.verification.voxel_size);
-  std::vector<PoseEstimate> candidates(1);
-  candidates[0].valid = true;
-  candidates[0].T_target_source = truth;
-  candidates[0].inliers = {0, 1, 2, 3, 4, 5};
-  VerificationResult v;
-  v.selected = 0;
-  v.scores = {
-      verifier.score(truth, c.verification.mu, ScoreKind::truncated, 1, &v.selected_distances)};
-  v.distance_bound = static_cast<float>(c.verification.mu);
   AcceptanceParams params = ambiguity_only();
   params.ambiguity_range = 0;  // no shift searched (the half turn, unshifted, is still weighed)
   int calls = 0;
@@ -521,18 +511,16 @@ TEST_CASE("poses the caller adds are weighed as alternatives, named with their d
     ++calls;
     return std::vector<NamedPose>{{near, "a pose nearby", "test"}};
   };
-  const Acceptance same = judge_selection(verifier, candidates, v, c.verification, params,
-                                          PoseModel::se3, 1, nullptr, false, only_near);
+  const Acceptance same = judge_pose(s, truth, params, -1, only_near);
   CHECK(calls == 1);
   CHECK(same.alternative.description.find("a pose nearby") == std::string::npos);
   // A period along the corridor (its pillars every 3-8 m: the scene's own shift that rivals most).
   const Acceptance searched = judge_pose(s, truth, ambiguity_only());
   REQUIRE_FALSE(searched.alternative.description.empty());
   const Transform rival = searched.alternative.T_target_source;
-  const Acceptance a = judge_selection(
-      verifier, candidates, v, c.verification, params, PoseModel::se3, 1, nullptr, false, [&] {
-        return std::vector<NamedPose>{{rival, "the rival", "from the caller"}};
-      });
+  const Acceptance a = judge_pose(s, truth, params, -1, [&] {
+    return std::vector<NamedPose>{{rival, "the rival", "from the caller"}};
+  });
   INFO(a.reason);
   CHECK_THAT(a.alternative.description, Catch::StartsWith("the rival (from the caller; "));
   CHECK_THAT(a.alternative.description, Catch::EndsWith(" deg away)"));
@@ -543,8 +531,7 @@ TEST_CASE("poses the caller adds are weighed as alternatives, named with their d
   blunt.min_inliers = 100;
   blunt.adopt_alternative = false;
   calls = 0;
-  judge_selection(verifier, candidates, v, c.verification, blunt, PoseModel::se3, 1, nullptr, false,
-                  only_near);
+  judge_pose(s, truth, blunt, -1, only_near);
   CHECK(calls == 0);
 }
 

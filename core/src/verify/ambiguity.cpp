@@ -107,16 +107,14 @@ class Occupancy {
         const Eigen::Vector2d d = points[i].head<2>().cast<double>() - mean;
         cov += d * d.transpose();
       }
-    // The axes the structure runs along (sharpest_angle), on its cells (each once), the one of
-    // the larger spread first.
     if (!drawn) {
       const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(cov);
       frame_.axes.col(0) = eig.eigenvectors().col(1);  // eigenvalues ascend: the major axis last
       frame_.axes.col(1) = eig.eigenvectors().col(0);
-    }
-    std::vector<Eigen::Vector2d> cells;
-    if (drawn) {
-      // Keys of at most 2^20 cells from the mean each way (a tiny cell is coarsened for this).
+    } else {
+      // The axes the structure runs along (sharpest_angle), on its cells (each once), the one of
+      // the larger spread first. Keys of at most 2^20 cells from the mean each way (a tiny cell is
+      // coarsened for this).
       double radius = 0;
       for (std::size_t i = 0; i < points.size(); ++i)
         if (counts[i])
@@ -124,14 +122,13 @@ class Occupancy {
               std::max(radius, (points[i].head<2>().cast<double>() - mean).cwiseAbs().maxCoeff());
       const double key_cell = std::max({cell_, radius / 1048576.0, 1e-9});
       std::unordered_set<long long> seen;
+      std::vector<Eigen::Vector2d> cells;
       for (std::size_t i = 0; i < points.size(); ++i) {
         if (!counts[i]) continue;
         const Eigen::Vector2d p = points[i].head<2>().cast<double>() - mean;
         const auto k = [&](double v) { return static_cast<long long>(std::floor(v / key_cell)); };
         if (seen.insert(k(p.x()) * 4194304LL + k(p.y())).second) cells.push_back(p);
       }
-    }
-    if (drawn) {
       const double angle = sharpest_angle(cells, cell_);
       const Eigen::Vector2d a(std::cos(angle), std::sin(angle)), b(-a.y(), a.x());
       const bool a_major = a.dot(cov * a) >= b.dot(cov * b);

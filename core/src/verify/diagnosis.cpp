@@ -172,8 +172,10 @@ bool judge_labels(const DiagnosisInput& in, Diagnosis& d) {
   return false;
 }
 
-// The first stage at fault, in pipeline order, and the numbers behind it.
-void judge(const DiagnosisInput& in, const DiagnosisParams& params, Diagnosis& d) {
+// The first stage at fault, in pipeline order, and the numbers behind it; `adoption_named` set
+// when the sentence blames the verdict's adopted alternative.
+void judge(const DiagnosisInput& in, const DiagnosisParams& params, Diagnosis& d,
+           bool& adoption_named) {
   using V = DiagnosisVerdict;
   const auto n = d.levels.size();
   const auto at = [&](int l) -> const LevelDiagnosis& {
@@ -212,6 +214,7 @@ void judge(const DiagnosisInput& in, const DiagnosisParams& params, Diagnosis& d
         "the verdict adopted %s in place of level %d's pose, and it is wrong (%.2f m, %.2f deg); "
         "level %d's candidate was right",
         in.acceptance->adopted.from.c_str(), sel, e.translation, e.rotation_deg, best_right);
+    adoption_named = true;
     return;
   }
   if (best_right >= 0) {
@@ -315,9 +318,10 @@ Diagnosis diagnose(const DiagnosisInput& in, const Transform& T_gt, const Diagno
         in.selected_pose ? pose_error(*in.selected_pose, T_gt, in.config->evaluation) : sel.error;
     d.score_misled = !(d.selected_error && d.selected_error->success) && d.gt_score > sel.score;
   }
-  judge(in, params, d);
+  bool adoption_named = false;  // the verdict's sentence already blames the adoption
+  judge(in, params, d, adoption_named);
   if (in.acceptance && in.acceptance->adopted.applied && d.selected_error &&
-      !d.selected_error->success && d.explanation.find("the verdict adopted") == std::string::npos)
+      !d.selected_error->success && !adoption_named)
     d.explanation += "; the verdict adopted " + in.acceptance->adopted.from +
                      " in place of the selected pose, also wrong";
   if (in.acceptance && !in.acceptance->alternative.description.empty() &&
