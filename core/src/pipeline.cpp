@@ -469,12 +469,13 @@ void Pipeline::adopt_alternative(std::vector<PoseEstimate> candidates,
   const AcceptanceParams& params = config_.acceptance;
   const AcceptanceAlternative& alt = acceptance_.alternative;
   // Overturning the selection asks the evidence to be decisive twice over: the alternative must
-  // out-fit it by the square of what the ambiguity test asks of a pose against its rival (3.3 at
-  // max_ambiguity 0.55). Car parks 1-14: a right pose rivalled by its half turn, 19 points
-  // against 0 (ratio 2.9: the as-built walls are not the plan's), was replaced by the turn at
-  // 1 / max_ambiguity; the right adoptions have ratios 3.2-46, the self-similar scenes' 5.3-8.6.
-  const double decisive =
-      std::max(1.0, 1.0 / (params.max_ambiguity * params.max_ambiguity));  // never below even
+  // out-fit it by the square of what the ambiguity test asks of a pose against its rival, at
+  // adopt_max_ambiguity (3.3 at 0.55), and the refitted pose must meet that test's threshold. Car
+  // parks 1-14: a right pose rivalled by its half turn, 19 points against 0 (ratio 2.9: the
+  // as-built walls are not the plan's), was replaced by the turn at 1 / max_ambiguity; the right
+  // adoptions have ratios 3.2-46, the self-similar scenes' 5.3-8.6.
+  const double decisive = std::max(
+      1.0, 1.0 / (params.adopt_max_ambiguity * params.adopt_max_ambiguity));  // never below even
   if (!params.adopt_alternative || acceptance_.accepted || alt.description.empty() ||
       !(alt.ratio > decisive))
     return;
@@ -507,7 +508,9 @@ void Pipeline::adopt_alternative(std::vector<PoseEstimate> candidates,
     verification.selected = static_cast<int>(candidates.size()) - 1;
     verification.selected_distances = std::move(distances);
     verification.distance_bound = static_cast<float>(config_.verification.mu);
-    adopted = judge_selection(*verifier_, candidates, verification, config_.verification, params,
+    AcceptanceParams strict = params;
+    strict.max_ambiguity = std::min(params.max_ambiguity, params.adopt_max_ambiguity);
+    adopted = judge_selection(*verifier_, candidates, verification, config_.verification, strict,
                               refit.model, threads_now(), furniture, true, anchored);
   }
   if (failed || !adopted.accepted) {

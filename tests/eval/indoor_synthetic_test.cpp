@@ -268,3 +268,46 @@ TEST_CASE("car park verdicts: a pose two column spacings off is refuted by the t
   CHECK(b.success);
   CHECK(b.accepted);
 }
+
+TEST_CASE("car park verdicts: an adopted half turn meets the default's ambiguity threshold") {
+  // Seed 34, scan 109 of 120: level 1's pose is right, but rivalled by the pose turned 180 deg and
+  // moved 26.7 m (42 points against 5, ratio 3.47). That ratio passes the adoption's bar, and the
+  // refitted half turn, wrong by 26.6 m, is itself rivalled at 0.62. With the adoption judged at
+  // the preset's max_ambiguity (0.8) it was accepted; judged at adopt_max_ambiguity (0.55), as
+  // the preset does, it is not, and the pose stays the right one, rejected as ambiguous.
+  test::TempDir dir;
+  IndoorSceneParams scene;
+  scene.seed = 34;
+  const IndoorWorld w = make_indoor_world(scene, 120);
+  const Eigen::Vector3d& pose = w.trajectory[109];
+  std::mt19937_64 rng(scene.seed * 1000003u + 109);  // as write_indoor_sequence draws scan 109
+  write_kitti_bin(ray_cast_indoor(w, pose, {}, rng), dir.file("scan.bin"));
+  write_floor_plan(w.plan, dir.file("plan.json"));
+  {
+    std::ofstream(dir.file("gt.txt")) << transform_file_text(pose_transform(pose));
+    std::ofstream(dir.file("pairs.txt")) << "scan.bin plan.json gt=gt.txt name=000109\n";
+  }
+  const PairSet set = read_pair_manifest(dir.file("pairs.txt"));
+  REQUIRE(set.pairs.size() == 1u);
+  const Config preset = preset_config("indoor");
+  REQUIRE(preset.acceptance.max_ambiguity > preset.acceptance.adopt_max_ambiguity);
+  Pipeline pipeline(preset);
+  const PairOutcome o = run_pair(pipeline, set.pairs[0]);
+  const Acceptance& a = pipeline.acceptance();
+  INFO(a.reason);
+  CHECK(o.success);
+  CHECK_FALSE(o.accepted);
+  CHECK_FALSE(a.adopted.applied);
+  CHECK(a.ambiguity > 1 / (preset.acceptance.adopt_max_ambiguity *
+                           preset.acceptance.adopt_max_ambiguity));  // the adoption was tried
+  CHECK_THAT(a.reason, Catch::Contains("not trusted either"));
+  // The adoption judged at max_ambiguity, as before: the wrong half turn is accepted.
+  Config loose = preset;
+  loose.acceptance.adopt_max_ambiguity = loose.acceptance.max_ambiguity;
+  Pipeline adopting(loose);
+  const PairOutcome b = run_pair(adopting, set.pairs[0]);
+  INFO(adopting.acceptance().reason);
+  CHECK(adopting.acceptance().adopted.applied);
+  CHECK_FALSE(b.success);
+  CHECK(b.accepted);
+}
