@@ -437,7 +437,8 @@ TEST_CASE("where the ambiguity's alternative fits clearly better, the verdict ad
   CHECK(a.accepted);
   CHECK(p.selected_error()->success);
   CHECK(p.selected_transform()->isApprox(a.adopted.T_target_source));
-  CHECK(a.adopted.ratio * AcceptanceParams{}.max_ambiguity > 1.0);
+  const double bar = AcceptanceParams{}.adopt_max_ambiguity;
+  CHECK(a.adopted.ratio * bar * bar > 1.0);  // the adoption's bar
   CHECK(a.adopted.inliers.size() >= 3u);
   CHECK_THAT(a.adopted.selected_reason, Catch::StartsWith("ambiguous: "));
   REQUIRE(a.tests.size() == 6u);
@@ -491,7 +492,8 @@ TEST_CASE("a right pose that fails only the D margin keeps the margin's reason, 
   REQUIRE(a.tests.size() == 6u);
   CHECK(a.tests[5].applies);
   CHECK(a.tests[5].passed);  // the margin alone failed: no rival stands against the pose
-  CHECK(a.ambiguity * AcceptanceParams{}.max_ambiguity < 1.0);  // nor fits decisively better
+  const double bar = AcceptanceParams{}.adopt_max_ambiguity;
+  CHECK(a.ambiguity * bar * bar < 1.0);  // nor fits decisively better (the adoption's bar)
   CHECK_FALSE(a.alternative.description.empty());
 }
 

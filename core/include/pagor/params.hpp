@@ -696,7 +696,8 @@ struct AcceptanceParams {
     v(&AcceptanceParams::adopt_alternative,
       {"adopt_alternative",
        "Where the ambiguity's best alternative fits decisively better than the selected pose "
-       "(adopt_max_ambiguity), refit it by GNC to the correspondences it explains and judge it as "
+       "(its ratio above 1 / adopt_max_ambiguity squared), refit it by GNC to the correspondences "
+       "it explains and judge it as "
        "the "
        "selection; it becomes the pose when that verdict accepts it. D counts a point the target "
        "never saw as unexplained, so a pose that slides a corridor's whole view onto the "
@@ -709,8 +710,10 @@ struct AcceptanceParams {
        "where its ratio exceeds 1 / adopt_max_ambiguity squared (and 1), and the refitted pose "
        "must then pass the ambiguity test at the lower of this and max_ambiguity. It does not "
        "follow max_ambiguity: on the generated car parks, max_ambiguity 0.7 with the adoption "
-       "at that threshold adopted wrong half turns (seeds 11 and 34).",
-       "", Range::above(0, 1e6)});
+       "at that threshold adopted wrong half turns (seeds 11 and 34). At 1 the bar is a ratio "
+       "above 1 and the refit is judged at max_ambiguity: the most permissive, not off (off: "
+       "adopt_alternative false).",
+       "", Range::above(0, 1)});
   }
 };
 
