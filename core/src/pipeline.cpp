@@ -474,10 +474,8 @@ void Pipeline::adopt_alternative(std::vector<PoseEstimate> candidates,
   // parks 1-14: a right pose rivalled by its half turn, 19 points against 0 (ratio 2.9: the
   // as-built walls are not the plan's), was replaced by the turn at the former bar, 1 /
   // max_ambiguity (1.8); the right adoptions have ratios 3.2-46, the self-similar scenes' 5.3-8.6.
-  const double decisive = std::max(
-      1.0, 1.0 / (params.adopt_max_ambiguity * params.adopt_max_ambiguity));  // never below even
   if (!params.adopt_alternative || acceptance_.accepted || alt.description.empty() ||
-      !(alt.ratio > decisive))
+      !(alt.ratio > params.adoption_bar()))
     return;
   // The correspondences the alternative explains (within the TLS bound, measured as GNC measures
   // them), and the pose they give.
@@ -509,19 +507,23 @@ void Pipeline::adopt_alternative(std::vector<PoseEstimate> candidates,
     verification.selected_distances = std::move(distances);
     verification.distance_bound = static_cast<float>(config_.verification.mu);
     AcceptanceParams strict = params;
-    strict.max_ambiguity = std::min(params.max_ambiguity, params.adopt_max_ambiguity);
+    strict.max_ambiguity = params.adopted_max_ambiguity();
     adopted = judge_selection(*verifier_, candidates, verification, config_.verification, strict,
                               refit.model, threads_now(), furniture, true, anchored);
     if (strict.max_ambiguity < params.max_ambiguity) {
-      // Say which threshold judged it: not the max_ambiguity the configuration shows.
+      // Say which threshold judged it: not the max_ambiguity the configuration shows. (The
+      // ambiguity is judged only where every other test passed, so where it failed the reason is
+      // its own.)
       char note[160];
       std::snprintf(note, sizeof(note),
                     " (an adopted alternative is judged at acceptance.adopt_max_ambiguity, %.3g, "
                     "below max_ambiguity)",
                     strict.max_ambiguity);
-      for (AcceptanceTest& t : adopted.tests)
-        if (t.name == "ambiguity") t.description += note;
-      if (!adopted.accepted && adopted.reason.rfind("ambiguous: ", 0) == 0) adopted.reason += note;
+      for (AcceptanceTest& t : adopted.tests) {
+        if (t.name != "ambiguity") continue;
+        t.description += note;
+        if (t.applies && !t.passed) adopted.reason += note;
+      }
     }
   }
   if (failed || !adopted.accepted) {

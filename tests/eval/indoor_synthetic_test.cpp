@@ -289,8 +289,7 @@ TEST_CASE("car park verdicts: overturning the selection keeps the default's stan
   REQUIRE(preset.acceptance.max_ambiguity > preset.acceptance.adopt_max_ambiguity);
   Config tied = preset;  // the adoption at the ambiguity test's threshold, as before
   tied.acceptance.adopt_max_ambiguity = tied.acceptance.max_ambiguity;
-  const double bar =
-      1 / (preset.acceptance.adopt_max_ambiguity * preset.acceptance.adopt_max_ambiguity);
+  const double bar = preset.acceptance.adoption_bar();
   for (const auto& [seed, scan] : {std::pair<int, int>{11, 106}, {34, 109}}) {
     INFO("seed " << seed << ", scan " << scan);
     test::TempDir dir;

@@ -437,8 +437,7 @@ TEST_CASE("where the ambiguity's alternative fits clearly better, the verdict ad
   CHECK(a.accepted);
   CHECK(p.selected_error()->success);
   CHECK(p.selected_transform()->isApprox(a.adopted.T_target_source));
-  const double bar = AcceptanceParams{}.adopt_max_ambiguity;
-  CHECK(a.adopted.ratio * bar * bar > 1.0);  // the adoption's bar
+  CHECK(a.adopted.ratio > AcceptanceParams{}.adoption_bar());
   CHECK(a.adopted.inliers.size() >= 3u);
   CHECK_THAT(a.adopted.selected_reason, Catch::StartsWith("ambiguous: "));
   REQUIRE(a.tests.size() == 6u);
@@ -492,8 +491,7 @@ TEST_CASE("a right pose that fails only the D margin keeps the margin's reason, 
   REQUIRE(a.tests.size() == 6u);
   CHECK(a.tests[5].applies);
   CHECK(a.tests[5].passed);  // the margin alone failed: no rival stands against the pose
-  const double bar = AcceptanceParams{}.adopt_max_ambiguity;
-  CHECK(a.ambiguity * bar * bar < 1.0);  // nor fits decisively better (the adoption's bar)
+  CHECK(a.ambiguity * AcceptanceParams{}.max_ambiguity < 1.0);  // nor fits better
   CHECK_FALSE(a.alternative.description.empty());
 }
 

@@ -7,6 +7,7 @@
 /// those tables. The stages themselves (front/, graph/, pose/, verify/, indoor/) take these
 /// structs; each section below names its stage's header.
 
+#include <algorithm>
 #include <cstdint>
 #include <limits>
 #include <string>
@@ -646,6 +647,14 @@ struct AcceptanceParams {
   /// What the verdict counts as another answer: poses apart by more than this.
   EvaluationParams distinct() const { return {distinct_translation, distinct_rotation}; }
 
+  /// The ratio above which the ambiguity's alternative is refitted and judged in place of the
+  /// selection (adopt_alternative): 1 / adopt_max_ambiguity squared, never below 1.
+  double adoption_bar() const {
+    return std::max(1.0, 1.0 / (adopt_max_ambiguity * adopt_max_ambiguity));
+  }
+  /// The ambiguity threshold an adopted alternative's refit is judged at.
+  double adopted_max_ambiguity() const { return std::min(max_ambiguity, adopt_max_ambiguity); }
+
   template <class V>
   static void fields(V&& v) {
     v(&AcceptanceParams::inlier_distance,
@@ -697,9 +706,8 @@ struct AcceptanceParams {
       {"adopt_alternative",
        "Where the ambiguity's best alternative fits decisively better than the selected pose "
        "(its ratio above 1 / adopt_max_ambiguity squared), refit it by GNC to the correspondences "
-       "it explains and judge it as "
-       "the "
-       "selection; it becomes the pose when that verdict accepts it. D counts a point the target "
+       "it explains and judge it as the selection; it becomes the pose when that verdict accepts "
+       "it. D counts a point the target "
        "never saw as unexplained, so a pose that slides a corridor's whole view onto the "
        "target's beats the true one, which leaves part of the source beyond the target's range "
        "and aligns the objects that fix it. Off in the paper preset."});
